@@ -1,0 +1,141 @@
+/* A case: every resolved input of a run, with its unit and where it came from.
+ *
+ * Case files are INI files (read with inih). One schema table (gd_case_schema)
+ * names every section and key, its type, unit, valid range and default; parsing,
+ * validation, --set overrides, `geardyn check` and sweeps all go through it.
+ * Keys carry their unit in the name (speed_rpm, backlash_um, ...). Values are
+ * stored in SI-friendly case units exactly as written; gd_case_resolve() then
+ * fills the derived quantities (torque from power, masses and inertias from the
+ * geometry, mean mesh stiffness from ISO 6336-1, ...) unless the user pinned them. */
+#ifndef GD_CASE_H
+#define GD_CASE_H
+
+#include "geardyn/gd_error.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GD_MAX_HARMONICS 8
+#define GD_PATH_MAX 1024
+
+typedef enum gd_analysis { GD_ANALYSIS_RESPONSE = 0 } gd_analysis;
+typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
+typedef enum gd_stiffness_kind { GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, GD_STIFF_RECTANGULAR = 2 } gd_stiffness_kind;
+typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
+typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
+typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
+
+/* Where a resolved value came from. */
+typedef enum gd_source { GD_SRC_DEFAULT = 0, GD_SRC_FILE = 1, GD_SRC_SET = 2, GD_SRC_DERIVED = 3 } gd_source;
+
+typedef struct gd_case {
+    /* [scene] */
+    int analysis;            /* gd_analysis */
+    int model;               /* gd_model_kind */
+    int bearing_clearance;   /* physics switches: 1 on, 0 off */
+    int error_excitation;
+    int axial_coupling;
+    char title[256];
+    /* [gear] geometry (ISO 21771) and bodies; masses and inertias are per helical half,
+     * each including half of the relief groove */
+    double normal_module_mm, helix_angle_deg, normal_pressure_angle_deg;
+    int teeth_pinion, teeth_gear;
+    double profile_shift_pinion, profile_shift_gear, addendum_coefficient, dedendum_coefficient;
+    double face_width_pinion_mm, face_width_gear_mm, groove_width_mm;
+    double bore_diameter_pinion_mm, bore_diameter_gear_mm;
+    double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
+    double pinion_mass_kg, gear_mass_kg, pinion_inertia_kgm2, gear_inertia_kgm2;
+    double equivalent_mass_kg; /* torsional equivalent mass of one half, m_e */
+    /* [operating] */
+    double speed_rpm, torque_nm, power_kw;
+    /* [clearance]: total backlash 2b and total radial bearing clearance 2*eps */
+    double backlash_um, bearing_clearance_um;
+    /* [excitation] */
+    int stiffness;           /* gd_stiffness_kind */
+    double mesh_stiffness_n_per_m;  /* mean mesh stiffness of one half */
+    double stiffness_harmonics[GD_MAX_HARMONICS]; int n_stiffness_harmonics; /* relative amplitudes */
+    double stiffness_phases_deg[GD_MAX_HARMONICS]; int n_stiffness_phases;
+    double rectangular_variation;   /* (k_high - k_mean)/k_mean */
+    double rectangular_high_fraction; /* fraction of the mesh period at the high level */
+    double ste_amplitude_um, ste_mean_um, ste_phase_deg;
+    double base_pitch_deviation_um, profile_deviation_um;
+    double half_phase_deg;   /* mesh phase of the right half relative to the left */
+    /* [damping] */
+    double mesh_damping_ratio, support_damping_ratio, shaft_damping_ratio;
+    int mesh_damping_mode;   /* gd_damping_mode */
+    /* [support] (per half, per body) */
+    double radial_stiffness_pinion_n_per_m, radial_stiffness_gear_n_per_m;
+    double axial_stiffness_pinion_n_per_m, axial_stiffness_gear_n_per_m;
+    double shaft_stiffness_pinion_n_per_m, shaft_stiffness_gear_n_per_m; /* groove shafts, axial */
+    /* [solver] */
+    int method;              /* gd_method */
+    int order;
+    char table[128];
+    double rtol, atol;
+    int steps_per_period;    /* rk4 */
+    int root_finding;
+    int grazing_watch;
+    double max_step_fraction;
+    double characteristic_length_um;
+    int max_events_per_period;
+    /* [run] */
+    int transient_periods, record_periods;
+    int initial_condition;   /* gd_initial */
+    /* [output] */
+    char directory[GD_PATH_MAX];
+    int samples_per_period;
+    int time_history, event_log, plots;
+
+    /* bookkeeping, not keys */
+    char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */
+    unsigned char *src;      /* gd_source per schema entry */
+    int *src_line;           /* file line (or --set index) per schema entry */
+} gd_case;
+
+typedef enum gd_keytype {
+    GD_KEY_DOUBLE, GD_KEY_INT, GD_KEY_ENUM, GD_KEY_BOOL, GD_KEY_STRING, GD_KEY_DLIST
+} gd_keytype;
+
+typedef struct gd_keyspec {
+    const char *section;
+    const char *key;
+    gd_keytype type;
+    const char *unit;        /* "" for dimensionless */
+    size_t offset;           /* into gd_case */
+    size_t count_offset;     /* DLIST: offset of the int count */
+    double min, max;         /* valid closed range (DOUBLE, INT, DLIST elements) */
+    int min_open, max_open;  /* 1: the bound itself is excluded */
+    double def;              /* default (NaN: derived from other inputs) */
+    const char *choices;     /* ENUM: '|'-separated names, index = stored value; STRING: default */
+    const char *help;
+} gd_keyspec;
+
+GD_API const gd_keyspec *gd_case_schema(size_t *n);
+GD_API const gd_keyspec *gd_case_find_key(const char *section, const char *key);
+
+/* Initialise with every default. Free with gd_case_free. */
+GD_API gd_status gd_case_init(gd_case *c, gd_error *err);
+GD_API void gd_case_free(gd_case *c);
+GD_API gd_status gd_case_copy(gd_case *dst, const gd_case *src, gd_error *err);
+
+/* Read an INI case file over the defaults; strict validation of every line. */
+GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err);
+/* Apply "section.key=value" (the command line's --set). */
+GD_API gd_status gd_case_set(gd_case *c, const char *assignment, int set_index, gd_error *err);
+/* Fill the derived values (unless pinned) and check consistency and ranges
+ * across keys. Call once after load and sets. */
+GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err);
+
+/* Value of a numeric key as a double ("operating.speed_rpm"); for sweeps. */
+GD_API gd_status gd_case_get_number(const gd_case *c, const char *name, double *value, gd_error *err);
+GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, gd_error *err);
+/* The value of schema entry i formatted as the case file would write it. */
+GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len);
+GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
+GD_API const char *gd_source_name(gd_source s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,46 @@
+/* Involute helical gear geometry per ISO 21771 (derived values of a gear pair). */
+#ifndef GD_GEOMETRY_H
+#define GD_GEOMETRY_H
+
+#include "geardyn/gd_case.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Lengths in metres, angles in radians. Index 0 pinion, 1 gear. */
+typedef struct gd_geometry {
+    double mn, mt;          /* normal and transverse module */
+    double alpha_n, alpha_t, alpha_wt; /* normal, transverse, working transverse pressure angle */
+    double beta, beta_b;    /* reference and base helix angle */
+    int z[2];
+    double x[2];
+    double r[2], rb[2], ra[2], rf[2], rw[2];  /* reference, base, tip, root, working pitch radii */
+    double a0, a;           /* reference and working centre distance */
+    double pbt, pn;         /* transverse base pitch, normal pitch */
+    double eps_alpha, eps_beta, eps_gamma; /* transverse, overlap, total contact ratio */
+    double b[2];            /* face width of one half */
+    double b_contact;       /* common (contact) face width of one half */
+    double r_sap[2];        /* start of active profile radii */
+    double tip_thickness_n[2]; /* normal tooth thickness at the tip circle (arc, m) */
+} gd_geometry;
+
+GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err);
+/* Involute function inv(a) = tan a - a and its inverse (Newton, GSL-free closed loop). */
+GD_API double gd_involute(double a);
+
+/* Mass and polar inertia of one helical half of body `which` (0 pinion, 1 gear): a
+ * cylinder of the reference radius over the face width plus half of the relief groove
+ * as a cylinder of the root radius, less the bore (docs/model.md). */
+GD_API void gd_body_half(const gd_case *c, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
+/* Mean mesh stiffness of one half along the tooth normal, N/m, from ISO 6336-1
+ * (method B: c' and c_gamma_alpha times the contact face width, transverse), divided by
+ * cos^2(beta_b) to refer it to the normal direction (docs/model.md). */
+GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g);
+/* Axial stiffness of a groove shaft: E pi rf^2 / groove width (N/m). */
+GD_API double gd_groove_shaft_stiffness(const gd_case *c, const gd_geometry *g, int which);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,121 @@
+/* The dynamic model in dimensionless form (docs/model.md).
+ *
+ * All three levels (torsional, torsional-lr, bta) are one structure: a diagonal mass
+ * matrix, linear springs and dampers (K0, C0), a constant load F0, and a list of
+ * clearances. Clearance c has the coordinate x_c = w_c . x - e_c(t) (the mesh
+ * deformation along the tooth normal, or a radial bearing displacement), a half gap
+ * h_c and the dead-zone force k_c(t) f(x_c; h_c) + c_c dx_c/dt acting along -w_c.
+ * Time is tau = omega_n t, lengths are over the characteristic length b_c.
+ *
+ * Contact modes (-1 back side, 0 gap, +1 drive side) are held in the state object and
+ * flipped only at located roots; the right-hand side uses the held mode, never the sign
+ * of the current state (unless root finding is off: then the mode follows the state). */
+#ifndef GD_MODEL_H
+#define GD_MODEL_H
+
+#include "geardyn/gd_case.h"
+#include "geardyn/gd_geometry.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GD_MAX_DOF 10
+#define GD_MAX_STATE (2 * GD_MAX_DOF)
+#define GD_MAX_CLEAR 6
+#define GD_MAX_MESH 2
+#define GD_MAX_NNZ 64
+
+typedef enum gd_clearance_kind { GD_CLR_MESH = 0, GD_CLR_BEARING = 1 } gd_clearance_kind;
+
+typedef struct gd_clearance {
+    int kind;                /* gd_clearance_kind */
+    int mesh;                /* mesh index (GD_CLR_MESH) or -1 */
+    int nw;
+    int widx[6];
+    double wval[6];          /* x_c = sum wval[j] x[widx[j]] - e_mesh(t) */
+    double h;                /* half gap (dimensionless) */
+    double k;                /* stiffness (dimensionless; times the mesh stiffness shape for a mesh) */
+    double c;                /* damping coefficient (dimensionless) */
+    int damp_contact_only;
+    char name[24];           /* "mesh-L", "bearing-1L", ... */
+} gd_clearance;
+
+/* Mesh excitation of one half: stiffness shape s(phase) with mean 1, and error e. */
+typedef struct gd_mesh_excitation {
+    int kind;                /* gd_stiffness_kind */
+    int nh;
+    double a[GD_MAX_HARMONICS], phi[GD_MAX_HARMONICS];
+    double rect_high, rect_low, rect_frac; /* levels relative to the mean, fraction at high */
+    double phase;            /* half phase offset (rad of the mesh cycle) */
+    double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
+} gd_mesh_excitation;
+
+typedef struct gd_nz { int i, j; double v; } gd_nz;
+
+typedef struct gd_model {
+    int kind;                /* gd_model_kind */
+    int ndof, n;             /* degrees of freedom, state size 2 ndof */
+    char dof_name[GD_MAX_DOF][8];
+    double inv_mass[GD_MAX_DOF];
+    double mass[GD_MAX_DOF];
+    int nk, nc;
+    gd_nz K0[GD_MAX_NNZ], C0[GD_MAX_NNZ];
+    double F0[GD_MAX_DOF];
+    int nclear, nmesh;
+    gd_clearance clear[GD_MAX_CLEAR];
+    gd_mesh_excitation mesh[GD_MAX_MESH];
+    int mesh_clear[GD_MAX_MESH]; /* clearance index of each mesh */
+    int q_dof[GD_MAX_MESH];  /* DOF of the torsional coordinate q_n = cos(beta_b)(r_b1 th1 - r_b2 th2) of each mesh */
+    double dte_scale;        /* cos(beta_b): q_n / dte_scale is the transverse dynamic transmission error */
+    double Omega;            /* dimensionless mesh frequency omega_m / omega_n */
+    double period;           /* dimensionless mesh period 2 pi / Omega */
+    /* scales */
+    double bc_m;             /* characteristic length, m */
+    double omega_n;          /* rad/s */
+    double m_ref, k_ref;     /* kg, N/m */
+    double mesh_freq_hz;
+    double static_load_n;    /* normal mesh force of one half at the mean torque */
+    int damp_contact_only;
+} gd_model;
+
+/* Held per-run state the RHS depends on besides (t, y). */
+typedef struct gd_modes {
+    int mode[GD_MAX_CLEAR];  /* -1, 0, +1 */
+    int rect_level[GD_MAX_MESH]; /* 1 high, 0 low (rectangular stiffness) */
+    int from_state;          /* 1: modes follow the state at every call (root finding off) */
+    double t_shift;          /* dimensionless time already shifted out of t (whole periods) */
+} gd_modes;
+
+GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
+
+/* Excitation of mesh j at dimensionless time t (t + modes->t_shift is the true time). */
+GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md);
+GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *md, double *e, double *edot,
+                           double *eddot);
+/* Clearance coordinate and its rate. */
+GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double *y, const gd_modes *md, double *x,
+                               double *xdot);
+/* ydot = f(t, y) with the held modes. No allocation. */
+GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md);
+/* Dense Jacobian df/dy (n x n, row-major) in the held modes. */
+GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md);
+/* Root functions: 2 per clearance, x_c - h_c and x_c + h_c. */
+GD_API void gd_model_roots(const gd_model *m, double t, const double *y, double *g, const gd_modes *md);
+/* Contact mode a clearance coordinate implies. */
+GD_API int gd_model_mode_of(const gd_model *m, int c, double x);
+/* Total mechanical energy (dimensionless): kinetic + springs + dead zones - F0.x; exact
+ * invariant when undamped, unforced and the stiffness is constant. */
+GD_API double gd_model_energy(const gd_model *m, double t, const double *y, const gd_modes *md);
+/* Static deflection under F0 with the meshes in drive-side contact and mean stiffness. */
+GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *md, gd_error *err);
+/* Next time after t (strictly) where an excitation is discontinuous (rectangular edges),
+ * or +inf when there is none. */
+GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md);
+/* Level (1 high / 0 low) of the rectangular stiffness of mesh j just after time t. */
+GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const gd_modes *md);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,71 @@
+/* The `response` analysis: one operating point, a transient, a recorded window, and what
+ * a user reads off it (RMS mesh acceleration, dynamic transmission error, Poincare
+ * section, motion class, impact regime). */
+#ifndef GD_RESPONSE_H
+#define GD_RESPONSE_H
+
+#include "geardyn/gd_sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum gd_impact_regime { GD_IMPACT_NONE = 0, GD_IMPACT_SINGLE = 1, GD_IMPACT_DOUBLE = 2 } gd_impact_regime;
+GD_API const char *gd_impact_regime_name(int regime);
+
+/* One uniform time-history sample of the recorded window, physical units. */
+typedef struct gd_sample {
+    double t_s;
+    long period;
+    double lambda_um[2];     /* relative mesh displacement along the tooth normal (incl. error), L and R */
+    double lambda_dot_mps[2];
+    double accel_mps2[2];    /* relative mesh acceleration */
+    double dte_um[2];        /* dynamic transmission error r_b1 th1 - r_b2 th2 along the transverse line of action */
+    double force_n[2];       /* normal mesh force */
+    const double *y;         /* dimensionless state */
+} gd_sample;
+
+typedef struct gd_response_hooks {
+    int (*sample)(void *user, const gd_sample *s);
+    int (*poincare)(void *user, long period, double t_s, const double *y);
+    int (*event)(void *user, const gd_event *ev, int recording);
+    int (*progress)(void *user, long period, long total);
+} gd_response_hooks;
+
+typedef struct gd_response_result {
+    double rms_accel_mps2[3];    /* left, right, combined ((a_L + a_R)/2) */
+    double dte_mean_um[2], dte_rms_um[2], dte_pp_um[2]; /* RMS about the mean */
+    double lambda_min_um[2], lambda_max_um[2];
+    int period_n;                /* n for period-n, 0 when not periodic */
+    char motion[32];             /* "period-n" or "not-periodic" */
+    int poincare_distinct;
+    long poincare_count;
+    int impact_regime[3];        /* left, right, combined */
+    long record_events, record_events_by_kind[GD_EV_NKINDS];
+    double wall_s;
+    gd_sim_stats stats;
+} gd_response_result;
+
+/* Options that are not in the case (tests set them; the CLI uses the defaults). */
+typedef struct gd_response_opts {
+    double periodicity_tol;      /* relative tolerance for equal Poincare points (default 1e-6) */
+    int max_period;              /* largest n tested (default 64) */
+    const double *y0;            /* initial state (NULL: from [run] initial_condition) */
+    const gd_modes *md0;
+} gd_response_opts;
+
+GD_API void gd_response_opts_default(gd_response_opts *o);
+GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
+                                 const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err);
+
+/* Motion class from a sequence of Poincare points (npts x n, row-major). */
+GD_API int gd_poincare_period(const double *pts, long npts, int n, double tol, int max_period);
+GD_API int gd_poincare_distinct(const double *pts, long npts, int n, double tol);
+
+/* Initial state of a run: static deflection or rest. */
+GD_API gd_status gd_initial_state(const gd_case *c, const gd_model *m, double *y, gd_modes *md, gd_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

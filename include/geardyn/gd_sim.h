@@ -1,0 +1,99 @@
+/* Event-exact time integration of a gd_model with SUNDIALS ARKODE.
+ *
+ * Methods: ARKODE ERKStep explicit Runge-Kutta (order 2-8 or a named table), ARKODE
+ * ARKStep DIRK (implicit, dense linear solver, analytic Jacobian) for stiff scenes, and
+ * the classical fixed-step RK4 (the paper's method) run through ERKStep with its
+ * Butcher table and a fixed step, so that it too can locate events.
+ *
+ * Root finding on both sides of every clearance: at a located root the contact mode held
+ * in gd_modes flips and the integrator is reset there (SUNDIALS' recipe for non-smooth
+ * right-hand sides). Time discontinuities of the excitation and the mesh-period
+ * boundaries are stop times, so Poincare samples are exact. A near-grazing watch
+ * re-integrates any step in which a clearance coordinate, interpolated by a cubic
+ * Hermite from its values and rates at both ends, crosses and returns. */
+#ifndef GD_SIM_H
+#define GD_SIM_H
+
+#include "geardyn/gd_model.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct gd_solver_opts {
+    int method;              /* gd_method */
+    int order;
+    char table[128];
+    double rtol, atol;
+    int steps_per_period;    /* rk4 */
+    int root_finding;
+    int grazing_watch;
+    double max_step_fraction;
+    int max_events_per_period;
+    int max_separated_periods; /* a mesh open this long stops the run (GD_ERR_PHYSICS) */
+} gd_solver_opts;
+
+GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
+
+typedef enum gd_event_kind {
+    GD_EV_CONTACT = 0,       /* into drive-side contact (bearing: positive side) */
+    GD_EV_SEPARATION = 1,    /* out of drive-side contact into the gap */
+    GD_EV_BACK_CONTACT = 2,  /* into back-side contact (bearing: negative side) */
+    GD_EV_BACK_SEPARATION = 3,
+    GD_EV_NKINDS = 4
+} gd_event_kind;
+
+GD_API const char *gd_event_kind_name(int kind);
+
+typedef struct gd_event {
+    double t;                /* dimensionless time since the start of the run */
+    long period;             /* mesh period index since the start of the run */
+    int clearance;           /* index into model->clear */
+    int kind;                /* gd_event_kind */
+    int direction;           /* +1 coordinate increasing, -1 decreasing */
+    int old_mode, new_mode;
+    double x, xdot;          /* clearance coordinate and rate at the crossing (dimensionless) */
+} gd_event;
+
+typedef struct gd_sim_stats {
+    long steps, step_attempts, rhs_evals, root_evals, jac_evals, lin_iters;
+    long extra_rhs_evals;    /* RHS calls of the analysis (accelerations at samples), not the integrator's */
+    long resets, grazing_suspects, grazing_rewinds;
+    long events, events_by_kind[GD_EV_NKINDS];
+    long events_by_clearance[GD_MAX_CLEAR];
+} gd_sim_stats;
+
+typedef struct gd_sim gd_sim;
+
+/* Hooks (all optional). step: after every accepted step, interpolation over (t0, t1]
+ * is available through gd_sim_dense. event: at every located event. Return nonzero
+ * from a hook to stop the run with GD_ERR_INTERRUPTED. */
+typedef int (*gd_step_hook)(gd_sim *s, double t0, double t1, void *user);
+typedef int (*gd_event_hook)(gd_sim *s, const gd_event *ev, void *user);
+
+GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
+                               gd_sim **out, gd_error *err);
+GD_API void gd_sim_free(gd_sim *s);
+GD_API void gd_sim_set_hooks(gd_sim *s, gd_step_hook step, gd_event_hook event, void *user);
+
+/* Advance by one mesh period, ending exactly on the period boundary. */
+GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err);
+/* Advance to an absolute dimensionless time inside the current period or beyond. */
+GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end, gd_error *err);
+
+/* Current time (absolute, dimensionless), state and modes. */
+GD_API double gd_sim_time(const gd_sim *s);
+GD_API long gd_sim_period_index(const gd_sim *s);
+GD_API const double *gd_sim_state(const gd_sim *s);
+GD_API const gd_modes *gd_sim_modes(const gd_sim *s);
+/* Interpolated state at absolute time t inside the last step (valid inside hooks). */
+GD_API gd_status gd_sim_dense(gd_sim *s, double t, double *y, gd_error *err);
+/* Right-hand side at (t, y) with the current modes (counted in the statistics). */
+GD_API void gd_sim_rhs(gd_sim *s, double t, const double *y, double *ydot);
+GD_API void gd_sim_get_stats(const gd_sim *s, gd_sim_stats *st);
+GD_API const gd_model *gd_sim_model(const gd_sim *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

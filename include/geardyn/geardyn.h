@@ -1,0 +1,14 @@
+/* libgeardyn: nonlinear dynamics of herringbone gear pairs. The umbrella header. */
+#ifndef GEARDYN_H
+#define GEARDYN_H
+
+#include "geardyn/gd_version.h"
+#include "geardyn/gd_error.h"
+#include "geardyn/gd_case.h"
+#include "geardyn/gd_geometry.h"
+#include "geardyn/gd_model.h"
+#include "geardyn/gd_sim.h"
+#include "geardyn/gd_response.h"
+#include "geardyn/gd_output.h"
+
+#endif

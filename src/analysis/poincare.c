@@ -1,0 +1,62 @@
+/* Poincare-section analysis: the period of a sequence of stroboscopic points and the
+ * number of distinct points, with a relative tolerance on the scale of the cloud. */
+#include "geardyn/gd_response.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static double cloud_scale(const double *pts, long npts, int n, int i)
+{
+    double s = 0;
+    for (long k = 0; k < npts; k++)
+        s = fmax(s, fabs(pts[k * n + i]));
+    return 1.0 + s;
+}
+
+/* max over components of |a_i - b_i| / scale_i */
+static double dist(const double *a, const double *b, const double *scale, int n)
+{
+    double d = 0;
+    for (int i = 0; i < n; i++)
+        d = fmax(d, fabs(a[i] - b[i]) / scale[i]);
+    return d;
+}
+
+GD_API int gd_poincare_period(const double *pts, long npts, int n, double tol, int max_period)
+{
+    double scale[GD_MAX_STATE];
+    for (int i = 0; i < n; i++)
+        scale[i] = cloud_scale(pts, npts, n, i);
+    for (int p = 1; p <= max_period; p++) {
+        if (npts < 2 * p + 1)
+            break;
+        int ok = 1;
+        for (long k = 0; k + p < npts && ok; k++)
+            if (dist(pts + k * n, pts + (k + p) * n, scale, n) > tol)
+                ok = 0;
+        if (ok)
+            return p;
+    }
+    return 0;
+}
+
+GD_API int gd_poincare_distinct(const double *pts, long npts, int n, double tol)
+{
+    double scale[GD_MAX_STATE];
+    for (int i = 0; i < n; i++)
+        scale[i] = cloud_scale(pts, npts, n, i);
+    long *rep = malloc(sizeof(long) * (size_t)(npts > 0 ? npts : 1));
+    if (!rep)
+        return -1;
+    int nrep = 0;
+    for (long k = 0; k < npts; k++) {
+        int found = 0;
+        for (int r = 0; r < nrep && !found; r++)
+            if (dist(pts + k * n, pts + rep[r] * n, scale, n) <= tol)
+                found = 1;
+        if (!found)
+            rep[nrep++] = k;
+    }
+    free(rep);
+    return nrep;
+}

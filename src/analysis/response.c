@@ -1,0 +1,274 @@
+/* The `response` analysis of one operating point. */
+#include "geardyn/gd_response.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+GD_API const char *gd_impact_regime_name(int regime)
+{
+    static const char *names[] = {"no-impact", "single-sided", "double-sided"};
+    return regime >= 0 && regime <= 2 ? names[regime] : "?";
+}
+
+GD_API void gd_response_opts_default(gd_response_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->periodicity_tol = 1e-6;
+    o->max_period = 64;
+}
+
+GD_API gd_status gd_initial_state(const gd_case *c, const gd_model *m, double *y, gd_modes *md, gd_error *err)
+{
+    memset(md, 0, sizeof *md);
+    memset(y, 0, sizeof(double) * GD_MAX_STATE);
+    if (c->initial_condition == GD_INIT_STATIC)
+        return gd_model_static_state(m, y, md, err);
+    for (int k = 0; k < m->nclear; k++) {
+        double x, v;
+        gd_model_clearance(m, k, 0.0, y, md, &x, &v);
+        md->mode[k] = gd_model_mode_of(m, k, x);
+    }
+    return GD_OK;
+}
+
+typedef struct run_ctx {
+    const gd_model *m;
+    const gd_response_hooks *hooks;
+    void *user;
+    double t_record;         /* dimensionless time where recording starts */
+    double dt_sample;
+    long next_sample;        /* index of the next uniform sample */
+    long nsamples;           /* total samples in the window */
+    /* accumulators */
+    double sum_a2[3];
+    double sum_dte[2], sum_dte2[2], dte_min[2], dte_max[2];
+    double lam_min[2], lam_max[2];
+    long count;
+    int visited[GD_MAX_MESH][3];
+    long rec_events, rec_by_kind[GD_EV_NKINDS];
+    gd_status st;
+    gd_error hook_err;
+    double sec;              /* seconds per dimensionless time unit */
+    double len_um;           /* micrometres per dimensionless length */
+} run_ctx;
+
+static void mesh_quantities(const gd_model *m, double t, const double *y, const double *ydot, const gd_modes *md,
+                            int j, double *lam, double *lamd, double *acc, double *force)
+{
+    int c = m->mesh_clear[j];
+    const gd_clearance *cl = &m->clear[c];
+    double e, ed, edd;
+    gd_model_error(m, j, t, md, &e, &ed, &edd);
+    double x = 0, v = 0, a = 0;
+    for (int q = 0; q < cl->nw; q++) {
+        x += cl->wval[q] * y[cl->widx[q]];
+        v += cl->wval[q] * y[m->ndof + cl->widx[q]];
+        a += cl->wval[q] * ydot[m->ndof + cl->widx[q]];
+    }
+    *lam = x - e;
+    *lamd = v - ed;
+    *acc = a - edd;
+    int mode = md->from_state ? gd_model_mode_of(m, c, *lam) : md->mode[c];
+    double kf = gd_model_stiffness(m, j, t, md);
+    double f = mode > 0 ? cl->k * kf * (*lam - cl->h) : mode < 0 ? cl->k * kf * (*lam + cl->h) : 0.0;
+    if (!cl->damp_contact_only || mode != 0)
+        f += cl->c * *lamd;
+    *force = f;
+}
+
+static int on_step(gd_sim *s, double t0, double t1, void *user)
+{
+    run_ctx *r = user;
+    const gd_model *m = r->m;
+    while (r->next_sample < r->nsamples) {
+        double ts = r->t_record + (double)r->next_sample * r->dt_sample;
+        if (ts > t1)
+            break;
+        if (ts < t0) { /* only possible for the very first sample, at the window start */
+            r->next_sample++;
+            continue;
+        }
+        double y[GD_MAX_STATE], yd[GD_MAX_STATE];
+        if (gd_sim_dense(s, ts, y, &r->hook_err) != GD_OK) {
+            r->st = r->hook_err.code;
+            return 1;
+        }
+        gd_sim_rhs(s, ts, y, yd);
+        /* the integrator's local time differs from ts by whole periods: excitations are periodic */
+        gd_sample smp;
+        memset(&smp, 0, sizeof smp);
+        smp.t_s = ts * r->sec;
+        smp.period = (long)floor(ts / m->period + 1e-12);
+        smp.y = y;
+        const gd_modes *md = gd_sim_modes(s);
+        double acc_mean = 0;
+        for (int j = 0; j < 2; j++) {
+            int jj = j < m->nmesh ? j : 0;
+            double lam, lamd, acc, force;
+            mesh_quantities(m, ts, y, yd, md, jj, &lam, &lamd, &acc, &force);
+            int qidx = m->q_dof[jj];
+            smp.lambda_um[j] = lam * r->len_um;
+            smp.lambda_dot_mps[j] = lamd * r->len_um * 1e-6 / r->sec;
+            smp.accel_mps2[j] = acc * r->len_um * 1e-6 / (r->sec * r->sec);
+            smp.force_n[j] = force * m->k_ref * m->bc_m;
+            smp.dte_um[j] = y[qidx] * r->len_um / m->dte_scale;
+            acc_mean += 0.5 * smp.accel_mps2[j];
+            r->sum_a2[j] += smp.accel_mps2[j] * smp.accel_mps2[j];
+            r->sum_dte[j] += smp.dte_um[j];
+            r->sum_dte2[j] += smp.dte_um[j] * smp.dte_um[j];
+            if (r->count == 0 || smp.dte_um[j] < r->dte_min[j]) r->dte_min[j] = smp.dte_um[j];
+            if (r->count == 0 || smp.dte_um[j] > r->dte_max[j]) r->dte_max[j] = smp.dte_um[j];
+            if (r->count == 0 || smp.lambda_um[j] < r->lam_min[j]) r->lam_min[j] = smp.lambda_um[j];
+            if (r->count == 0 || smp.lambda_um[j] > r->lam_max[j]) r->lam_max[j] = smp.lambda_um[j];
+        }
+        r->sum_a2[2] += acc_mean * acc_mean;
+        r->count++;
+        r->next_sample++;
+        if (r->hooks && r->hooks->sample && r->hooks->sample(r->user, &smp))
+            return 1;
+    }
+    return 0;
+}
+
+static int on_event(gd_sim *s, const gd_event *ev, void *user)
+{
+    run_ctx *r = user;
+    int recording = ev->t >= r->t_record;
+    if (recording) {
+        r->rec_events++;
+        r->rec_by_kind[ev->kind]++;
+        const gd_clearance *cl = &r->m->clear[ev->clearance];
+        if (cl->kind == GD_CLR_MESH)
+            r->visited[cl->mesh][ev->new_mode + 1] = 1;
+    }
+    (void)s;
+    if (r->hooks && r->hooks->event)
+        return r->hooks->event(r->user, ev, recording);
+    return 0;
+}
+
+GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
+                                 const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err)
+{
+    struct timespec w0, w1;
+    clock_gettime(CLOCK_MONOTONIC, &w0);
+    memset(res, 0, sizeof *res);
+    gd_response_opts dflt;
+    if (!opts) {
+        gd_response_opts_default(&dflt);
+        opts = &dflt;
+    }
+    double y0[GD_MAX_STATE];
+    gd_modes md0;
+    gd_status st;
+    if (opts->y0) {
+        memcpy(y0, opts->y0, sizeof(double) * (size_t)m->n);
+        md0 = *opts->md0;
+    } else if ((st = gd_initial_state(c, m, y0, &md0, err)) != GD_OK)
+        return st;
+    gd_solver_opts so;
+    gd_solver_opts_from_case(c, &so);
+    gd_sim *s = NULL;
+    if ((st = gd_sim_create(m, &so, y0, &md0, &s, err)) != GD_OK)
+        return st;
+    run_ctx r;
+    memset(&r, 0, sizeof r);
+    r.m = m;
+    r.hooks = hooks;
+    r.user = user;
+    r.t_record = (double)c->transient_periods * m->period;
+    r.dt_sample = m->period / c->samples_per_period;
+    r.nsamples = (long)c->record_periods * c->samples_per_period;
+    r.sec = 1.0 / m->omega_n;
+    r.len_um = m->bc_m * 1e6;
+    gd_sim_set_hooks(s, on_step, on_event, &r);
+    long total = (long)c->transient_periods + c->record_periods;
+    double *pts = malloc(sizeof(double) * (size_t)m->n * (size_t)(c->record_periods + 1));
+    if (!pts) {
+        gd_sim_free(s);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for %d Poincare points", c->record_periods);
+    }
+    long npts = 0;
+    for (long k = 0; k < total; k++) {
+        if (k == c->transient_periods) {
+            const gd_modes *md = gd_sim_modes(s);
+            for (int j = 0; j < m->nmesh; j++)
+                r.visited[j][md->mode[m->mesh_clear[j]] + 1] = 1;
+            const double *y = gd_sim_state(s);
+            memcpy(pts + npts * m->n, y, sizeof(double) * (size_t)m->n);
+            npts++;
+            if (hooks && hooks->poincare && hooks->poincare(user, k, gd_sim_time(s) * r.sec, y)) {
+                st = gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the Poincare hook");
+                goto done;
+            }
+            /* the sample at the very start of the window */
+            on_step(s, gd_sim_time(s), gd_sim_time(s), &r);
+        }
+        st = gd_sim_period(s, err);
+        if (st != GD_OK) {
+            if (r.st != GD_OK) {
+                st = r.st;
+                if (err)
+                    *err = r.hook_err;
+            }
+            goto done;
+        }
+        if (k >= c->transient_periods) {
+            const double *y = gd_sim_state(s);
+            memcpy(pts + npts * m->n, y, sizeof(double) * (size_t)m->n);
+            npts++;
+            if (hooks && hooks->poincare && hooks->poincare(user, k + 1, gd_sim_time(s) * r.sec, y)) {
+                st = gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the Poincare hook");
+                goto done;
+            }
+        }
+        if (hooks && hooks->progress && hooks->progress(user, k + 1, total)) {
+            st = gd_error_set(err, GD_ERR_INTERRUPTED, "interrupted");
+            goto done;
+        }
+    }
+    /* results */
+    {
+        double nrm = r.count > 0 ? 1.0 / (double)r.count : 0.0;
+        for (int i = 0; i < 3; i++)
+            res->rms_accel_mps2[i] = sqrt(r.sum_a2[i] * nrm);
+        for (int j = 0; j < 2; j++) {
+            double mean = r.sum_dte[j] * nrm;
+            res->dte_mean_um[j] = mean;
+            res->dte_rms_um[j] = sqrt(fmax(0.0, r.sum_dte2[j] * nrm - mean * mean));
+            res->dte_pp_um[j] = r.dte_max[j] - r.dte_min[j];
+            res->lambda_min_um[j] = r.lam_min[j];
+            res->lambda_max_um[j] = r.lam_max[j];
+        }
+        /* the last point closes the window; periodicity is judged over all of them */
+        res->poincare_count = npts;
+        res->period_n = gd_poincare_period(pts, npts, m->n, opts->periodicity_tol, opts->max_period);
+        res->poincare_distinct = res->period_n > 0 ? res->period_n
+                                                   : gd_poincare_distinct(pts, npts, m->n, opts->periodicity_tol);
+        if (res->period_n > 0)
+            snprintf(res->motion, sizeof res->motion, "period-%d", res->period_n);
+        else
+            snprintf(res->motion, sizeof res->motion, "not-periodic");
+        int worst = 0;
+        for (int j = 0; j < 2; j++) {
+            int jj = j < m->nmesh ? j : 0;
+            int reg = r.visited[jj][0] ? GD_IMPACT_DOUBLE : r.visited[jj][1] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
+            res->impact_regime[j] = reg;
+            if (reg > worst)
+                worst = reg;
+        }
+        res->impact_regime[2] = worst;
+        res->record_events = r.rec_events;
+        memcpy(res->record_events_by_kind, r.rec_by_kind, sizeof r.rec_by_kind);
+    }
+done:
+    gd_sim_get_stats(s, &res->stats);
+    gd_sim_free(s);
+    free(pts);
+    clock_gettime(CLOCK_MONOTONIC, &w1);
+    res->wall_s = (double)(w1.tv_sec - w0.tv_sec) + 1e-9 * (double)(w1.tv_nsec - w0.tv_nsec);
+    return st;
+}

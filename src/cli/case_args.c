@@ -1,0 +1,69 @@
+/* Arguments shared by `run` and `check`, and loading the case they name. */
+#include "cli.h"
+
+#include <stdio.h>
+#include <string.h>
+
+int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
+{
+    memset(a, 0, sizeof *a);
+    for (int i = 1; i < argc; i++) {
+        const char *s = argv[i];
+        if (strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "geardyn: --set needs section.key=value\n");
+                return 2;
+            }
+            if (a->nsets == CLI_MAX_SETS) {
+                fprintf(stderr, "geardyn: more than %d --set options\n", CLI_MAX_SETS);
+                return 2;
+            }
+            a->sets[a->nsets++] = argv[++i];
+        } else if (strncmp(s, "--set=", 6) == 0) {
+            if (a->nsets == CLI_MAX_SETS) {
+                fprintf(stderr, "geardyn: more than %d --set options\n", CLI_MAX_SETS);
+                return 2;
+            }
+            a->sets[a->nsets++] = s + 6;
+        } else if (allow_out && strcmp(s, "--out") == 0) {
+            if (i + 1 >= argc) {
+                fprintf(stderr, "geardyn: --out needs a directory\n");
+                return 2;
+            }
+            a->out_dir = argv[++i];
+        } else if (allow_out && strcmp(s, "--quiet") == 0) {
+            a->quiet = 1;
+        } else if (s[0] == '-' && s[1] != '\0') {
+            fprintf(stderr, "geardyn: unknown option '%s' (see geardyn --help)\n", s);
+            return 2;
+        } else if (!a->case_path) {
+            a->case_path = s;
+        } else {
+            fprintf(stderr, "geardyn: more than one case file ('%s' and '%s')\n", a->case_path, s);
+            return 2;
+        }
+    }
+    if (!a->case_path) {
+        fprintf(stderr, "geardyn: no case file given (see geardyn --help)\n");
+        return 2;
+    }
+    return 0;
+}
+
+int cli_load_case(const cli_case_args *a, gd_case *c)
+{
+    gd_error err = {0};
+    if (gd_case_init(c, &err) != GD_OK)
+        return cli_fail(&err);
+    if (gd_case_load(c, a->case_path, &err) != GD_OK)
+        return cli_fail(&err);
+    for (int i = 0; i < a->nsets; i++)
+        if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
+            return cli_fail(&err);
+    if (gd_case_resolve(c, &err) != GD_OK)
+        return cli_fail(&err);
+    gd_model m;
+    if (gd_model_build(c, &m, &err) != GD_OK)
+        return cli_fail(&err);
+    return 0;
+}

@@ -1,0 +1,13 @@
+/* Internal: explicit Butcher tables made safe for ERKStep 6.4.1 (see erk_table.c). */
+#ifndef GD_ERK_TABLE_H
+#define GD_ERK_TABLE_H
+
+#include <stdio.h>
+#include <arkode/arkode_butcher.h>
+
+const char *gd_erk_default_table(int order);
+/* A copy of B that ERKStep integrates at its nominal order (caller frees). */
+ARKodeButcherTable gd_erk_table_fsal_safe(ARKodeButcherTable B);
+ARKodeButcherTable gd_erk_classical_rk4(void);
+
+#endif

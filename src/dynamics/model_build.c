@@ -1,0 +1,211 @@
+/* Building the dimensionless model (torsional, torsional-lr, bta) from a resolved case. */
+#include "geardyn/gd_model.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static void add_nz(gd_nz *list, int *n, int i, int j, double v)
+{
+    if (v == 0.0)
+        return;
+    for (int q = 0; q < *n; q++)
+        if (list[q].i == i && list[q].j == j) {
+            list[q].v += v;
+            return;
+        }
+    list[*n].i = i;
+    list[*n].j = j;
+    list[*n].v = v;
+    (*n)++;
+}
+
+/* A linear spring (and damper) between DOF i and ground (j < 0) or DOF j. */
+static void spring(gd_model *m, int i, int j, double k, double c)
+{
+    add_nz(m->K0, &m->nk, i, i, k);
+    add_nz(m->C0, &m->nc, i, i, c);
+    if (j >= 0) {
+        add_nz(m->K0, &m->nk, j, j, k);
+        add_nz(m->K0, &m->nk, i, j, -k);
+        add_nz(m->K0, &m->nk, j, i, -k);
+        add_nz(m->C0, &m->nc, j, j, c);
+        add_nz(m->C0, &m->nc, i, j, -c);
+        add_nz(m->C0, &m->nc, j, i, -c);
+    }
+}
+
+static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
+
+GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
+{
+    memset(m, 0, sizeof *m);
+    gd_geometry g;
+    gd_status st = gd_geometry_compute(c, &g, err);
+    if (st != GD_OK)
+        return st;
+    if (c->model == GD_MODEL_TORSIONAL && c->half_phase_deg != 0.0)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with model torsional (valid: 0, "
+                            "the torsional model has one mesh; use torsional-lr)", c->path, c->half_phase_deg);
+    const double deg = M_PI / 180.0;
+    double cb = cos(g.beta_b), sb = c->axial_coupling ? sin(g.beta_b) : 0.0;
+    double me = c->equivalent_mass_kg;
+    double mn = me / (cb * cb);          /* normal equivalent mass of one half */
+    double km = c->mesh_stiffness_n_per_m;
+    m->kind = c->model;
+    m->m_ref = mn;
+    m->k_ref = km;
+    m->omega_n = sqrt(km / mn);
+    m->bc_m = c->characteristic_length_um * 1e-6;
+    double omega_m = 2.0 * M_PI * c->teeth_pinion * c->speed_rpm / 60.0;
+    m->mesh_freq_hz = omega_m / (2.0 * M_PI);
+    m->Omega = omega_m / m->omega_n;
+    m->period = 2.0 * M_PI / m->Omega;
+    double fscale = 1.0 / (km * m->bc_m);         /* N -> dimensionless force */
+    double cscale = 1.0 / (mn * m->omega_n);      /* N s/m -> dimensionless damping */
+    double T = c->torque_nm;
+    m->static_load_n = T / (2.0 * g.rb[0] * cb);   /* normal force of one half */
+    double bh = 0.5 * c->backlash_um * 1e-6 / m->bc_m;
+    double eh = 0.5 * c->bearing_clearance_um * 1e-6 / m->bc_m;
+    m->damp_contact_only = c->mesh_damping_mode == GD_DAMP_CONTACT;
+
+    int nmesh = c->model == GD_MODEL_TORSIONAL ? 1 : 2;
+    m->nmesh = nmesh;
+    for (int s = 0; s < nmesh; s++) {
+        gd_mesh_excitation *x = &m->mesh[s];
+        x->kind = c->stiffness;
+        x->nh = c->stiffness == GD_STIFF_HARMONIC ? c->n_stiffness_harmonics : 0;
+        for (int j = 0; j < x->nh; j++) {
+            x->a[j] = c->stiffness_harmonics[j];
+            x->phi[j] = j < c->n_stiffness_phases ? c->stiffness_phases_deg[j] * deg : 0.0;
+        }
+        x->rect_frac = c->rectangular_high_fraction;
+        x->rect_high = 1.0 + c->rectangular_variation;
+        x->rect_low = 1.0 - c->rectangular_variation * x->rect_frac / (1.0 - x->rect_frac);
+        x->phase = s == 1 ? c->half_phase_deg * deg : 0.0;
+        double on = c->error_excitation ? 1.0 : 0.0;
+        x->e_m = on * c->ste_mean_um * 1e-6 / m->bc_m;
+        x->e_r = on * c->ste_amplitude_um * 1e-6 / m->bc_m;
+        x->e_phi = c->ste_phase_deg * deg;
+    }
+
+    if (c->model == GD_MODEL_TORSIONAL) {
+        m->ndof = 1;
+        name_dof(m, 0, "q");
+        m->mass[0] = 2.0;
+        m->F0[0] = 2.0 * m->static_load_n * fscale;
+        gd_clearance *cl = &m->clear[0];
+        cl->kind = GD_CLR_MESH;
+        cl->mesh = 0;
+        cl->nw = 1;
+        cl->widx[0] = 0;
+        cl->wval[0] = 1.0;
+        cl->h = bh;
+        cl->k = 2.0;
+        cl->c = 2.0 * 2.0 * c->mesh_damping_ratio;
+        cl->damp_contact_only = m->damp_contact_only;
+        snprintf(cl->name, sizeof cl->name, "mesh");
+        m->nclear = 1;
+        m->mesh_clear[0] = 0;
+        m->q_dof[0] = 0;
+    } else if (c->model == GD_MODEL_TORSIONAL_LR) {
+        m->ndof = 2;
+        name_dof(m, 0, "qL");
+        name_dof(m, 1, "qR");
+        for (int s = 0; s < 2; s++) {
+            m->mass[s] = 1.0;
+            m->F0[s] = m->static_load_n * fscale;
+            gd_clearance *cl = &m->clear[s];
+            cl->kind = GD_CLR_MESH;
+            cl->mesh = s;
+            cl->nw = 1;
+            cl->widx[0] = s;
+            cl->wval[0] = 1.0;
+            cl->h = bh;
+            cl->k = 1.0;
+            cl->c = 2.0 * c->mesh_damping_ratio;
+            cl->damp_contact_only = m->damp_contact_only;
+            snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
+            m->mesh_clear[s] = s;
+            m->q_dof[s] = s;
+        }
+        m->nclear = 2;
+    } else {
+        m->ndof = 10;
+        double m1 = c->pinion_mass_kg, m2 = c->gear_mass_kg;
+        double k1y = c->radial_stiffness_pinion_n_per_m, k2y = c->radial_stiffness_gear_n_per_m;
+        double k1z = c->axial_stiffness_pinion_n_per_m, k2z = c->axial_stiffness_gear_n_per_m;
+        double k1s = c->shaft_stiffness_pinion_n_per_m, k2s = c->shaft_stiffness_gear_n_per_m;
+        double zs = c->support_damping_ratio, zsh = c->shaft_damping_ratio;
+        static const char *names[5] = {"y1", "z1", "y2", "z2", "q"};
+        int nclr = 0;
+        for (int s = 0; s < 2; s++) {
+            int b0 = 5 * s;
+            double sig = s == 0 ? 1.0 : -1.0;
+            for (int j = 0; j < 5; j++) {
+                char nm[8];
+                snprintf(nm, sizeof nm, "%s%c", names[j], s ? 'R' : 'L');
+                name_dof(m, b0 + j, nm);
+            }
+            m->mass[b0 + 0] = m1 / mn;
+            m->mass[b0 + 1] = m1 / mn;
+            m->mass[b0 + 2] = m2 / mn;
+            m->mass[b0 + 3] = m2 / mn;
+            m->mass[b0 + 4] = 1.0;
+            m->F0[b0 + 4] = m->static_load_n * fscale;
+            /* mesh */
+            gd_clearance *cl = &m->clear[nclr];
+            cl->kind = GD_CLR_MESH;
+            cl->mesh = s;
+            int nw = 0;
+            cl->widx[nw] = b0 + 0; cl->wval[nw++] = cb;
+            cl->widx[nw] = b0 + 2; cl->wval[nw++] = -cb;
+            cl->widx[nw] = b0 + 4; cl->wval[nw++] = 1.0;
+            if (sb != 0.0) {
+                cl->widx[nw] = b0 + 1; cl->wval[nw++] = sig * sb;
+                cl->widx[nw] = b0 + 3; cl->wval[nw++] = -sig * sb;
+            }
+            cl->nw = nw;
+            cl->h = bh;
+            cl->k = 1.0;
+            cl->c = 2.0 * c->mesh_damping_ratio;
+            cl->damp_contact_only = m->damp_contact_only;
+            snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
+            m->mesh_clear[s] = nclr++;
+            m->q_dof[s] = b0 + 4;
+            /* radial supports of both bodies: dead zone or linear */
+            for (int body = 0; body < 2; body++) {
+                int i = b0 + 2 * body;
+                double k = body ? k2y : k1y, mass = body ? m2 : m1;
+                double cy = 2.0 * zs * sqrt(k * mass);
+                if (c->bearing_clearance) {
+                    gd_clearance *bl = &m->clear[nclr++];
+                    bl->kind = GD_CLR_BEARING;
+                    bl->mesh = -1;
+                    bl->nw = 1;
+                    bl->widx[0] = i;
+                    bl->wval[0] = 1.0;
+                    bl->h = eh;
+                    bl->k = k / km;
+                    bl->c = 0.0;
+                    snprintf(bl->name, sizeof bl->name, "bearing-%d%c", body + 1, s ? 'R' : 'L');
+                    add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
+                } else {
+                    spring(m, i, -1, k / km, cy * cscale);
+                }
+            }
+            /* axial supports */
+            spring(m, b0 + 1, -1, k1z / km, 2.0 * zs * sqrt(k1z * m1) * cscale);
+            spring(m, b0 + 3, -1, k2z / km, 2.0 * zs * sqrt(k2z * m2) * cscale);
+        }
+        /* groove shafts couple the axial motion of the two halves of each body */
+        spring(m, 1, 6, k1s / km, 2.0 * zsh * sqrt(k1s * m1 / 2.0) * cscale);
+        spring(m, 3, 8, k2s / km, 2.0 * zsh * sqrt(k2s * m2 / 2.0) * cscale);
+        m->nclear = nclr;
+    }
+    m->n = 2 * m->ndof;
+    m->dte_scale = cb;
+    for (int i = 0; i < m->ndof; i++)
+        m->inv_mass[i] = 1.0 / m->mass[i];
+    return GD_OK;
+}

@@ -1,0 +1,305 @@
+/* Evaluating the dimensionless model: excitations, right-hand side, Jacobian, root
+ * functions, energy and the static state. The RHS, Jacobian and roots allocate nothing. */
+#include "geardyn/gd_model.h"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <math.h>
+#include <string.h>
+
+static inline double mesh_phase(const gd_model *m, int j, double t) { return m->Omega * t + m->mesh[j].phase; }
+
+static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
+{
+    double f = ph / (2.0 * M_PI);
+    f -= floor(f);
+    return f < x->rect_frac;
+}
+
+GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    switch (x->kind) {
+    case GD_STIFF_HARMONIC: {
+        double ph = mesh_phase(m, j, t), s = 1.0;
+        for (int h = 0; h < x->nh; h++)
+            s += x->a[h] * cos((h + 1) * ph + x->phi[h]);
+        return s;
+    }
+    case GD_STIFF_RECTANGULAR: {
+        int level = md->from_state ? rect_level_at(x, mesh_phase(m, j, t)) : md->rect_level[j];
+        return level ? x->rect_high : x->rect_low;
+    }
+    default:
+        return 1.0;
+    }
+}
+
+GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *md, double *e, double *edot,
+                           double *eddot)
+{
+    (void)md;
+    const gd_mesh_excitation *x = &m->mesh[j];
+    double arg = mesh_phase(m, j, t) + x->e_phi;
+    double s = sin(arg), co = cos(arg);
+    *e = x->e_m + x->e_r * s;
+    *edot = x->e_r * m->Omega * co;
+    if (eddot)
+        *eddot = -x->e_r * m->Omega * m->Omega * s;
+}
+
+static inline void coord(const gd_clearance *cl, const double *y, int ndof, double *x, double *v)
+{
+    double a = 0, b = 0;
+    for (int q = 0; q < cl->nw; q++) {
+        a += cl->wval[q] * y[cl->widx[q]];
+        b += cl->wval[q] * y[ndof + cl->widx[q]];
+    }
+    *x = a;
+    *v = b;
+}
+
+GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double *y, const gd_modes *md, double *x,
+                               double *xdot)
+{
+    const gd_clearance *cl = &m->clear[c];
+    coord(cl, y, m->ndof, x, xdot);
+    if (cl->kind == GD_CLR_MESH) {
+        double e, ed;
+        gd_model_error(m, cl->mesh, t, md, &e, &ed, NULL);
+        *x -= e;
+        *xdot -= ed;
+    }
+}
+
+GD_API int gd_model_mode_of(const gd_model *m, int c, double x)
+{
+    double h = m->clear[c].h;
+    return x > h ? 1 : (x < -h ? -1 : 0);
+}
+
+/* Force of clearance c along -w (dimensionless) and the current stiffness factor. */
+static inline double clear_force(const gd_model *m, int c, double x, double v, double kfac, int mode)
+{
+    const gd_clearance *cl = &m->clear[c];
+    double f = 0.0;
+    if (mode > 0)
+        f = cl->k * kfac * (x - cl->h);
+    else if (mode < 0)
+        f = cl->k * kfac * (x + cl->h);
+    if (!cl->damp_contact_only || mode != 0)
+        f += cl->c * v;
+    return f;
+}
+
+GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md)
+{
+    const int nd = m->ndof;
+    const double *v = y + nd;
+    double *a = ydot + nd;
+    double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH];
+    for (int j = 0; j < m->nmesh; j++) {
+        kf[j] = gd_model_stiffness(m, j, t, md);
+        gd_model_error(m, j, t, md, &e[j], &ed[j], NULL);
+    }
+    for (int i = 0; i < nd; i++) {
+        ydot[i] = v[i];
+        a[i] = m->F0[i];
+    }
+    for (int q = 0; q < m->nk; q++)
+        a[m->K0[q].i] -= m->K0[q].v * y[m->K0[q].j];
+    for (int q = 0; q < m->nc; q++)
+        a[m->C0[q].i] -= m->C0[q].v * v[m->C0[q].j];
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        double x, xd;
+        coord(cl, y, nd, &x, &xd);
+        double kfac = 1.0;
+        if (cl->kind == GD_CLR_MESH) {
+            x -= e[cl->mesh];
+            xd -= ed[cl->mesh];
+            kfac = kf[cl->mesh];
+        }
+        int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
+        double f = clear_force(m, c, x, xd, kfac, mode);
+        for (int q = 0; q < cl->nw; q++)
+            a[cl->widx[q]] -= cl->wval[q] * f;
+    }
+    for (int i = 0; i < nd; i++)
+        a[i] *= m->inv_mass[i];
+}
+
+GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md)
+{
+    const int nd = m->ndof, n = m->n;
+    memset(J, 0, sizeof(double) * (size_t)n * (size_t)n);
+    for (int i = 0; i < nd; i++)
+        J[i * n + nd + i] = 1.0;
+    for (int q = 0; q < m->nk; q++)
+        J[(nd + m->K0[q].i) * n + m->K0[q].j] -= m->K0[q].v;
+    for (int q = 0; q < m->nc; q++)
+        J[(nd + m->C0[q].i) * n + nd + m->C0[q].j] -= m->C0[q].v;
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        double x, xd;
+        gd_model_clearance(m, c, t, y, md, &x, &xd);
+        int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
+        double kfac = cl->kind == GD_CLR_MESH ? gd_model_stiffness(m, cl->mesh, t, md) : 1.0;
+        double ks = mode != 0 ? cl->k * kfac : 0.0;
+        double cs = (!cl->damp_contact_only || mode != 0) ? cl->c : 0.0;
+        for (int p = 0; p < cl->nw; p++)
+            for (int q = 0; q < cl->nw; q++) {
+                double ww = cl->wval[p] * cl->wval[q];
+                J[(nd + cl->widx[p]) * n + cl->widx[q]] -= ks * ww;
+                J[(nd + cl->widx[p]) * n + nd + cl->widx[q]] -= cs * ww;
+            }
+    }
+    for (int i = 0; i < nd; i++)
+        for (int j = 0; j < n; j++)
+            J[(nd + i) * n + j] *= m->inv_mass[i];
+}
+
+GD_API void gd_model_roots(const gd_model *m, double t, const double *y, double *g, const gd_modes *md)
+{
+    double e[GD_MAX_MESH];
+    for (int j = 0; j < m->nmesh; j++) {
+        const gd_mesh_excitation *x = &m->mesh[j];
+        e[j] = x->e_m + x->e_r * sin(mesh_phase(m, j, t) + x->e_phi);
+    }
+    (void)md;
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        double x = 0;
+        for (int q = 0; q < cl->nw; q++)
+            x += cl->wval[q] * y[cl->widx[q]];
+        if (cl->kind == GD_CLR_MESH)
+            x -= e[cl->mesh];
+        g[2 * c] = x - cl->h;
+        g[2 * c + 1] = x + cl->h;
+    }
+}
+
+GD_API double gd_model_energy(const gd_model *m, double t, const double *y, const gd_modes *md)
+{
+    const int nd = m->ndof;
+    double E = 0;
+    for (int i = 0; i < nd; i++)
+        E += 0.5 * m->mass[i] * y[nd + i] * y[nd + i] - m->F0[i] * y[i];
+    for (int q = 0; q < m->nk; q++)
+        E += 0.5 * y[m->K0[q].i] * m->K0[q].v * y[m->K0[q].j];
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        double x, xd;
+        gd_model_clearance(m, c, t, y, md, &x, &xd);
+        double kfac = cl->kind == GD_CLR_MESH ? gd_model_stiffness(m, cl->mesh, t, md) : 1.0;
+        double d = x > cl->h ? x - cl->h : (x < -cl->h ? x + cl->h : 0.0);
+        E += 0.5 * cl->k * kfac * d * d;
+    }
+    return E;
+}
+
+GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md)
+{
+    (void)md;
+    double best = INFINITY;
+    for (int j = 0; j < m->nmesh; j++) {
+        const gd_mesh_excitation *x = &m->mesh[j];
+        if (x->kind != GD_STIFF_RECTANGULAR)
+            continue;
+        double ph = mesh_phase(m, j, t) / (2.0 * M_PI);
+        double k = floor(ph);
+        double cand[3] = {k + x->rect_frac, k + 1.0, k + 1.0 + x->rect_frac};
+        for (int q = 0; q < 3; q++) {
+            if (cand[q] - ph <= 1e-12 * (1.0 + fabs(ph)))
+                continue;
+            double tc = (2.0 * M_PI * cand[q] - x->phase) / m->Omega;
+            if (tc > t && tc < best)
+                best = tc;
+            break;
+        }
+    }
+    return best;
+}
+
+GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const gd_modes *md)
+{
+    (void)md;
+    const gd_mesh_excitation *x = &m->mesh[j];
+    double f = mesh_phase(m, j, t) / (2.0 * M_PI) + 1e-9;
+    f -= floor(f);
+    return f < x->rect_frac;
+}
+
+GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *md, gd_error *err)
+{
+    const int nd = m->ndof;
+    int modes[GD_MAX_CLEAR];
+    for (int c = 0; c < m->nclear; c++)
+        modes[c] = m->clear[c].kind == GD_CLR_MESH ? 1 : 0;
+    gsl_matrix *A = gsl_matrix_alloc((size_t)nd, (size_t)nd), *V = gsl_matrix_alloc((size_t)nd, (size_t)nd);
+    gsl_vector *b = gsl_vector_alloc((size_t)nd), *S = gsl_vector_alloc((size_t)nd),
+               *w = gsl_vector_alloc((size_t)nd), *x = gsl_vector_alloc((size_t)nd);
+    gd_status st = GD_OK;
+    if (!A || !V || !b || !S || !w || !x) {
+        st = gd_error_set(err, GD_ERR_NOMEM, "static state: out of memory");
+        goto done;
+    }
+    for (int iter = 0; iter < 20; iter++) {
+        gsl_matrix_set_zero(A);
+        for (int i = 0; i < nd; i++)
+            gsl_vector_set(b, (size_t)i, m->F0[i]);
+        for (int q = 0; q < m->nk; q++)
+            *gsl_matrix_ptr(A, (size_t)m->K0[q].i, (size_t)m->K0[q].j) += m->K0[q].v;
+        for (int c = 0; c < m->nclear; c++) {
+            const gd_clearance *cl = &m->clear[c];
+            if (modes[c] == 0)
+                continue;
+            double em = cl->kind == GD_CLR_MESH ? m->mesh[cl->mesh].e_m : 0.0;
+            for (int p = 0; p < cl->nw; p++) {
+                for (int q = 0; q < cl->nw; q++)
+                    *gsl_matrix_ptr(A, (size_t)cl->widx[p], (size_t)cl->widx[q]) += cl->k * cl->wval[p] * cl->wval[q];
+                *gsl_vector_ptr(b, (size_t)cl->widx[p]) += cl->k * cl->wval[p] * (em + modes[c] * cl->h);
+            }
+        }
+        /* minimum-norm solution: an axially floating body has a free rigid mode */
+        int rc = gsl_linalg_SV_decomp(A, V, S, w);
+        if (rc == GSL_SUCCESS) {
+            double smax = gsl_vector_get(S, 0);
+            for (size_t i = 0; i < (size_t)nd; i++)
+                if (gsl_vector_get(S, i) < 1e-12 * smax)
+                    gsl_vector_set(S, i, 0.0);
+            rc = gsl_linalg_SV_solve(A, V, S, b, x);
+        }
+        if (rc != GSL_SUCCESS) {
+            st = gd_error_set(err, GD_ERR_GSL, "static state: gsl_linalg_SV: %s", gsl_strerror(rc));
+            goto done;
+        }
+        memset(y, 0, sizeof(double) * (size_t)m->n);
+        for (int i = 0; i < nd; i++)
+            y[i] = gsl_vector_get(x, (size_t)i);
+        int changed = 0;
+        for (int c = 0; c < m->nclear; c++) {
+            if (m->clear[c].kind == GD_CLR_MESH)
+                continue;
+            double xc, vc;
+            gd_model_clearance(m, c, 0.0, y, md, &xc, &vc);
+            int nm = gd_model_mode_of(m, c, xc);
+            if (nm != modes[c]) {
+                modes[c] = nm;
+                changed = 1;
+            }
+        }
+        if (!changed)
+            break;
+    }
+    for (int c = 0; c < m->nclear; c++)
+        md->mode[c] = modes[c];
+done:
+    gsl_matrix_free(A);
+    gsl_matrix_free(V);
+    gsl_vector_free(b);
+    gsl_vector_free(S);
+    gsl_vector_free(w);
+    gsl_vector_free(x);
+    return st;
+}

@@ -1,0 +1,535 @@
+/* The event-exact integration driver: one mesh period at a time, stop times on the
+ * period boundary and on excitation discontinuities, root finding on every clearance
+ * with mode flips and resets, a near-grazing watch, and chattering and endless-separation
+ * guards. */
+#include "geardyn/gd_sim.h"
+
+#include "erk_table.h"
+#include "stepper.h"
+
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_butcher.h>
+#include <arkode/arkode_erkstep.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_dense.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+#define SHIFT_PERIODS 32 /* keep the integrator's time below this many periods (root tolerance grows with |t|) */
+
+struct gd_sim {
+    gd_model m;
+    gd_solver_opts o;
+    gd_modes md;
+    SUNContext ctx;
+    N_Vector y;
+    N_Vector tmp;
+    SUNMatrix A;
+    SUNLinearSolver LS;
+    void *mem;
+    const gd_stepper_ops *ops;
+    int implicit;
+    double t;                /* integrator (local) time */
+    long shift;              /* whole periods shifted out of t */
+    long period;             /* index of the period that contains t */
+    double y_prev[GD_MAX_STATE];
+    double t_step0;          /* start of the last step (local) */
+    int nroots;
+    int rootsfound[2 * GD_MAX_CLEAR];
+    gd_step_hook step_hook;
+    gd_event_hook event_hook;
+    void *hook_user;
+    long events_this_period;
+    long open_periods[GD_MAX_MESH];
+    int was_open[GD_MAX_MESH];
+    long events_at_start[GD_MAX_CLEAR];
+    long nrhs, nroot_evals;  /* counted here: ARKODE's own counters restart at every Reset */
+    long extra_rhs, jac_calls, resets, grazing_suspects, grazing_rewinds;
+    long events, by_kind[GD_EV_NKINDS], by_clear[GD_MAX_CLEAR];
+    char sunmsg[512];
+};
+
+GD_API const char *gd_event_kind_name(int kind)
+{
+    static const char *names[] = {"contact", "separation", "back-contact", "back-separation"};
+    return kind >= 0 && kind < GD_EV_NKINDS ? names[kind] : "?";
+}
+
+GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->method = c->method;
+    o->order = c->order;
+    snprintf(o->table, sizeof o->table, "%s", c->table);
+    o->rtol = c->rtol;
+    o->atol = c->atol;
+    o->steps_per_period = c->steps_per_period;
+    o->root_finding = c->root_finding;
+    o->grazing_watch = c->grazing_watch;
+    o->max_step_fraction = c->max_step_fraction;
+    o->max_events_per_period = c->max_events_per_period;
+    o->max_separated_periods = 1000;
+}
+
+static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
+{
+    gd_sim *s = user;
+    gd_model_rhs(&s->m, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), &s->md);
+    s->nrhs++;
+    return 0;
+}
+
+static int root_fn(realtype t, N_Vector y, realtype *g, void *user)
+{
+    gd_sim *s = user;
+    gd_model_roots(&s->m, t, N_VGetArrayPointer(y), g, &s->md);
+    s->nroot_evals++;
+    return 0;
+}
+
+static int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *user, N_Vector t1, N_Vector t2, N_Vector t3)
+{
+    gd_sim *s = user;
+    int n = s->m.n;
+    double Jd[GD_MAX_STATE * GD_MAX_STATE];
+    gd_model_jacobian(&s->m, t, N_VGetArrayPointer(y), Jd, &s->md);
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            SM_ELEMENT_D(J, i, j) = Jd[i * n + j];
+    s->jac_calls++;
+    return 0;
+}
+
+static void err_handler(int code, const char *module, const char *function, char *msg, void *user)
+{
+    gd_sim *s = user;
+    snprintf(s->sunmsg, sizeof s->sunmsg, "%s %s: %s", module, function, msg);
+}
+
+static gd_status sun_check(gd_sim *s, int flag, const char *call, gd_error *err)
+{
+    if (flag >= 0)
+        return GD_OK;
+    return gd_error_set(err, GD_ERR_SOLVER, "%s failed: %s (%d)%s%s", call, s->ops ? s->ops->flag_name(flag) : "",
+                        flag, s->sunmsg[0] ? ": " : "", s->sunmsg);
+}
+
+#define CHECK(call)                                                                                                \
+    do {                                                                                                           \
+        gd_status st_ = sun_check(s, (call), #call, err);                                                          \
+        if (st_ != GD_OK)                                                                                          \
+            goto fail;                                                                                             \
+    } while (0)
+
+GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
+                               gd_sim **out, gd_error *err)
+{
+    *out = NULL;
+    gd_sim *s = calloc(1, sizeof *s);
+    if (!s)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory creating the integrator");
+    s->m = *m;
+    s->o = *o;
+    s->md = *md0;
+    s->md.from_state = !o->root_finding;
+    if (SUNContext_Create(NULL, &s->ctx) != 0) {
+        free(s);
+        return gd_error_set(err, GD_ERR_SOLVER, "SUNContext_Create failed");
+    }
+    s->y = N_VNew_Serial(m->n, s->ctx);
+    s->tmp = N_VNew_Serial(m->n, s->ctx);
+    if (!s->y || !s->tmp) {
+        gd_error_set(err, GD_ERR_NOMEM, "N_VNew_Serial failed");
+        goto fail;
+    }
+    memcpy(N_VGetArrayPointer(s->y), y0, sizeof(double) * (size_t)m->n);
+    s->implicit = o->method == GD_METHOD_DIRK;
+    s->ops = s->implicit ? &gd_stepper_ark : &gd_stepper_erk;
+    s->mem = s->implicit ? ARKStepCreate(NULL, rhs_fn, 0.0, s->y, s->ctx) : ERKStepCreate(rhs_fn, 0.0, s->y, s->ctx);
+    if (!s->mem) {
+        gd_error_set(err, GD_ERR_SOLVER, "%sCreate failed", s->ops->module);
+        goto fail;
+    }
+    CHECK(s->ops->set_err_handler(s->mem, err_handler, s));
+    CHECK(s->ops->set_user_data(s->mem, s));
+    CHECK(s->ops->ss_tolerances(s->mem, o->rtol, o->atol));
+    CHECK(s->ops->set_max_num_steps(s->mem, 1000000));
+    CHECK(s->ops->set_max_step(s->mem, o->max_step_fraction * m->period));
+    if (s->implicit) {
+        if (o->table[0])
+            CHECK(ARKStepSetTableName(s->mem, o->table, "ARKODE_ERK_NONE"));
+        else
+            CHECK(s->ops->set_order(s->mem, o->order));
+    } else {
+        /* explicit tables go through gd_erk_table_fsal_safe (SUNDIALS 6.4.1 FSAL bug) */
+        ARKodeButcherTable B = NULL;
+        if (o->method == GD_METHOD_RK4) {
+            B = gd_erk_classical_rk4();
+        } else {
+            const char *name = o->table[0] ? o->table : gd_erk_default_table(o->order);
+            ARKodeButcherTable B0 = name ? ARKodeButcherTable_LoadERKByName(name) : NULL;
+            if (!B0) {
+                gd_error_set(err, GD_ERR_INPUT, "no explicit Runge-Kutta table '%s' of order %d", name ? name : "",
+                             o->order);
+                goto fail;
+            }
+            B = gd_erk_table_fsal_safe(B0);
+            ARKodeButcherTable_Free(B0);
+        }
+        if (!B) {
+            gd_error_set(err, GD_ERR_NOMEM, "Butcher table allocation failed");
+            goto fail;
+        }
+        int flag = ERKStepSetTable(s->mem, B);
+        ARKodeButcherTable_Free(B);
+        CHECK(flag);
+        if (o->method == GD_METHOD_RK4)
+            CHECK(s->ops->set_fixed_step(s->mem, m->period / o->steps_per_period));
+    }
+    if (s->implicit) {
+        s->A = SUNDenseMatrix(m->n, m->n, s->ctx);
+        s->LS = s->A ? SUNLinSol_Dense(s->y, s->A, s->ctx) : NULL;
+        if (!s->A || !s->LS) {
+            gd_error_set(err, GD_ERR_NOMEM, "dense linear solver allocation failed");
+            goto fail;
+        }
+        CHECK(ARKStepSetLinearSolver(s->mem, s->LS, s->A));
+        CHECK(ARKStepSetJacFn(s->mem, jac_fn));
+        CHECK(ARKStepSetLinear(s->mem, 1));
+    }
+    if (o->root_finding && m->nclear > 0) {
+        s->nroots = 2 * m->nclear;
+        CHECK(s->ops->root_init(s->mem, s->nroots, root_fn));
+        CHECK(s->ops->set_no_inactive_root_warn(s->mem));
+    }
+    for (int j = 0; j < m->nmesh; j++) {
+        s->md.rect_level[j] = gd_model_rect_level_after(m, j, 0.0, &s->md);
+        s->was_open[j] = s->md.mode[m->mesh_clear[j]] == 0;
+    }
+    memcpy(s->y_prev, y0, sizeof(double) * (size_t)m->n);
+    *out = s;
+    return GD_OK;
+fail:
+    gd_sim_free(s);
+    return err ? err->code : GD_ERR_SOLVER;
+}
+
+GD_API void gd_sim_free(gd_sim *s)
+{
+    if (!s)
+        return;
+    if (s->mem)
+        s->ops->free_mem(&s->mem);
+    if (s->LS)
+        SUNLinSolFree(s->LS);
+    if (s->A)
+        SUNMatDestroy(s->A);
+    if (s->y)
+        N_VDestroy(s->y);
+    if (s->tmp)
+        N_VDestroy(s->tmp);
+    if (s->ctx)
+        SUNContext_Free(&s->ctx);
+    free(s);
+}
+
+GD_API void gd_sim_set_hooks(gd_sim *s, gd_step_hook step, gd_event_hook event, void *user)
+{
+    s->step_hook = step;
+    s->event_hook = event;
+    s->hook_user = user;
+}
+
+static double abs_time(const gd_sim *s, double t_local) { return t_local + (double)s->shift * s->m.period; }
+
+static gd_status reset_at(gd_sim *s, double t, gd_error *err)
+{
+    double h = 0;
+    s->ops->get_last_step(s->mem, &h);
+    int flag = s->ops->reset(s->mem, t, s->y);
+    if (flag < 0)
+        return sun_check(s, flag, "Reset", err);
+    /* keep the step size the controller had reached rather than re-estimating it */
+    if (h > 0 && s->o.method != GD_METHOD_RK4)
+        s->ops->set_init_step(s->mem, h);
+    s->resets++;
+    return GD_OK;
+}
+
+/* Cubic Hermite of g over a step (values g0, g1, rates d0, d1 times h): does it cross
+ * zero and come back? Returns the fraction of the step at the far extremum, or -1. */
+static double grazing_fraction(double g0, double g1, double d0, double d1)
+{
+    if ((g0 > 0) != (g1 > 0) || g0 == 0.0 || g1 == 0.0)
+        return -1.0;
+    /* p(s) = g0 h00 + d0 h10 + g1 h01 + d1 h11; p'(s) = A s^2 + B s + C */
+    double A = 6 * g0 + 3 * d0 - 6 * g1 + 3 * d1;
+    double B = -6 * g0 - 4 * d0 + 6 * g1 - 2 * d1;
+    double C = d0;
+    double roots[2];
+    int nr = 0;
+    if (fabs(A) < 1e-300) {
+        if (fabs(B) > 1e-300)
+            roots[nr++] = -C / B;
+    } else {
+        double disc = B * B - 4 * A * C;
+        if (disc >= 0) {
+            double sq = sqrt(disc);
+            double q = -0.5 * (B + (B >= 0 ? sq : -sq));
+            roots[nr++] = q / A;
+            if (q != 0)
+                roots[nr++] = C / q;
+        }
+    }
+    for (int i = 0; i < nr; i++) {
+        double x = roots[i];
+        if (!(x > 0 && x < 1))
+            continue;
+        double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+        double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+        double p = g0 * h00 + d0 * h10 + g1 * h01 + d1 * h11;
+        if ((p > 0) != (g0 > 0))
+            return x;
+    }
+    return -1.0;
+}
+
+/* A touch hidden inside the step [t0, t1]? Returns the time to stop at, or -1. */
+static double grazing_check(gd_sim *s, double t0, double t1)
+{
+    double best = -1.0;
+    const double *y1 = N_VGetArrayPointer(s->y);
+    for (int c = 0; c < s->m.nclear; c++) {
+        double x0, v0, x1, v1;
+        gd_model_clearance(&s->m, c, t0, s->y_prev, &s->md, &x0, &v0);
+        gd_model_clearance(&s->m, c, t1, y1, &s->md, &x1, &v1);
+        double h = s->m.clear[c].h, dt = t1 - t0;
+        for (int side = 0; side < 2; side++) {
+            double off = side ? h : -h;
+            double f = grazing_fraction(x0 + off, x1 + off, v0 * dt, v1 * dt);
+            if (f > 0) {
+                double tc = t0 + f * dt;
+                if (best < 0 || tc < best)
+                    best = tc;
+            }
+        }
+    }
+    return best;
+}
+
+static int new_mode_for(int old, int r_hi, int r_lo)
+{
+    /* r_hi: crossing of x - h; r_lo: crossing of x + h (+1 up, -1 down, 0 none) */
+    if (r_hi && r_lo)
+        return r_hi > 0 ? 1 : -1;
+    if (r_hi)
+        return r_hi > 0 ? 1 : 0;
+    if (r_lo)
+        return r_lo < 0 ? -1 : 0;
+    return old;
+}
+
+static gd_status handle_roots(gd_sim *s, gd_error *err)
+{
+    int flag = s->ops->get_root_info(s->mem, s->rootsfound);
+    if (flag < 0)
+        return sun_check(s, flag, "GetRootInfo", err);
+    const double *y = N_VGetArrayPointer(s->y);
+    for (int c = 0; c < s->m.nclear; c++) {
+        int r_hi = s->rootsfound[2 * c], r_lo = s->rootsfound[2 * c + 1];
+        if (!r_hi && !r_lo)
+            continue;
+        int old = s->md.mode[c];
+        int nw = new_mode_for(old, r_hi, r_lo);
+        if (nw == old)
+            continue;
+        s->md.mode[c] = nw;
+        gd_event ev;
+        ev.t = abs_time(s, s->t);
+        ev.period = s->period;
+        ev.clearance = c;
+        ev.old_mode = old;
+        ev.new_mode = nw;
+        ev.direction = (r_hi ? r_hi : r_lo) > 0 ? 1 : -1;
+        ev.kind = nw == 1 ? GD_EV_CONTACT : nw == -1 ? GD_EV_BACK_CONTACT
+                : old == 1 ? GD_EV_SEPARATION : GD_EV_BACK_SEPARATION;
+        gd_model_clearance(&s->m, c, s->t, y, &s->md, &ev.x, &ev.xdot);
+        s->events++;
+        s->by_kind[ev.kind]++;
+        s->by_clear[c]++;
+        s->events_this_period++;
+        if (s->event_hook && s->event_hook(s, &ev, s->hook_user))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the event hook");
+    }
+    if (s->events_this_period > s->o.max_events_per_period)
+        return gd_error_set(err, GD_ERR_CHATTER,
+                            "chattering: more than %d events in mesh period %ld (t = %.9g periods) without progress; "
+                            "raise solver.max_events_per_period or look at the event log",
+                            s->o.max_events_per_period, s->period, abs_time(s, s->t) / s->m.period);
+    return reset_at(s, s->t, err);
+}
+
+/* Update held modes from the state (root finding off) so statistics and guards see them. */
+static void modes_from_state(gd_sim *s)
+{
+    const double *y = N_VGetArrayPointer(s->y);
+    for (int c = 0; c < s->m.nclear; c++) {
+        double x, v;
+        gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &v);
+        s->md.mode[c] = gd_model_mode_of(&s->m, c, x);
+    }
+}
+
+GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
+{
+    double t_end = t_end_abs - (double)s->shift * s->m.period;
+    int rewound = 0;
+    double t_graze_stop = -1.0;
+    while (s->t < t_end) {
+        double disc = gd_model_next_discontinuity(&s->m, s->t, &s->md);
+        double tstop = fmin(t_end, disc);
+        if (rewound && t_graze_stop > s->t && t_graze_stop < tstop)
+            tstop = t_graze_stop;
+        int flag = s->ops->set_stop_time(s->mem, tstop);
+        if (flag < 0)
+            return sun_check(s, flag, "SetStopTime", err);
+        double t0 = s->t;
+        memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->m.n);
+        double tret = t0;
+        s->sunmsg[0] = '\0';
+        flag = s->ops->evolve(s->mem, tstop, s->y, &tret, ARK_ONE_STEP);
+        if (flag < 0) {
+            sun_check(s, flag, "Evolve", err);
+            return gd_error_prefix(err, "at t = %.9g mesh periods", abs_time(s, t0) / s->m.period);
+        }
+        if (!isfinite(N_VGetArrayPointer(s->y)[0]))
+            return gd_error_set(err, GD_ERR_SOLVER, "the solution became NaN or infinite at t = %.9g mesh periods",
+                                abs_time(s, tret) / s->m.period);
+        /* near-grazing watch: a crossing and return hidden inside the step */
+        if (s->nroots && s->o.grazing_watch && flag != ARK_ROOT_RETURN && !rewound) {
+            double tg = grazing_check(s, t0, tret);
+            if (tg > 0) {
+                s->grazing_suspects++;
+                s->grazing_rewinds++;
+                memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->m.n);
+                s->t = t0;
+                gd_status st = reset_at(s, t0, err);
+                if (st != GD_OK)
+                    return st;
+                s->ops->set_init_step(s->mem, 0.5 * (tg - t0));
+                rewound = 1;
+                t_graze_stop = tg;
+                continue;
+            }
+        }
+        if (rewound && tret >= t_graze_stop)
+            rewound = 0;
+        s->t = tret;
+        s->t_step0 = t0;
+        if (s->step_hook && s->step_hook(s, abs_time(s, t0), abs_time(s, tret), s->hook_user))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+        if (flag == ARK_ROOT_RETURN) {
+            gd_status st = handle_roots(s, err);
+            if (st != GD_OK)
+                return st;
+            rewound = 0;
+        } else if (flag == ARK_TSTOP_RETURN && tret == disc && disc <= t_end) {
+            for (int j = 0; j < s->m.nmesh; j++)
+                s->md.rect_level[j] = gd_model_rect_level_after(&s->m, j, tret, &s->md);
+            gd_status st = reset_at(s, tret, err);
+            if (st != GD_OK)
+                return st;
+        }
+        if (s->md.from_state)
+            modes_from_state(s);
+    }
+    return GD_OK;
+}
+
+GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err)
+{
+    double t_end_abs = (double)(s->period + 1) * s->m.period;
+    gd_status st = gd_sim_advance_to(s, t_end_abs, err);
+    if (st != GD_OK)
+        return st;
+    /* land exactly on the boundary */
+    s->t = (double)(s->period + 1 - s->shift) * s->m.period;
+    s->period++;
+    s->events_this_period = 0;
+    /* endless separation: a mesh open for whole periods, one after another, with no event */
+    for (int j = 0; j < s->m.nmesh; j++) {
+        int c = s->m.mesh_clear[j];
+        int open_all_period = s->md.mode[c] == 0 && s->was_open[j] && s->by_clear[c] == s->events_at_start[c];
+        s->open_periods[j] = open_all_period ? s->open_periods[j] + 1 : 0;
+        s->was_open[j] = s->md.mode[c] == 0;
+        if (s->open_periods[j] > s->o.max_separated_periods)
+            return gd_error_set(err, GD_ERR_PHYSICS,
+                                "%s: the teeth have been separated for %ld mesh periods without touching again "
+                                "(t = %ld periods): the load cannot keep this mesh engaged; raise the torque or the "
+                                "damping, or reduce the excitation", s->m.clear[c].name, s->open_periods[j], s->period);
+    }
+    memcpy(s->events_at_start, s->by_clear, sizeof s->by_clear);
+    if (s->period - s->shift >= SHIFT_PERIODS) {
+        s->shift = s->period;
+        st = reset_at(s, 0.0, err);
+        s->t = 0.0;
+        if (st != GD_OK)
+            return st;
+    }
+    return GD_OK;
+}
+
+GD_API double gd_sim_time(const gd_sim *s) { return abs_time(s, s->t); }
+GD_API long gd_sim_period_index(const gd_sim *s) { return s->period; }
+GD_API const double *gd_sim_state(const gd_sim *s) { return N_VGetArrayPointer(s->y); }
+GD_API const gd_modes *gd_sim_modes(const gd_sim *s) { return &s->md; }
+GD_API const gd_model *gd_sim_model(const gd_sim *s) { return &s->m; }
+
+GD_API gd_status gd_sim_dense(gd_sim *s, double t_abs, double *y, gd_error *err)
+{
+    double t = t_abs - (double)s->shift * s->m.period;
+    /* the absolute/local conversion can move t by an ulp outside the last step: clamp */
+    double tol = 1e-12 * (fabs(s->t) + s->m.period);
+    if (t > s->t && t <= s->t + tol)
+        t = s->t;
+    if (t < s->t_step0 && t >= s->t_step0 - tol)
+        t = s->t_step0;
+    if (t == s->t) { /* the current state (also before the first step, when there is no interpolant) */
+        memcpy(y, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->m.n);
+        return GD_OK;
+    }
+    int flag = s->ops->get_dky(s->mem, t, 0, s->tmp);
+    if (flag < 0)
+        return sun_check(s, flag, "GetDky", err);
+    memcpy(y, N_VGetArrayPointer(s->tmp), sizeof(double) * (size_t)s->m.n);
+    return GD_OK;
+}
+
+GD_API void gd_sim_rhs(gd_sim *s, double t_abs, const double *y, double *ydot)
+{
+    double t = t_abs - (double)s->shift * s->m.period;
+    gd_model_rhs(&s->m, t, y, ydot, &s->md);
+    s->extra_rhs++;
+}
+
+GD_API void gd_sim_get_stats(const gd_sim *s, gd_sim_stats *st)
+{
+    memset(st, 0, sizeof *st);
+    s->ops->get_num_steps(s->mem, &st->steps);
+    s->ops->get_num_step_attempts(s->mem, &st->step_attempts);
+    st->root_evals = s->nroot_evals;
+    st->rhs_evals = s->nrhs;
+    st->extra_rhs_evals = s->extra_rhs;
+    st->jac_evals = s->jac_calls;
+    if (s->implicit)
+        ARKStepGetNumLinIters(s->mem, &st->lin_iters);
+    st->resets = s->resets;
+    st->grazing_suspects = s->grazing_suspects;
+    st->grazing_rewinds = s->grazing_rewinds;
+    st->events = s->events;
+    memcpy(st->events_by_kind, s->by_kind, sizeof s->by_kind);
+    memcpy(st->events_by_clearance, s->by_clear, sizeof s->by_clear);
+}

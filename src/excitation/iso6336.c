@@ -1,0 +1,21 @@
+/* ISO 6336-1 (method B) mean mesh stiffness, the default for mesh_stiffness_n_per_m. */
+#include "geardyn/gd_geometry.h"
+
+#include <math.h>
+
+GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g)
+{
+    static const double C[9] = {0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182};
+    double cb3 = pow(cos(g->beta), 3);
+    double zn1 = g->z[0] / cb3, zn2 = g->z[1] / cb3, x1 = g->x[0], x2 = g->x[1];
+    double q = C[0] + C[1] / zn1 + C[2] / zn2 + C[3] * x1 + C[4] * x1 / zn1 + C[5] * x2 + C[6] * x2 / zn2 +
+               C[7] * x1 * x1 + C[8] * x2 * x2;                     /* mm um / N */
+    double cth = 1.0 / q;                                          /* N / (mm um) */
+    double cprime = cth * 0.8 * 1.0 * 0.975 * cos(g->beta);         /* C_M, C_R, C_B */
+    double cga = cprime * (0.75 * g->eps_alpha + 0.25);
+    if (g->eps_alpha < 1.2)
+        cga *= 0.9;
+    double k_transverse = cga * (g->b_contact * 1e3) * 1e6;          /* N/(mm um) * mm -> N/um -> N/m */
+    (void)c;
+    return k_transverse / (cos(g->beta_b) * cos(g->beta_b));
+}

@@ -1,0 +1,79 @@
+/* Atomic output files (temporary name, fsync, rename) and output directories. */
+#include "geardyn/gd_output.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+GD_API gd_status gd_mkdir_p(const char *dir, gd_error *err)
+{
+    char buf[1200];
+    if (strlen(dir) >= sizeof buf)
+        return gd_error_set(err, GD_ERR_IO, "%s: path too long", dir);
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p != '/')
+            continue;
+        *p = '\0';
+        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+            return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", buf, strerror(errno));
+        *p = '/';
+    }
+    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", buf, strerror(errno));
+    struct stat sb;
+    if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return gd_error_set(err, GD_ERR_IO, "%s: not a directory", buf);
+    return GD_OK;
+}
+
+GD_API gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err)
+{
+    memset(f, 0, sizeof *f);
+    snprintf(f->path, sizeof f->path, "%s/%s", dir, name);
+    snprintf(f->tmp, sizeof f->tmp, "%s/.%s.tmp-XXXXXX", dir, name);
+    int fd = mkstemp(f->tmp);
+    if (fd < 0)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot create a temporary file: %s", f->path, strerror(errno));
+    fchmod(fd, 0644);
+    f->fp = fdopen(fd, "w");
+    if (!f->fp) {
+        close(fd);
+        unlink(f->tmp);
+        return gd_error_set(err, GD_ERR_IO, "%s: fdopen: %s", f->path, strerror(errno));
+    }
+    return GD_OK;
+}
+
+GD_API gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err)
+{
+    if (!f->fp)
+        return gd_error_set(err, GD_ERR_INTERNAL, "%s: not open", f->path);
+    int bad = ferror(f->fp);
+    bad |= fflush(f->fp) != 0;
+    bad |= fsync(fileno(f->fp)) != 0;
+    bad |= fclose(f->fp) != 0;
+    f->fp = NULL;
+    if (bad) {
+        unlink(f->tmp);
+        return gd_error_set(err, GD_ERR_IO, "%s: write failed: %s", f->path, strerror(errno));
+    }
+    if (rename(f->tmp, f->path) != 0) {
+        int e = errno;
+        unlink(f->tmp);
+        return gd_error_set(err, GD_ERR_IO, "%s: rename failed: %s", f->path, strerror(e));
+    }
+    return GD_OK;
+}
+
+GD_API void gd_atomic_abort(gd_atomic_file *f)
+{
+    if (f->fp) {
+        fclose(f->fp);
+        f->fp = NULL;
+        unlink(f->tmp);
+    }
+}

@@ -1,0 +1,505 @@
+/* Reading case files (inih) and --set assignments into a gd_case, strictly. */
+#include "geardyn/gd_case.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <ini.h>
+
+GD_API const char *gd_source_name(gd_source s)
+{
+    switch (s) {
+    case GD_SRC_DEFAULT: return "default";
+    case GD_SRC_FILE: return "file";
+    case GD_SRC_SET: return "--set";
+    case GD_SRC_DERIVED: return "derived";
+    }
+    return "?";
+}
+
+static void *field(gd_case *c, const gd_keyspec *k) { return (char *)c + k->offset; }
+static const void *cfield(const gd_case *c, const gd_keyspec *k) { return (const char *)c + k->offset; }
+
+static void set_default(gd_case *c, const gd_keyspec *k)
+{
+    switch (k->type) {
+    case GD_KEY_DOUBLE: *(double *)field(c, k) = k->def; break;
+    case GD_KEY_INT:
+    case GD_KEY_ENUM:
+    case GD_KEY_BOOL: *(int *)field(c, k) = (int)k->def; break;
+    case GD_KEY_STRING: snprintf((char *)field(c, k), 2, "%s", ""); break;
+    case GD_KEY_DLIST: *(int *)((char *)c + k->count_offset) = 0; break;
+    }
+}
+
+GD_API gd_status gd_case_init(gd_case *c, gd_error *err)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    memset(c, 0, sizeof *c);
+    c->src = calloc(n, 1);
+    c->src_line = calloc(n, sizeof(int));
+    if (!c->src || !c->src_line) {
+        gd_case_free(c);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory initialising a case");
+    }
+    for (size_t i = 0; i < n; i++)
+        set_default(c, &s[i]);
+    return GD_OK;
+}
+
+GD_API void gd_case_free(gd_case *c)
+{
+    if (!c)
+        return;
+    free(c->src);
+    free(c->src_line);
+    c->src = NULL;
+    c->src_line = NULL;
+}
+
+GD_API gd_status gd_case_copy(gd_case *dst, const gd_case *src, gd_error *err)
+{
+    size_t n;
+    gd_case_schema(&n);
+    *dst = *src;
+    dst->src = malloc(n);
+    dst->src_line = malloc(n * sizeof(int));
+    if (!dst->src || !dst->src_line) {
+        gd_case_free(dst);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory copying a case");
+    }
+    memcpy(dst->src, src->src, n);
+    memcpy(dst->src_line, src->src_line, n * sizeof(int));
+    return GD_OK;
+}
+
+/* Levenshtein distance, for did-you-mean suggestions. */
+static size_t edit_distance(const char *a, const char *b)
+{
+    size_t la = strlen(a), lb = strlen(b);
+    if (la > 63 || lb > 63)
+        return 64;
+    size_t d[64][64];
+    for (size_t i = 0; i <= la; i++) d[i][0] = i;
+    for (size_t j = 0; j <= lb; j++) d[0][j] = j;
+    for (size_t i = 1; i <= la; i++)
+        for (size_t j = 1; j <= lb; j++) {
+            size_t sub = d[i - 1][j - 1] + (a[i - 1] != b[j - 1]);
+            size_t del = d[i - 1][j] + 1, ins = d[i][j - 1] + 1;
+            d[i][j] = sub < del ? (sub < ins ? sub : ins) : (del < ins ? del : ins);
+        }
+    return d[la][lb];
+}
+
+static void list_sections(char *buf, size_t len)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    buf[0] = '\0';
+    const char *last = "";
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(s[i].section, last) != 0) {
+            size_t used = strlen(buf);
+            snprintf(buf + used, len - used, "%s[%s]", used ? " " : "", s[i].section);
+            last = s[i].section;
+        }
+}
+
+static int section_exists(const char *section)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(s[i].section, section) == 0)
+            return 1;
+    return 0;
+}
+
+static gd_status unknown_key(const char *where, const char *section, const char *key, gd_error *err)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    if (!section_exists(section)) {
+        char secs[512];
+        list_sections(secs, sizeof secs);
+        const char *best = NULL;
+        size_t bd = 99;
+        for (size_t i = 0; i < n; i++) {
+            size_t d = edit_distance(section, s[i].section);
+            if (d < bd) { bd = d; best = s[i].section; }
+        }
+        if (best && bd <= 3)
+            return gd_error_set(err, GD_ERR_INPUT, "%s: [%s]: unknown section, did you mean [%s]? (valid: %s)",
+                                where, section, best, secs);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: [%s]: unknown section (valid: %s)", where, section, secs);
+    }
+    /* best match in the same section, then anywhere */
+    const gd_keyspec *best = NULL;
+    size_t bd = 99;
+    for (size_t i = 0; i < n; i++) {
+        size_t d = edit_distance(key, s[i].key) + (strcmp(section, s[i].section) ? 2 : 0);
+        if (d < bd) { bd = d; best = &s[i]; }
+    }
+    char keys[2048] = "";
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(s[i].section, section) == 0) {
+            size_t used = strlen(keys);
+            snprintf(keys + used, sizeof keys - used, "%s%s", used ? ", " : "", s[i].key);
+        }
+    if (best && bd <= 4 + strlen(key) / 6)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: %s: unknown key in [%s], did you mean %s.%s? (valid: %s)",
+                            where, key, section, best->section, best->key, keys);
+    return gd_error_set(err, GD_ERR_INPUT, "%s: %s: unknown key in [%s] (valid: %s)", where, key, section, keys);
+}
+
+static void describe_range(const gd_keyspec *k, char *buf, size_t len)
+{
+    switch (k->type) {
+    case GD_KEY_ENUM:
+    case GD_KEY_BOOL: {
+        snprintf(buf, len, "one of ");
+        size_t used = strlen(buf);
+        for (const char *p = k->choices; *p && used + 2 < len; p++)
+            buf[used++] = (*p == '|') ? ',' : *p;
+        buf[used] = '\0';
+        if (k->type == GD_KEY_BOOL)
+            snprintf(buf + used, len - used, " (also true/false, yes/no, 1/0)");
+        break;
+    }
+    case GD_KEY_STRING: snprintf(buf, len, "text"); break;
+    case GD_KEY_INT:
+        snprintf(buf, len, "a whole number in [%.0f, %.0f]", k->min, k->max);
+        break;
+    case GD_KEY_DOUBLE:
+    case GD_KEY_DLIST:
+        snprintf(buf, len, "%s%s%s%g, %g%s%s%s", k->type == GD_KEY_DLIST ? "comma-separated numbers, each " : "",
+                 "a finite number in ", k->min_open ? "(" : "[", k->min, k->max, k->max_open ? ")" : "]",
+                 k->unit[0] ? " " : "", k->unit);
+        break;
+    }
+}
+
+static int in_range(const gd_keyspec *k, double v)
+{
+    if (!isfinite(v))
+        return 0;
+    if (k->min_open ? !(v > k->min) : !(v >= k->min))
+        return 0;
+    if (k->max_open ? !(v < k->max) : !(v <= k->max))
+        return 0;
+    return 1;
+}
+
+static int parse_double(const char *s, double *v)
+{
+    char *end;
+    errno = 0;
+    while (isspace((unsigned char)*s)) s++;
+    if (!*s)
+        return 0;
+    *v = strtod(s, &end);
+    while (isspace((unsigned char)*end)) end++;
+    return *end == '\0' && errno != ERANGE;
+}
+
+static gd_status bad_value(const char *where, const gd_keyspec *k, const char *value, const char *problem, gd_error *err)
+{
+    char range[512];
+    describe_range(k, range, sizeof range);
+    return gd_error_set(err, GD_ERR_INPUT, "%s: %s.%s: %s '%s' (valid: %s)", where, k->section, k->key, problem,
+                        value, range);
+}
+
+/* Store value (text) into key k; where = "file:line" or "--set". */
+static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const char *where, gd_error *err)
+{
+    double v;
+    switch (k->type) {
+    case GD_KEY_DOUBLE:
+        if (!parse_double(value, &v))
+            return bad_value(where, k, value, "not a number:", err);
+        if (!isfinite(v))
+            return bad_value(where, k, value, "not finite:", err);
+        if (!in_range(k, v))
+            return bad_value(where, k, value, "out of range:", err);
+        *(double *)field(c, k) = v;
+        return GD_OK;
+    case GD_KEY_INT:
+        if (!parse_double(value, &v) || v != floor(v))
+            return bad_value(where, k, value, "not a whole number:", err);
+        if (!in_range(k, v))
+            return bad_value(where, k, value, "out of range:", err);
+        *(int *)field(c, k) = (int)v;
+        return GD_OK;
+    case GD_KEY_BOOL: {
+        static const char *yes[] = {"on", "true", "yes", "1"}, *no[] = {"off", "false", "no", "0"};
+        for (int i = 0; i < 4; i++) {
+            if (strcmp(value, yes[i]) == 0) { *(int *)field(c, k) = 1; return GD_OK; }
+            if (strcmp(value, no[i]) == 0) { *(int *)field(c, k) = 0; return GD_OK; }
+        }
+        return bad_value(where, k, value, "not a switch:", err);
+    }
+    case GD_KEY_ENUM: {
+        int idx = 0;
+        const char *p = k->choices;
+        size_t vl = strlen(value);
+        while (*p) {
+            const char *bar = strchr(p, '|');
+            size_t l = bar ? (size_t)(bar - p) : strlen(p);
+            if (l == vl && strncmp(p, value, l) == 0) {
+                *(int *)field(c, k) = idx;
+                return GD_OK;
+            }
+            idx++;
+            p += l + (bar ? 1 : 0);
+        }
+        return bad_value(where, k, value, "unknown choice", err);
+    }
+    case GD_KEY_STRING: {
+        char *dst = field(c, k);
+        size_t cap = (k->offset == offsetof(gd_case, directory)) ? GD_PATH_MAX
+                   : (k->offset == offsetof(gd_case, table)) ? 128 : 256;
+        if (strlen(value) >= cap)
+            return bad_value(where, k, value, "too long:", err);
+        snprintf(dst, cap, "%s", value);
+        return GD_OK;
+    }
+    case GD_KEY_DLIST: {
+        double *arr = field(c, k);
+        int count = 0;
+        char buf[512];
+        if (strlen(value) >= sizeof buf)
+            return bad_value(where, k, value, "too long:", err);
+        snprintf(buf, sizeof buf, "%s", value);
+        char *save = NULL;
+        for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
+            if (count == GD_MAX_HARMONICS)
+                return bad_value(where, k, value, "more than 8 values:", err);
+            if (!parse_double(tok, &v) || !in_range(k, v))
+                return bad_value(where, k, value, "bad list element in", err);
+            arr[count++] = v;
+        }
+        if (count == 0)
+            return bad_value(where, k, value, "empty list:", err);
+        *(int *)((char *)c + k->count_offset) = count;
+        return GD_OK;
+    }
+    }
+    return gd_error_set(err, GD_ERR_INTERNAL, "bad key type");
+}
+
+typedef struct load_ctx {
+    gd_case *c;
+    gd_error *err;
+    FILE *fp;
+    int line;
+    int too_long;
+    int failed;
+} load_ctx;
+
+static char *reader(char *str, int num, void *stream)
+{
+    load_ctx *ctx = stream;
+    char *r = fgets(str, num, ctx->fp);
+    if (r) {
+        size_t l = strlen(r);
+        if (l > 0 && r[l - 1] == '\n')
+            ctx->line++;
+        else if (!feof(ctx->fp))
+            ctx->too_long = 1;
+        else
+            ctx->line++;
+    }
+    return r;
+}
+
+static int handler(void *user, const char *section, const char *name, const char *value)
+{
+    load_ctx *ctx = user;
+    if (ctx->failed)
+        return 0;
+    char where[GD_PATH_MAX + 32];
+    snprintf(where, sizeof where, "%s:%d", ctx->c->path, ctx->line);
+    if (ctx->too_long) {
+        ctx->failed = 1;
+        gd_error_set(ctx->err, GD_ERR_INPUT, "%s: line longer than 199 characters", where);
+        return 0;
+    }
+    const gd_keyspec *k = gd_case_find_key(section, name);
+    if (!k) {
+        ctx->failed = 1;
+        unknown_key(where, section, name, ctx->err);
+        return 0;
+    }
+    size_t n, i;
+    const gd_keyspec *s = gd_case_schema(&n);
+    i = (size_t)(k - s);
+    if (ctx->c->src[i] == GD_SRC_FILE) {
+        ctx->failed = 1;
+        gd_error_set(ctx->err, GD_ERR_INPUT, "%s: %s.%s: given twice (first at line %d)", where, section, name,
+                     ctx->c->src_line[i]);
+        return 0;
+    }
+    if (store(ctx->c, k, value, where, ctx->err) != GD_OK) {
+        ctx->failed = 1;
+        return 0;
+    }
+    ctx->c->src[i] = GD_SRC_FILE;
+    ctx->c->src_line[i] = ctx->line;
+    return 1;
+}
+
+GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
+{
+    if (strlen(path) >= GD_PATH_MAX)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: path too long", path);
+    FILE *fp = fopen(path, "r");
+    if (!fp)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open case file: %s", path, strerror(errno));
+    snprintf(c->path, sizeof c->path, "%s", path);
+    load_ctx ctx = {c, err, fp, 0, 0, 0};
+    int rc = ini_parse_stream(reader, &ctx, handler, &ctx);
+    fclose(fp);
+    if (ctx.failed)
+        return GD_ERR_INPUT;
+    if (ctx.too_long)
+        return gd_error_set(err, GD_ERR_INPUT, "%s:%d: line longer than 199 characters", path, ctx.line);
+    if (rc != 0)
+        return gd_error_set(err, GD_ERR_INPUT, "%s:%d: syntax error (expected [section] or key = value)", path,
+                            rc > 0 ? rc : ctx.line);
+    return GD_OK;
+}
+
+GD_API gd_status gd_case_set(gd_case *c, const char *assignment, int set_index, gd_error *err)
+{
+    char buf[1024];
+    if (strlen(assignment) >= sizeof buf)
+        return gd_error_set(err, GD_ERR_INPUT, "--set %s: too long", assignment);
+    snprintf(buf, sizeof buf, "%s", assignment);
+    char *eq = strchr(buf, '=');
+    char *dot = strchr(buf, '.');
+    if (!eq || !dot || dot > eq)
+        return gd_error_set(err, GD_ERR_INPUT, "--set %s: expected section.key=value", assignment);
+    *eq = '\0';
+    *dot = '\0';
+    char *section = buf, *key = dot + 1, *value = eq + 1;
+    /* trim */
+    while (*value == ' ') value++;
+    for (char *e = value + strlen(value); e > value && isspace((unsigned char)e[-1]); ) *--e = '\0';
+    for (char *e = key + strlen(key); e > key && isspace((unsigned char)e[-1]); ) *--e = '\0';
+    char where[64];
+    snprintf(where, sizeof where, "--set #%d", set_index + 1);
+    const gd_keyspec *k = gd_case_find_key(section, key);
+    if (!k)
+        return unknown_key(where, section, key, err);
+    gd_status st = store(c, k, value, where, err);
+    if (st != GD_OK)
+        return st;
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    size_t i = (size_t)(k - s);
+    c->src[i] = GD_SRC_SET;
+    c->src_line[i] = set_index + 1;
+    return GD_OK;
+}
+
+static const gd_keyspec *find_dotted(const char *name, gd_error *err)
+{
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", name);
+    char *dot = strchr(buf, '.');
+    if (!dot) {
+        gd_error_set(err, GD_ERR_INPUT, "%s: expected section.key", name);
+        return NULL;
+    }
+    *dot = '\0';
+    const gd_keyspec *k = gd_case_find_key(buf, dot + 1);
+    if (!k) {
+        unknown_key("parameter", buf, dot + 1, err);
+        return NULL;
+    }
+    return k;
+}
+
+GD_API gd_status gd_case_get_number(const gd_case *c, const char *name, double *value, gd_error *err)
+{
+    const gd_keyspec *k = find_dotted(name, err);
+    if (!k)
+        return GD_ERR_INPUT;
+    if (k->type == GD_KEY_DOUBLE)
+        *value = *(const double *)cfield(c, k);
+    else if (k->type == GD_KEY_INT)
+        *value = *(const int *)cfield(c, k);
+    else
+        return gd_error_set(err, GD_ERR_INPUT, "%s: not a numeric key", name);
+    return GD_OK;
+}
+
+GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, gd_error *err)
+{
+    const gd_keyspec *k = find_dotted(name, err);
+    if (!k)
+        return GD_ERR_INPUT;
+    if (k->type != GD_KEY_DOUBLE && k->type != GD_KEY_INT)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: not a numeric key", name);
+    if (k->type == GD_KEY_INT && value != floor(value))
+        return bad_value("sweep", k, "fractional", "not a whole number:", err);
+    if (!in_range(k, value)) {
+        char txt[64];
+        snprintf(txt, sizeof txt, "%.17g", value);
+        return bad_value("sweep", k, txt, "out of range:", err);
+    }
+    if (k->type == GD_KEY_DOUBLE)
+        *(double *)field(c, k) = value;
+    else
+        *(int *)field(c, k) = (int)value;
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    c->src[k - s] = GD_SRC_SET;
+    return GD_OK;
+}
+
+GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len)
+{
+    size_t n;
+    const gd_keyspec *k = &gd_case_schema(&n)[i];
+    switch (k->type) {
+    case GD_KEY_DOUBLE: snprintf(buf, len, "%.10g", *(const double *)cfield(c, k)); break;
+    case GD_KEY_INT: snprintf(buf, len, "%d", *(const int *)cfield(c, k)); break;
+    case GD_KEY_BOOL: snprintf(buf, len, "%s", *(const int *)cfield(c, k) ? "on" : "off"); break;
+    case GD_KEY_ENUM: {
+        int idx = *(const int *)cfield(c, k);
+        const char *p = k->choices;
+        for (int j = 0; j < idx && p; j++) {
+            p = strchr(p, '|');
+            if (p) p++;
+        }
+        size_t l = p ? strcspn(p, "|") : 1;
+        snprintf(buf, len, "%.*s", (int)l, p ? p : "?");
+        break;
+    }
+    case GD_KEY_STRING: snprintf(buf, len, "%s", (const char *)cfield(c, k)); break;
+    case GD_KEY_DLIST: {
+        const double *arr = cfield(c, k);
+        int count = *(const int *)((const char *)c + k->count_offset);
+        buf[0] = '\0';
+        for (int j = 0; j < count; j++) {
+            size_t used = strlen(buf);
+            snprintf(buf + used, len - used, "%s%.10g", j ? ", " : "", arr[j]);
+        }
+        break;
+    }
+    }
+}
+
+GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line)
+{
+    if (line)
+        *line = c->src_line[i];
+    return (gd_source)c->src[i];
+}

@@ -1,0 +1,168 @@
+/* Resolving a case: cross-key consistency and the derived values that were not pinned. */
+#include "geardyn/gd_case.h"
+#include "geardyn/gd_geometry.h"
+
+#include <stdio.h>
+#include <arkode/arkode_butcher_dirk.h>
+#include <arkode/arkode_butcher_erk.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+static size_t key_index(const char *section, const char *key)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    return (size_t)(gd_case_find_key(section, key) - s);
+}
+
+static int given(const gd_case *c, const char *section, const char *key)
+{
+    size_t i = key_index(section, key);
+    return c->src[i] == GD_SRC_FILE || c->src[i] == GD_SRC_SET;
+}
+
+static void where(const gd_case *c, const char *section, const char *key, char *buf, size_t len)
+{
+    size_t i = key_index(section, key);
+    if (c->src[i] == GD_SRC_FILE)
+        snprintf(buf, len, "%s:%d", c->path, c->src_line[i]);
+    else if (c->src[i] == GD_SRC_SET)
+        snprintf(buf, len, "--set #%d", c->src_line[i]);
+    else
+        snprintf(buf, len, "%s", c->path[0] ? c->path : "case");
+}
+
+static void derive(gd_case *c, const char *section, const char *key, double *field, double value)
+{
+    size_t i = key_index(section, key);
+    if (c->src[i] == GD_SRC_FILE || c->src[i] == GD_SRC_SET)
+        return;
+    *field = value;
+    c->src[i] = GD_SRC_DERIVED;
+}
+
+GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    /* torque or power */
+    if (given(c, "operating", "torque_nm") && given(c, "operating", "power_kw")) {
+        where(c, "operating", "power_kw", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
+                            "(valid: one of them; torque = 9550 P / n)", w);
+    }
+    if (given(c, "operating", "power_kw"))
+        derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
+    else {
+        if (!given(c, "operating", "torque_nm")) {
+            c->torque_nm = 500.0;
+            c->src[key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;
+        }
+        derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
+    }
+    /* static transmission error amplitude */
+    int has_fa = given(c, "excitation", "base_pitch_deviation_um");
+    int has_fb = given(c, "excitation", "profile_deviation_um");
+    if (has_fa != has_fb) {
+        where(c, "excitation", has_fa ? "base_pitch_deviation_um" : "profile_deviation_um", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: give both base_pitch_deviation_um and "
+                            "profile_deviation_um (valid: both, e_r = sqrt(f_a^2 + f_b^2))", w,
+                            has_fa ? "base_pitch_deviation_um" : "profile_deviation_um");
+    }
+    if (has_fa && given(c, "excitation", "ste_amplitude_um")) {
+        where(c, "excitation", "ste_amplitude_um", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.ste_amplitude_um: give the amplitude or the two "
+                            "deviations, not both (valid: one way)", w);
+    }
+    if (has_fa)
+        derive(c, "excitation", "ste_amplitude_um", &c->ste_amplitude_um,
+               hypot(c->base_pitch_deviation_um, c->profile_deviation_um));
+    else if (!given(c, "excitation", "ste_amplitude_um"))
+        c->ste_amplitude_um = 10.0;
+    /* stiffness harmonics */
+    if (c->n_stiffness_phases > c->n_stiffness_harmonics) {
+        where(c, "excitation", "stiffness_phases_deg", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_phases_deg: %d phases for %d harmonics "
+                            "(valid: at most one phase per harmonic)", w, c->n_stiffness_phases, c->n_stiffness_harmonics);
+    }
+    if (c->stiffness == GD_STIFF_HARMONIC && c->n_stiffness_harmonics == 0) {
+        c->stiffness_harmonics[0] = 0.1;
+        c->n_stiffness_harmonics = 1;
+    }
+    double asum = 0;
+    for (int j = 0; j < c->n_stiffness_harmonics; j++)
+        asum += c->stiffness_harmonics[j];
+    if (c->stiffness == GD_STIFF_HARMONIC && asum >= 1.0) {
+        where(c, "excitation", "stiffness_harmonics", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_harmonics: amplitudes sum to %g, the "
+                            "stiffness could become negative (valid: sum below 1)", w, asum);
+    }
+    if (given(c, "solver", "order") && c->method == GD_METHOD_DIRK && c->order > 5) {
+        where(c, "solver", "order", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: solver.order: %d for dirk (valid: 2 to 5)", w, c->order);
+    }
+    if (c->method == GD_METHOD_ERK && c->order == 7 && !c->table[0]) {
+        where(c, "solver", "order", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: solver.order: 7 for erk (valid: 2, 3, 4, 5, 6, 8: SUNDIALS "
+                            "6.4 has no 7th-order explicit table)", w);
+    }
+    if (c->method == GD_METHOD_DIRK && !given(c, "solver", "order"))
+        c->order = 4;
+    if (c->table[0]) {
+        ARKodeButcherTable t = c->method == GD_METHOD_DIRK ? ARKodeButcherTable_LoadDIRKByName(c->table)
+                                                          : ARKodeButcherTable_LoadERKByName(c->table);
+        if (!t || c->method == GD_METHOD_RK4) {
+            where(c, "solver", "table", w, sizeof w);
+            if (t)
+                ARKodeButcherTable_Free(t);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: solver.table: '%s' is not an ARKODE %s table (valid: a "
+                                "name such as ARKODE_DORMAND_PRINCE_7_4_5 for erk, ARKODE_SDIRK_5_3_4 for dirk; "
+                                "none for rk4)", w, c->table, c->method == GD_METHOD_DIRK ? "DIRK" : "ERK");
+        }
+        ARKodeButcherTable_Free(t);
+    }
+
+    /* geometry and what follows from it */
+    gd_geometry g;
+    gd_status st = gd_geometry_compute(c, &g, err);
+    if (st != GD_OK)
+        return gd_error_prefix(err, "%s: [gear]", c->path[0] ? c->path : "case");
+    for (int i = 0; i < 2; i++) {
+        double bore = i == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm;
+        if (bore * 0.5e-3 >= g.rf[i]) {
+            const char *k = i == 0 ? "bore_diameter_pinion_mm" : "bore_diameter_gear_mm";
+            where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.%s: bore %g mm does not fit inside the root circle "
+                                "(valid: below %.4g mm)", w, k, bore, 2e3 * g.rf[i]);
+        }
+    }
+    double m1, i1, m2, i2;
+    gd_body_half(c, &g, 0, &m1, &i1);
+    gd_body_half(c, &g, 1, &m2, &i2);
+    derive(c, "gear", "pinion_mass_kg", &c->pinion_mass_kg, m1);
+    derive(c, "gear", "gear_mass_kg", &c->gear_mass_kg, m2);
+    derive(c, "gear", "pinion_inertia_kgm2", &c->pinion_inertia_kgm2, i1);
+    derive(c, "gear", "gear_inertia_kgm2", &c->gear_inertia_kgm2, i2);
+    double I1 = c->pinion_inertia_kgm2, I2 = c->gear_inertia_kgm2;
+    derive(c, "gear", "equivalent_mass_kg", &c->equivalent_mass_kg,
+           I1 * I2 / (I1 * g.rb[1] * g.rb[1] + I2 * g.rb[0] * g.rb[0]));
+    derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, &g));
+    derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
+           gd_groove_shaft_stiffness(c, &g, 0));
+    derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,
+           gd_groove_shaft_stiffness(c, &g, 1));
+    double frac = g.eps_alpha - floor(g.eps_alpha);
+    if (frac < 0.02 || frac > 0.98)
+        frac = 0.5;
+    derive(c, "excitation", "rectangular_high_fraction", &c->rectangular_high_fraction, frac);
+    if (c->stiffness == GD_STIFF_RECTANGULAR) {
+        double d = c->rectangular_high_fraction;
+        if (c->rectangular_variation * d / (1 - d) >= 1.0) {
+            where(c, "excitation", "rectangular_variation", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.rectangular_variation: %g with high fraction %g "
+                                "makes the low level negative (valid: below %g)", w, c->rectangular_variation, d,
+                                (1 - d) / d);
+        }
+    }
+    return GD_OK;
+}

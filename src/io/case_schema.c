@@ -1,0 +1,144 @@
+/* The case-file schema: every section and key, its type, unit, range and default. */
+#include "geardyn/gd_case.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+
+#define OFF(f) offsetof(gd_case, f)
+#define D(sec, k, unit, f, lo, hi, lo_open, hi_open, def, help) \
+    { sec, k, GD_KEY_DOUBLE, unit, OFF(f), 0, lo, hi, lo_open, hi_open, def, NULL, help }
+#define I(sec, k, f, lo, hi, def, help) \
+    { sec, k, GD_KEY_INT, "", OFF(f), 0, lo, hi, 0, 0, def, NULL, help }
+#define E(sec, k, f, def, choices, help) \
+    { sec, k, GD_KEY_ENUM, "", OFF(f), 0, 0, 0, 0, 0, def, choices, help }
+#define B(sec, k, f, def, help) \
+    { sec, k, GD_KEY_BOOL, "", OFF(f), 0, 0, 1, 0, 0, def, "off|on", help }
+#define S(sec, k, f, def, help) \
+    { sec, k, GD_KEY_STRING, "", OFF(f), 0, 0, 0, 0, 0, 0, def, help }
+#define L(sec, k, unit, f, cnt, lo, hi, help) \
+    { sec, k, GD_KEY_DLIST, unit, OFF(f), OFF(cnt), lo, hi, 0, 0, 0, NULL, help }
+
+static const gd_keyspec schema[] = {
+    /* [scene] */
+    E("scene", "analysis", analysis, 0, "response", "what to compute"),
+    E("scene", "model", model, 2, "torsional|torsional-lr|bta",
+      "dynamic model: one mesh coordinate, the two helical halves, or 10-DOF bending-torsion-axial"),
+    B("scene", "bearing_clearance", bearing_clearance, 1, "radial bearing clearance (dead zone) in the supports"),
+    B("scene", "error_excitation", error_excitation, 1, "static transmission error excitation e(t)"),
+    B("scene", "axial_coupling", axial_coupling, 1, "axial mesh force component and axial DOFs (bta)"),
+    S("scene", "title", title, "", "free text shown in outputs"),
+
+    /* [gear] */
+    D("gear", "normal_module_mm", "mm", normal_module_mm, 0.1, 100, 0, 0, 5, "normal module m_n"),
+    I("gear", "teeth_pinion", teeth_pinion, 6, 500, 30, "number of teeth z1 (pinion, driving)"),
+    I("gear", "teeth_gear", teeth_gear, 6, 2000, 72, "number of teeth z2 (gear, driven)"),
+    D("gear", "helix_angle_deg", "deg", helix_angle_deg, 0, 45, 0, 0, 33.27, "reference helix angle beta (left half hand; right half opposite)"),
+    D("gear", "normal_pressure_angle_deg", "deg", normal_pressure_angle_deg, 10, 35, 0, 0, 20, "normal pressure angle alpha_n"),
+    D("gear", "profile_shift_pinion", "", profile_shift_pinion, -1, 1.5, 0, 0, 0, "profile shift coefficient x1"),
+    D("gear", "profile_shift_gear", "", profile_shift_gear, -1, 1.5, 0, 0, 0, "profile shift coefficient x2"),
+    D("gear", "addendum_coefficient", "", addendum_coefficient, 0.5, 1.5, 0, 0, 1.0, "addendum coefficient h_a*"),
+    D("gear", "dedendum_coefficient", "", dedendum_coefficient, 0.8, 1.8, 0, 0, 1.25, "dedendum coefficient h_f*"),
+    D("gear", "face_width_pinion_mm", "mm", face_width_pinion_mm, 0, 5000, 1, 0, 40, "face width of one helical half, pinion"),
+    D("gear", "face_width_gear_mm", "mm", face_width_gear_mm, 0, 5000, 1, 0, 44, "face width of one helical half, gear"),
+    D("gear", "groove_width_mm", "mm", groove_width_mm, 0, 5000, 0, 0, 50, "relief groove between the halves"),
+    D("gear", "bore_diameter_pinion_mm", "mm", bore_diameter_pinion_mm, 0, 10000, 0, 0, 0, "bore of the pinion body (0: solid)"),
+    D("gear", "bore_diameter_gear_mm", "mm", bore_diameter_gear_mm, 0, 10000, 0, 0, 0, "bore of the gear body (0: solid)"),
+    D("gear", "youngs_modulus_gpa", "GPa", youngs_modulus_gpa, 1, 1000, 0, 0, 206, "Young's modulus E"),
+    D("gear", "poisson_ratio", "", poisson_ratio, 0, 0.5, 0, 1, 0.3, "Poisson's ratio nu"),
+    D("gear", "density_kg_per_m3", "kg/m^3", density_kg_per_m3, 100, 30000, 0, 0, 7850, "density"),
+    D("gear", "pinion_mass_kg", "kg", pinion_mass_kg, 0, 1e6, 1, 0, NAN, "mass of one pinion half incl. half the groove (derived from geometry)"),
+    D("gear", "gear_mass_kg", "kg", gear_mass_kg, 0, 1e6, 1, 0, NAN, "mass of one gear half incl. half the groove (derived from geometry)"),
+    D("gear", "pinion_inertia_kgm2", "kg m^2", pinion_inertia_kgm2, 0, 1e6, 1, 0, NAN, "polar inertia of one pinion half (derived)"),
+    D("gear", "gear_inertia_kgm2", "kg m^2", gear_inertia_kgm2, 0, 1e6, 1, 0, NAN, "polar inertia of one gear half (derived)"),
+    D("gear", "equivalent_mass_kg", "kg", equivalent_mass_kg, 0, 1e6, 1, 0, NAN,
+      "torsional equivalent mass of one half m_e = I1 I2/(I1 rb2^2 + I2 rb1^2) (derived)"),
+
+    /* [operating] */
+    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, 4000, "pinion (input) speed n"),
+    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque over both halves (default 500, or from power_kw)"),
+    D("operating", "power_kw", "kW", power_kw, 0, 1e6, 1, 0, NAN, "input power P: torque = 9550 P / n (exclusive with torque_nm)"),
+
+    /* [clearance] */
+    D("clearance", "backlash_um", "um", backlash_um, 0, 5000, 0, 0, 10, "total backlash 2b of each mesh along the line of action"),
+    D("clearance", "bearing_clearance_um", "um", bearing_clearance_um, 0, 5000, 0, 0, 5, "total radial clearance 2*eps of every bearing"),
+
+    /* [excitation] */
+    E("excitation", "stiffness", stiffness, 1, "constant|harmonic|rectangular", "mesh stiffness k(t) of each half"),
+    D("excitation", "mesh_stiffness_n_per_m", "N/m", mesh_stiffness_n_per_m, 0, 1e12, 1, 0, NAN,
+      "mean mesh stiffness of one half (derived: ISO 6336-1 c_gamma_alpha times face width)"),
+    L("excitation", "stiffness_harmonics", "", stiffness_harmonics, n_stiffness_harmonics, 0, 0.95,
+      "harmonic: relative amplitudes a_j of k = k_m (1 + sum a_j cos(j w_m t + phi_j))"),
+    L("excitation", "stiffness_phases_deg", "deg", stiffness_phases_deg, n_stiffness_phases, -360, 360,
+      "harmonic: phases phi_j (default 0)"),
+    D("excitation", "rectangular_variation", "", rectangular_variation, 0, 0.95, 0, 0, 0.2,
+      "rectangular: (k_high - k_m)/k_m; the low level keeps the mean at k_m"),
+    D("excitation", "rectangular_high_fraction", "", rectangular_high_fraction, 0, 1, 1, 1, NAN,
+      "rectangular: fraction of the mesh period at the high level (derived: eps_alpha - floor(eps_alpha))"),
+    D("excitation", "ste_amplitude_um", "um", ste_amplitude_um, 0, 1000, 0, 0, NAN,
+      "amplitude e_r of e(t) = e_m + e_r sin(w_m t + phi) (default 10, or from the deviations)"),
+    D("excitation", "ste_mean_um", "um", ste_mean_um, -1000, 1000, 0, 0, 0, "mean e_m of the static transmission error"),
+    D("excitation", "ste_phase_deg", "deg", ste_phase_deg, -360, 360, 0, 0, 0, "phase phi of the static transmission error"),
+    D("excitation", "base_pitch_deviation_um", "um", base_pitch_deviation_um, 0, 1000, 0, 0, NAN,
+      "f_a: with profile_deviation_um gives e_r = sqrt(f_a^2 + f_b^2)"),
+    D("excitation", "profile_deviation_um", "um", profile_deviation_um, 0, 1000, 0, 0, NAN, "f_b (see base_pitch_deviation_um)"),
+    D("excitation", "half_phase_deg", "deg", half_phase_deg, -360, 360, 0, 0, 0,
+      "mesh phase of the right half relative to the left (stagger), degrees of the mesh cycle"),
+
+    /* [damping] */
+    D("damping", "mesh_damping_ratio", "", mesh_damping_ratio, 0, 1, 0, 0, 0.02, "zeta: c = 2 zeta sqrt(k_m m_n)"),
+    E("damping", "mesh_damping_mode", mesh_damping_mode, 0, "always|contact",
+      "mesh damping acts always (Kahraman & Singh) or only while the teeth are in contact"),
+    D("damping", "support_damping_ratio", "", support_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of every bearing support"),
+    D("damping", "shaft_damping_ratio", "", shaft_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of the groove shafts (axial)"),
+
+    /* [support] */
+    D("support", "radial_stiffness_pinion_n_per_m", "N/m", radial_stiffness_pinion_n_per_m, 0, 1e14, 1, 0, 1e9, "radial bearing stiffness of each pinion half"),
+    D("support", "radial_stiffness_gear_n_per_m", "N/m", radial_stiffness_gear_n_per_m, 0, 1e14, 1, 0, 1e9, "radial bearing stiffness of each gear half"),
+    D("support", "axial_stiffness_pinion_n_per_m", "N/m", axial_stiffness_pinion_n_per_m, 0, 1e14, 0, 0, 5e8, "axial support stiffness of each pinion half (0: floating)"),
+    D("support", "axial_stiffness_gear_n_per_m", "N/m", axial_stiffness_gear_n_per_m, 0, 1e14, 1, 0, 5e8, "axial support stiffness of each gear half"),
+    D("support", "shaft_stiffness_pinion_n_per_m", "N/m", shaft_stiffness_pinion_n_per_m, 0, 1e14, 1, 0, NAN,
+      "axial stiffness of the pinion groove shaft (derived: E A / groove width, root circle section)"),
+    D("support", "shaft_stiffness_gear_n_per_m", "N/m", shaft_stiffness_gear_n_per_m, 0, 1e14, 1, 0, NAN,
+      "axial stiffness of the gear groove shaft (derived likewise)"),
+
+    /* [solver] */
+    E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),
+    I("solver", "order", order, 2, 8, 5, "order of the ARKODE method (erk 2-8, dirk 2-5)"),
+    S("solver", "table", table, "", "ARKODE Butcher table name (overrides order), e.g. ARKODE_VERNER_8_5_6"),
+    D("solver", "rtol", "", rtol, 1e-14, 1e-1, 0, 0, 1e-8, "relative tolerance"),
+    D("solver", "atol", "", atol, 1e-16, 1, 0, 0, 1e-10, "absolute tolerance, dimensionless (characteristic lengths)"),
+    I("solver", "steps_per_period", steps_per_period, 4, 1000000, 64, "rk4: fixed steps per mesh period"),
+    B("solver", "root_finding", root_finding, 1, "locate every contact and separation exactly (off: contact mode from the state at every RHS call)"),
+    B("solver", "grazing_watch", grazing_watch, 1, "re-check each step for a touch that leaves and returns inside it"),
+    D("solver", "max_step_fraction", "", max_step_fraction, 0, 1, 1, 0, 0.1, "largest step as a fraction of the mesh period"),
+    D("solver", "characteristic_length_um", "um", characteristic_length_um, 0, 1e4, 1, 0, 1.0, "length scale of the dimensionless equations"),
+    I("solver", "max_events_per_period", max_events_per_period, 1, 100000000, 10000, "more events than this in one mesh period stop the run (chattering)"),
+
+    /* [run] */
+    I("run", "transient_periods", transient_periods, 0, 100000000, 300, "mesh periods discarded before recording"),
+    I("run", "record_periods", record_periods, 1, 100000000, 200, "mesh periods recorded"),
+    E("run", "initial_condition", initial_condition, 0, "static|zero", "start at the static deflection under the mean load, or at rest undeflected"),
+
+    /* [output] */
+    S("output", "directory", directory, "", "output directory (default: results/<case name>; --out overrides)"),
+    I("output", "samples_per_period", samples_per_period, 4, 65536, 64, "uniform time-history samples per mesh period"),
+    B("output", "time_history", time_history, 1, "write time_history.csv"),
+    B("output", "event_log", event_log, 1, "write events.csv"),
+    B("output", "plots", plots, 1, "draw PNG and SVG pictures with gnuplot when it is installed"),
+};
+
+GD_API const gd_keyspec *gd_case_schema(size_t *n)
+{
+    if (n)
+        *n = sizeof schema / sizeof schema[0];
+    return schema;
+}
+
+GD_API const gd_keyspec *gd_case_find_key(const char *section, const char *key)
+{
+    for (size_t i = 0; i < sizeof schema / sizeof schema[0]; i++)
+        if (strcmp(schema[i].section, section) == 0 && strcmp(schema[i].key, key) == 0)
+            return &schema[i];
+    return NULL;
+}

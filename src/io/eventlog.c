@@ -1,0 +1,117 @@
+/* The event log: writing one CSV row per located event, and reading, filtering and
+ * summarising a log for `geardyn events`. */
+#include "geardyn/gd_output.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording"
+
+GD_API void gd_eventlog_header(FILE *fp) { fprintf(fp, "%s\n", EVENTLOG_HEADER); }
+
+GD_API void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int recording)
+{
+    double ph = ev->t / m->period;
+    ph -= floor(ph);
+    fprintf(fp, "%.15g,%ld,%.9f,%s,%s,%d,%.9g,%.9g,%d\n", ev->t / m->omega_n, ev->period, ph,
+            m->clear[ev->clearance].name, gd_event_kind_name(ev->kind), ev->direction,
+            ev->xdot * m->bc_m * m->omega_n, ev->x * m->bc_m * 1e6, recording);
+}
+
+static int kind_index(const char *k)
+{
+    for (int i = 0; i < GD_EV_NKINDS; i++)
+        if (strcmp(k, gd_event_kind_name(i)) == 0)
+            return i;
+    return -1;
+}
+
+GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
+                                       gd_eventlog_summary *sum, gd_error *err)
+{
+    memset(sum, 0, sizeof *sum);
+    FILE *fp = fopen(path, "r");
+    if (!fp)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+    char line[1024];
+    long lineno = 0;
+    gd_status st = GD_OK;
+    if (!fgets(line, sizeof line, fp) || strncmp(line, EVENTLOG_HEADER, strlen(EVENTLOG_HEADER)) != 0) {
+        fclose(fp);
+        return gd_error_set(err, GD_ERR_INPUT, "%s:1: not a geardyn event log (expected the header '%s')", path,
+                            EVENTLOG_HEADER);
+    }
+    lineno = 1;
+    if (out_csv)
+        fprintf(out_csv, "%s\n", EVENTLOG_HEADER);
+    sum->t_first_s = INFINITY;
+    sum->t_last_s = -INFINITY;
+    while (fgets(line, sizeof line, fp)) {
+        lineno++;
+        char copy[1024];
+        snprintf(copy, sizeof copy, "%s", line);
+        char *f[9];
+        int nf = 0;
+        char *save = NULL;
+        for (char *tok = strtok_r(copy, ",\n", &save); tok && nf < 9; tok = strtok_r(NULL, ",\n", &save))
+            f[nf++] = tok;
+        if (nf != 9) {
+            st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: expected 9 fields, found %d", path, lineno, nf);
+            break;
+        }
+        char *end;
+        double t = strtod(f[0], &end);
+        double v = strtod(f[6], NULL);
+        int kind = kind_index(f[4]);
+        int rec = atoi(f[8]);
+        if (*end || !isfinite(t) || kind < 0) {
+            st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: malformed row", path, lineno);
+            break;
+        }
+        sum->rows++;
+        if (t < flt->t_from_s || t > flt->t_to_s)
+            continue;
+        if (flt->clearance[0] && strcmp(flt->clearance, f[3]) != 0)
+            continue;
+        if (flt->kind[0] && strcmp(flt->kind, f[4]) != 0)
+            continue;
+        if (flt->recorded_only && !rec)
+            continue;
+        sum->selected++;
+        if (out_csv)
+            fputs(line, out_csv);
+        int c;
+        for (c = 0; c < sum->nclear; c++)
+            if (strcmp(sum->clear_name[c], f[3]) == 0)
+                break;
+        if (c == sum->nclear) {
+            if (sum->nclear == 16) {
+                st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: more than 16 clearances", path, lineno);
+                break;
+            }
+            snprintf(sum->clear_name[c], sizeof sum->clear_name[c], "%s", f[3]);
+            sum->vmin[c] = INFINITY;
+            sum->nclear++;
+        }
+        sum->count[c][kind]++;
+        if (kind == GD_EV_CONTACT || kind == GD_EV_BACK_CONTACT) {
+            double a = fabs(v);
+            sum->ncontacts[c]++;
+            sum->vmin[c] = fmin(sum->vmin[c], a);
+            sum->vmax[c] = fmax(sum->vmax[c], a);
+            sum->vsum[c] += a;
+            sum->vsum2[c] += a * a;
+        }
+        sum->t_first_s = fmin(sum->t_first_s, t);
+        sum->t_last_s = fmax(sum->t_last_s, t);
+    }
+    if (st == GD_OK && ferror(fp))
+        st = gd_error_set(err, GD_ERR_IO, "%s: read error", path);
+    fclose(fp);
+    for (int c = 0; c < sum->nclear; c++)
+        sum->regime[c] = sum->count[c][GD_EV_BACK_CONTACT] ? GD_IMPACT_DOUBLE
+                       : sum->count[c][GD_EV_SEPARATION] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
+    return st;
+}

@@ -1,0 +1,85 @@
+/* Running gnuplot on a script, quietly, when it is installed. */
+#include "geardyn/gd_output.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <spawn.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+extern char **environ;
+
+static int find_gnuplot(char *out, size_t len)
+{
+    const char *path = getenv("PATH");
+    if (!path)
+        path = "/usr/bin:/bin";
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", path);
+    char *save = NULL;
+    for (char *d = strtok_r(buf, ":", &save); d; d = strtok_r(NULL, ":", &save)) {
+        snprintf(out, len, "%s/gnuplot", d);
+        if (access(out, X_OK) == 0)
+            return 1;
+    }
+    return 0;
+}
+
+GD_API int gd_gnuplot_available(void)
+{
+    char p[4200];
+    return find_gnuplot(p, sizeof p);
+}
+
+GD_API gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
+{
+    char exe[4200];
+    if (!find_gnuplot(exe, sizeof exe))
+        return gd_error_set(err, GD_ERR_IO, "gnuplot is not installed");
+    char spath[1200], logpath[1200];
+    snprintf(spath, sizeof spath, "%s/.plot-XXXXXX", dir);
+    int fd = mkstemp(spath);
+    if (fd < 0)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot write a gnuplot script: %s", dir, strerror(errno));
+    size_t len = strlen(script);
+    if (write(fd, script, len) != (ssize_t)len) {
+        close(fd);
+        unlink(spath);
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot write a gnuplot script", dir);
+    }
+    close(fd);
+    snprintf(logpath, sizeof logpath, "%s.log", spath);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&fa, 2, logpath, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    char *argv[] = {exe, spath, NULL};
+    pid_t pid;
+    int rc = posix_spawn(&pid, exe, &fa, NULL, argv, environ);
+    posix_spawn_file_actions_destroy(&fa);
+    gd_status st = GD_OK;
+    if (rc != 0) {
+        st = gd_error_set(err, GD_ERR_IO, "cannot start gnuplot: %s", strerror(rc));
+    } else {
+        int status = 0;
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
+        if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+            char msg[400] = "";
+            FILE *lf = fopen(logpath, "r");
+            if (lf) {
+                size_t n = fread(msg, 1, sizeof msg - 1, lf);
+                msg[n] = '\0';
+                fclose(lf);
+            }
+            st = gd_error_set(err, GD_ERR_IO, "gnuplot failed: %s", msg);
+        }
+    }
+    unlink(spath);
+    unlink(logpath);
+    return st;
+}

@@ -1,0 +1,179 @@
+/* summary.json: the resolved case, derived values, solver statistics and results (jansson). */
+#include "geardyn/gd_output.h"
+#include "geardyn/gd_version.h"
+
+#include <jansson.h>
+#include <math.h>
+#include <string.h>
+
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
+static json_t *case_json(const gd_case *c)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    json_t *root = json_object();
+    for (size_t i = 0; i < n; i++) {
+        json_t *sec = json_object_get(root, s[i].section);
+        if (!sec) {
+            sec = json_object();
+            json_object_set_new(root, s[i].section, sec);
+        }
+        json_t *e = json_object();
+        const void *fp = (const char *)c + s[i].offset;
+        switch (s[i].type) {
+        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
+        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
+        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
+        case GD_KEY_DLIST: {
+            json_t *a = json_array();
+            int cnt = *(const int *)((const char *)c + s[i].count_offset);
+            for (int j = 0; j < cnt; j++)
+                json_array_append_new(a, json_real(((const double *)fp)[j]));
+            json_object_set_new(e, "value", a);
+            break;
+        }
+        default: {
+            char buf[1200];
+            gd_case_format_value(c, i, buf, sizeof buf);
+            json_object_set_new(e, "value", json_string(buf));
+        }
+        }
+        json_object_set_new(e, "unit", json_string(s[i].unit));
+        int line;
+        gd_source src = gd_case_source(c, i, &line);
+        char where[64];
+        if (src == GD_SRC_FILE)
+            snprintf(where, sizeof where, "file:%d", line);
+        else if (src == GD_SRC_SET)
+            snprintf(where, sizeof where, "--set #%d", line);
+        else
+            snprintf(where, sizeof where, "%s", gd_source_name(src));
+        json_object_set_new(e, "source", json_string(where));
+        json_object_set_new(sec, s[i].key, e);
+    }
+    return root;
+}
+
+static json_t *lr(double l, double r)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "left", num(l));
+    json_object_set_new(o, "right", num(r));
+    return o;
+}
+
+GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, const gd_model *m,
+                                           const gd_response_result *r, const char *const *files, int nfiles,
+                                           gd_error *err)
+{
+    static const char *methods[] = {"erk", "dirk", "rk4"};
+    static const char *models[] = {"torsional", "torsional-lr", "bta"};
+    json_t *root = json_object();
+    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
+    json_object_set_new(root, "analysis", json_string("response"));
+    json_object_set_new(root, "model", json_string(models[c->model]));
+    json_t *cs = json_object();
+    json_object_set_new(cs, "path", json_string(c->path));
+    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(root, "case", cs);
+
+    gd_geometry g;
+    gd_error e2;
+    json_t *der = json_object();
+    if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
+        json_t *geo = json_object();
+        json_object_set_new(geo, "transverse_module_mm", num(g.mt * 1e3));
+        json_object_set_new(geo, "transverse_pressure_angle_deg", num(g.alpha_t * 180 / M_PI));
+        json_object_set_new(geo, "working_pressure_angle_deg", num(g.alpha_wt * 180 / M_PI));
+        json_object_set_new(geo, "base_helix_angle_deg", num(g.beta_b * 180 / M_PI));
+        json_object_set_new(geo, "reference_radius_mm", lr(g.r[0] * 1e3, g.r[1] * 1e3));
+        json_object_set_new(geo, "base_radius_mm", lr(g.rb[0] * 1e3, g.rb[1] * 1e3));
+        json_object_set_new(geo, "tip_radius_mm", lr(g.ra[0] * 1e3, g.ra[1] * 1e3));
+        json_object_set_new(geo, "root_radius_mm", lr(g.rf[0] * 1e3, g.rf[1] * 1e3));
+        json_object_set_new(geo, "centre_distance_mm", num(g.a * 1e3));
+        json_object_set_new(geo, "contact_ratio_transverse", num(g.eps_alpha));
+        json_object_set_new(geo, "contact_ratio_overlap", num(g.eps_beta));
+        json_object_set_new(der, "geometry", geo);
+    }
+    json_t *mod = json_object();
+    json_object_set_new(mod, "degrees_of_freedom", json_integer(m->ndof));
+    json_object_set_new(mod, "natural_frequency_hz", num(m->omega_n / (2 * M_PI)));
+    json_object_set_new(mod, "mesh_frequency_hz", num(m->mesh_freq_hz));
+    json_object_set_new(mod, "frequency_ratio", num(m->Omega));
+    json_object_set_new(mod, "normal_equivalent_mass_kg", num(m->m_ref));
+    json_object_set_new(mod, "mesh_stiffness_n_per_m", num(m->k_ref));
+    json_object_set_new(mod, "static_mesh_force_n", num(m->static_load_n));
+    json_object_set_new(mod, "static_deflection_um", num(m->static_load_n / m->k_ref * 1e6));
+    json_object_set_new(der, "model", mod);
+    json_object_set_new(root, "derived", der);
+
+    json_t *sol = json_object();
+    json_object_set_new(sol, "method", json_string(methods[c->method]));
+    json_object_set_new(sol, "order", json_integer(c->method == GD_METHOD_RK4 ? 4 : c->order));
+    json_object_set_new(sol, "table", json_string(c->table));
+    json_object_set_new(sol, "rtol", num(c->rtol));
+    json_object_set_new(sol, "atol", num(c->atol));
+    json_object_set_new(sol, "root_finding", json_boolean(c->root_finding));
+    json_object_set_new(sol, "steps", json_integer(r->stats.steps));
+    json_object_set_new(sol, "step_attempts", json_integer(r->stats.step_attempts));
+    json_object_set_new(sol, "rhs_evals", json_integer(r->stats.rhs_evals));
+    json_object_set_new(sol, "analysis_rhs_evals", json_integer(r->stats.extra_rhs_evals));
+    json_object_set_new(sol, "root_evals", json_integer(r->stats.root_evals));
+    json_object_set_new(sol, "jac_evals", json_integer(r->stats.jac_evals));
+    json_object_set_new(sol, "resets", json_integer(r->stats.resets));
+    json_object_set_new(sol, "grazing_rewinds", json_integer(r->stats.grazing_rewinds));
+    json_object_set_new(sol, "events", json_integer(r->stats.events));
+    json_t *bk = json_object();
+    for (int k = 0; k < GD_EV_NKINDS; k++)
+        json_object_set_new(bk, gd_event_kind_name(k), json_integer(r->stats.events_by_kind[k]));
+    json_object_set_new(sol, "events_by_kind", bk);
+    json_t *bc = json_object();
+    for (int k = 0; k < m->nclear; k++)
+        json_object_set_new(bc, m->clear[k].name, json_integer(r->stats.events_by_clearance[k]));
+    json_object_set_new(sol, "events_by_clearance", bc);
+    json_object_set_new(sol, "wall_s", num(r->wall_s));
+    long periods = (long)c->transient_periods + c->record_periods;
+    json_object_set_new(sol, "rhs_evals_per_period", num((double)r->stats.rhs_evals / (double)periods));
+    json_object_set_new(root, "solver", sol);
+
+    json_t *res = json_object();
+    json_t *acc = lr(r->rms_accel_mps2[0], r->rms_accel_mps2[1]);
+    json_object_set_new(acc, "combined", num(r->rms_accel_mps2[2]));
+    json_object_set_new(res, "rms_accel_mps2", acc);
+    json_object_set_new(res, "dte_mean_um", lr(r->dte_mean_um[0], r->dte_mean_um[1]));
+    json_object_set_new(res, "dte_rms_um", lr(r->dte_rms_um[0], r->dte_rms_um[1]));
+    json_object_set_new(res, "dte_pp_um", lr(r->dte_pp_um[0], r->dte_pp_um[1]));
+    json_object_set_new(res, "mesh_deflection_min_um", lr(r->lambda_min_um[0], r->lambda_min_um[1]));
+    json_object_set_new(res, "mesh_deflection_max_um", lr(r->lambda_max_um[0], r->lambda_max_um[1]));
+    json_object_set_new(res, "motion", json_string(r->motion));
+    json_object_set_new(res, "period_n", json_integer(r->period_n));
+    json_object_set_new(res, "poincare_distinct", json_integer(r->poincare_distinct));
+    json_object_set_new(res, "poincare_points", json_integer(r->poincare_count));
+    json_object_set_new(res, "impact_regime", json_string(gd_impact_regime_name(r->impact_regime[2])));
+    json_t *ir = json_object();
+    json_object_set_new(ir, "left", json_string(gd_impact_regime_name(r->impact_regime[0])));
+    json_object_set_new(ir, "right", json_string(gd_impact_regime_name(r->impact_regime[1])));
+    json_object_set_new(res, "impact_regime_by_mesh", ir);
+    json_object_set_new(res, "recorded_events", json_integer(r->record_events));
+    json_object_set_new(root, "results", res);
+
+    json_t *fl = json_array();
+    for (int i = 0; i < nfiles; i++)
+        json_array_append_new(fl, json_string(files[i]));
+    json_object_set_new(root, "files", fl);
+
+    gd_atomic_file f;
+    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
+    if (st == GD_OK) {
+        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
+            gd_atomic_abort(&f);
+            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
+        } else {
+            fputc('\n', f.fp);
+            st = gd_atomic_commit(&f, err);
+        }
+    }
+    json_decref(root);
+    return st;
+}
