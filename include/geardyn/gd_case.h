@@ -73,7 +73,8 @@ typedef struct gd_case {
     int order;
     char table[128];
     double rtol, atol;
-    int steps_per_period;    /* rk4 */
+    int steps_per_period;    /* rk4, erk with fixed_step */
+    int fixed_step;
     int root_finding;
     int grazing_watch;
     double max_step_fraction;

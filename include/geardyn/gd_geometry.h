@@ -23,6 +23,7 @@ typedef struct gd_geometry {
     double b_contact;       /* common (contact) face width of one half */
     double r_sap[2];        /* start of active profile radii */
     double tip_thickness_n[2]; /* normal tooth thickness at the tip circle (arc, m) */
+    const char *bad_key;     /* on GD_ERR_GEOMETRY: the [gear] key most responsible */
 } gd_geometry;
 
 GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err);

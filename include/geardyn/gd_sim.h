@@ -25,7 +25,8 @@ typedef struct gd_solver_opts {
     int order;
     char table[128];
     double rtol, atol;
-    int steps_per_period;    /* rk4 */
+    int steps_per_period;    /* rk4, and erk when fixed_step is on */
+    int fixed_step;          /* erk: fixed step of period/steps_per_period instead of adaptive */
     int root_finding;
     int grazing_watch;
     double max_step_fraction;

@@ -67,6 +67,7 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->rtol = c->rtol;
     o->atol = c->atol;
     o->steps_per_period = c->steps_per_period;
+    o->fixed_step = c->fixed_step;
     o->root_finding = c->root_finding;
     o->grazing_watch = c->grazing_watch;
     o->max_step_fraction = c->max_step_fraction;
@@ -186,7 +187,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         int flag = ERKStepSetTable(s->mem, B);
         ARKodeButcherTable_Free(B);
         CHECK(flag);
-        if (o->method == GD_METHOD_RK4)
+        if (o->method == GD_METHOD_RK4 || o->fixed_step)
             CHECK(s->ops->set_fixed_step(s->mem, m->period / o->steps_per_period));
     }
     if (s->implicit) {
@@ -253,7 +254,7 @@ static gd_status reset_at(gd_sim *s, double t, gd_error *err)
     if (flag < 0)
         return sun_check(s, flag, "Reset", err);
     /* keep the step size the controller had reached rather than re-estimating it */
-    if (h > 0 && s->o.method != GD_METHOD_RK4)
+    if (h > 0 && s->o.method != GD_METHOD_RK4 && !s->o.fixed_step)
         s->ops->set_init_step(s->mem, h);
     s->resets++;
     return GD_OK;

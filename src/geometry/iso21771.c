@@ -90,17 +90,23 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
     }
 
     static const char *name[2] = {"pinion", "gear"};
+    static const char *shift_key[2] = {"profile_shift_pinion", "profile_shift_gear"};
+    static const char *teeth_key[2] = {"teeth_pinion", "teeth_gear"};
+    g->bad_key = NULL;
     for (int i = 0; i < 2; i++) {
+        g->bad_key = shift_key[i];
         if (g->rf[i] <= 0)
             return gd_error_set(err, GD_ERR_GEOMETRY, "%s: impossible geometry: root radius %.4g mm is not positive",
                                 name[i], g->rf[i] * 1e3);
         /* undercut: the generating rack's tip line (h_a* above the datum) must not cut below
          * the interference point of the base circle: m_n (h_a* - x) <= r sin^2(alpha_t) */
         double need = g->mn * (c->addendum_coefficient - g->x[i]);
+        g->bad_key = teeth_key[i];
         if (need > g->r[i] * sin(g->alpha_t) * sin(g->alpha_t) + 1e-12)
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: undercut: z = %d with profile shift %.3g is undercut (needs x >= %.3f)", name[i], g->z[i],
                 g->x[i], c->addendum_coefficient - g->r[i] * pow(sin(g->alpha_t), 2) / g->mn);
+        g->bad_key = shift_key[i];
         if (g->tip_thickness_n[i] <= 0.2 * g->mn)
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: pointed tip: normal tip thickness %.3g mm below 0.2 m_n = %.3g mm (reduce profile shift or addendum)",
@@ -114,8 +120,10 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
                 "%s: interference: start of active profile %.4g mm lies below the root circle %.4g mm", name[i],
                 g->r_sap[i] * 1e3, g->rf[i] * 1e3);
     }
+    g->bad_key = "addendum_coefficient";
     if (!(g->eps_alpha >= 1.0))
         return gd_error_set(err, GD_ERR_GEOMETRY, "transverse contact ratio %.4f below 1: the pair cannot mesh continuously",
                             g->eps_alpha);
+    g->bad_key = NULL;
     return GD_OK;
 }

@@ -125,8 +125,13 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
     /* geometry and what follows from it */
     gd_geometry g;
     gd_status st = gd_geometry_compute(c, &g, err);
-    if (st != GD_OK)
+    if (st != GD_OK) {
+        if (st == GD_ERR_GEOMETRY && g.bad_key) {
+            where(c, "gear", g.bad_key, w, sizeof w);
+            return gd_error_prefix(err, "%s: gear.%s", w, g.bad_key);
+        }
         return gd_error_prefix(err, "%s: [gear]", c->path[0] ? c->path : "case");
+    }
     for (int i = 0; i < 2; i++) {
         double bore = i == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm;
         if (bore * 0.5e-3 >= g.rf[i]) {

@@ -1,0 +1,18 @@
+#!/usr/bin/env bash
+# Install the Debian 12 packages geardyn needs, only those that are missing.
+# Sourced by scripts/quickstart.sh and scripts/test.sh; safe to run again.
+set -euo pipefail
+GD_PACKAGES=(gcc pkg-config meson ninja-build cmake python3 libsundials-dev libgsl-dev libnlopt-dev
+             libinih-dev libjansson-dev gnuplot-nox)
+missing=()
+for p in "${GD_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+    echo "geardyn: installing ${missing[*]}" >&2
+    SUDO=""
+    [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+    export DEBIAN_FRONTEND=noninteractive
+    $SUDO apt-get update -qq
+    $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# Install what is missing, build geardyn twice (normal with -Werror, and with ASan+UBSan),
+# run the test suite in both, check that every exported symbol has the gd_ prefix, and
+# end with the line "N passed, N failed".
+set -uo pipefail
+cd "$(dirname "$0")/.."
+bash scripts/deps.sh || { echo "0 passed, 1 failed"; exit 1; }
+jobs=$(nproc 2>/dev/null || echo 2)
+passed=0; failed=0
+
+count_log() { # count meson test results of a build directory
+    local log="$1/meson-logs/testlog.json"
+    [ -f "$log" ] || { failed=$((failed + 1)); return; }
+    read -r p f < <(python3 - "$log" <<'PY'
+import json, sys
+p = f = 0
+for line in open(sys.argv[1]):
+    line = line.strip()
+    if not line:
+        continue
+    r = json.loads(line).get("result", "")
+    if r in ("OK", "EXPECTEDFAIL", "SKIP"):
+        p += 1
+    else:
+        f += 1
+print(p, f)
+PY
+)
+    passed=$((passed + p)); failed=$((failed + f))
+}
+
+build_and_test() { # dir, meson options...
+    local dir=$1; shift
+    if [ -d "$dir/meson-info" ]; then meson setup --reconfigure "$dir" "$@" >/dev/null
+    else meson setup "$dir" "$@" >/dev/null; fi || { echo "meson setup $dir failed"; failed=$((failed + 1)); return 1; }
+    ninja -C "$dir" || { echo "build $dir failed"; failed=$((failed + 1)); return 1; }
+    meson test -C "$dir" --print-errorlogs --num-processes "$jobs" "${TEST_ARGS[@]}"
+    count_log "$dir"
+}
+
+TEST_ARGS=()
+echo "== build with -Werror and run the suite"
+build_and_test build-ci -Dwerror=true -Dbuildtype=debugoptimized
+
+echo "== exported symbols of libgeardyn all carry the gd_ prefix"
+lib=$(ls build-ci/src/libgeardyn.so* 2>/dev/null | head -1)
+if [ -n "$lib" ]; then
+    bad=$(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBRVW]$/ {print $3}' | grep -v '^gd_' || true)
+    if [ -z "$bad" ]; then echo "ok: $(nm -D --defined-only "$lib" | awk '$2 ~ /^[TDBR]$/' | wc -l) symbols"; passed=$((passed + 1))
+    else echo "symbols without the gd_ prefix:"; echo "$bad"; failed=$((failed + 1)); fi
+else
+    echo "libgeardyn not built"; failed=$((failed + 1))
+fi
+
+echo "== build with ASan+UBSan and run the suite again"
+export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+TEST_ARGS=(--timeout-multiplier 4)
+build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
+    -Dwerror=true
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

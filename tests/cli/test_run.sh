@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# The command line end to end: check, run (files, stable summary.json keys, atomicity),
+# events. TAP output.
+set -u
+G=${GEARDYN:?}
+SRC=${GEARDYN_SOURCE:?}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+n=0; bad=0
+ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+
+"$G" --version | grep -q "^geardyn [0-9]"; ok $? "--version"
+"$G" --help | grep -q "geardyn run CASE"; ok $? "--help"
+
+"$G" check "$SRC/cases/quickstart.ini" --set operating.speed_rpm=3000 > "$work/check.txt"; ok $? "check exits 0"
+grep -Eq "^speed_rpm = 3000 rpm +; --set #1" "$work/check.txt"; ok $? "check shows the --set source"
+grep -Eq "^teeth_pinion = 30 +; file line" "$work/check.txt"; ok $? "check shows the file source"
+grep -Eq "^pinion_mass_kg = [0-9.]+ kg +; derived" "$work/check.txt"; ok $? "check shows derived values"
+grep -Eq "^poisson_ratio = 0.3 +; default" "$work/check.txt"; ok $? "check shows defaults"
+grep -Eq "^contact_ratio_transverse = 1\.[0-9]+" "$work/check.txt"; ok $? "check shows derived geometry"
+
+out="$work/run"
+"$G" run "$SRC/cases/quickstart.ini" --out "$out" --quiet --set scene.model=torsional-lr \
+    --set run.transient_periods=50 --set run.record_periods=20 > "$work/run.txt" 2>&1
+ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
+for f in summary.json poincare.csv time_history.csv events.csv; do
+    [ -s "$out/$f" ]; ok $? "run wrote $f"
+done
+ls -a "$out" | grep -q '\.tmp'; [ $? -ne 0 ]; ok $? "no temporary files left"
+python3 - "$out/summary.json" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+keys = ["solver.method", "solver.steps", "solver.rhs_evals", "solver.events", "solver.wall_s",
+        "results.rms_accel_mps2", "results.motion", "results.poincare_distinct", "results.impact_regime"]
+missing = []
+for k in keys:
+    o = d
+    for part in k.split("."):
+        if not isinstance(o, dict) or part not in o:
+            missing.append(k); break
+        o = o[part]
+r = d["results"]
+assert not missing, missing
+assert r["motion"] == "not-periodic" or r["motion"].startswith("period-"), r["motion"]
+assert r["impact_regime"] in ("no-impact", "single-sided", "double-sided"), r["impact_regime"]
+for s in ("left", "right", "combined"):
+    assert r["rms_accel_mps2"][s] > 0
+assert d["case"]["parameters"]["scene"]["model"]["value"] == "torsional-lr"
+assert d["case"]["parameters"]["scene"]["model"]["source"] == "--set #1"
+assert d["solver"]["events"] == sum(d["solver"]["events_by_kind"].values())
+PY
+ok $? "summary.json has the stable keys with valid values"
+head -1 "$out/time_history.csv" | grep -q "^t_s,period,lambda_L_um,lambda_dot_L_mps,accel_L_mps2"; ok $? "time history header with units"
+rows=$(($(wc -l < "$out/time_history.csv") - 1)); [ "$rows" -eq $((20 * 64)) ]; ok $? "time history has record x samples rows ($rows)"
+prow=$(($(wc -l < "$out/poincare.csv") - 1)); [ "$prow" -eq 21 ]; ok $? "poincare has record + 1 rows ($prow)"
+
+"$G" events "$out/events.csv" --recorded --csv "$work/ev.csv" > "$work/ev.txt"; ok $? "events exits 0"
+grep -q "impact regime:" "$work/ev.txt"; ok $? "events prints the impact regime"
+regime=$(python3 -c "import json;print(json.load(open('$out/summary.json'))['results']['impact_regime'])")
+grep -q "impact regime: $regime" "$work/ev.txt"; ok $? "events regime agrees with the run ($regime)"
+sel=$(grep -o "[0-9]* selected" "$work/ev.txt" | cut -d' ' -f1)
+[ $(($(wc -l < "$work/ev.csv") - 1)) -eq "$sel" ]; ok $? "events --csv wrote the selected rows ($sel)"
+"$G" events "$out/events.csv" --clearance mesh-L --kind contact > "$work/ev2.txt"; ok $? "events filter"
+grep -Eq "^mesh-R" "$work/ev2.txt"; [ $? -ne 0 ]; ok $? "events filter keeps one clearance"
+"$G" events "$SRC/cases/quickstart.ini" > /dev/null 2>&1; rc=$?; [ $rc -eq 2 ]; ok $? "events refuses a non-log (exit $rc)"
+
+# a failure at run time leaves nothing behind: zero torque and no damping never re-engages
+out2="$work/run2"
+"$G" run "$SRC/cases/quickstart.ini" --out "$out2" --quiet --set scene.model=torsional --set operating.torque_nm=0 \
+  --set excitation.ste_amplitude_um=0 --set damping.mesh_damping_ratio=0.3 --set run.initial_condition=zero \
+  --set clearance.backlash_um=20 --set run.transient_periods=3000 > "$work/run2.txt" 2>&1; rc=$?
+[ $rc -eq 1 ]; ok $? "endless separation stops with status 1 (got $rc: $(cat "$work/run2.txt"))"
+grep -q "separated for" "$work/run2.txt"; ok $? "endless separation is explained"
+[ -z "$(ls -A "$out2" 2>/dev/null)" ]; ok $? "failed run leaves no files"
+
+echo "1..$n"
+[ $bad -eq 0 ]
