@@ -49,6 +49,8 @@ typedef struct gd_mesh_excitation {
     double rect_high, rect_low, rect_frac; /* levels relative to the mean, fraction at high */
     double phase;            /* half phase offset (rad of the mesh cycle) */
     double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
+    /* precomputed: cos and sin of phi[h] and of e_phi (one sincos per evaluation) */
+    double cphi[GD_MAX_HARMONICS], sphi[GD_MAX_HARMONICS], ce, se;
 } gd_mesh_excitation;
 
 typedef struct gd_nz { int i, j; double v; } gd_nz;
@@ -68,6 +70,7 @@ typedef struct gd_model {
     int mesh_clear[GD_MAX_MESH]; /* clearance index of each mesh */
     int q_dof[GD_MAX_MESH];  /* DOF of the torsional coordinate q_n = cos(beta_b)(r_b1 th1 - r_b2 th2) of each mesh */
     double dte_scale;        /* cos(beta_b): q_n / dte_scale is the transverse dynamic transmission error */
+    double force_share;      /* share of one helical half in a mesh force (torsional: 1/2, else 1) */
     double Omega;            /* dimensionless mesh frequency omega_m / omega_n */
     double period;           /* dimensionless mesh period 2 pi / Omega */
     /* scales */
@@ -84,12 +87,11 @@ typedef struct gd_modes {
     int mode[GD_MAX_CLEAR];  /* -1, 0, +1 */
     int rect_level[GD_MAX_MESH]; /* 1 high, 0 low (rectangular stiffness) */
     int from_state;          /* 1: modes follow the state at every call (root finding off) */
-    double t_shift;          /* dimensionless time already shifted out of t (whole periods) */
 } gd_modes;
 
 GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
 
-/* Excitation of mesh j at dimensionless time t (t + modes->t_shift is the true time). */
+/* Excitation of mesh j at dimensionless time t (periodic: whole periods shifted out of t do not matter). */
 GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md);
 GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *md, double *e, double *edot,
                            double *eddot);
@@ -109,6 +111,10 @@ GD_API int gd_model_mode_of(const gd_model *m, int c, double x);
 GD_API double gd_model_energy(const gd_model *m, double t, const double *y, const gd_modes *md);
 /* Static deflection under F0 with the meshes in drive-side contact and mean stiffness. */
 GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *md, gd_error *err);
+/* Modes consistent with (t, y): the dead zone the coordinate is in, and for a coordinate
+ * exactly on a boundary the side its velocity (else acceleration) moves it to, so that
+ * the motion never starts on a root ARKODE would ignore. */
+GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const double *y, gd_modes *md, gd_error *err);
 /* Next time after t (strictly) where an excitation is discontinuous (rectangular edges),
  * or +inf when there is none. */
 GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md);

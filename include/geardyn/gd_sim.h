@@ -54,6 +54,7 @@ typedef struct gd_event {
     int direction;           /* +1 coordinate increasing, -1 decreasing */
     int old_mode, new_mode;
     double x, xdot;          /* clearance coordinate and rate at the crossing (dimensionless) */
+    int located;             /* 1: located by root finding; 0: seen at a step end (root finding off) */
 } gd_event;
 
 typedef struct gd_sim_stats {

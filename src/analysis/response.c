@@ -26,12 +26,7 @@ GD_API gd_status gd_initial_state(const gd_case *c, const gd_model *m, double *y
     memset(y, 0, sizeof(double) * GD_MAX_STATE);
     if (c->initial_condition == GD_INIT_STATIC)
         return gd_model_static_state(m, y, md, err);
-    for (int k = 0; k < m->nclear; k++) {
-        double x, v;
-        gd_model_clearance(m, k, 0.0, y, md, &x, &v);
-        md->mode[k] = gd_model_mode_of(m, k, x);
-    }
-    return GD_OK;
+    return gd_model_consistent_modes(m, 0.0, y, md, err);
 }
 
 typedef struct run_ctx {
@@ -113,7 +108,7 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
             smp.lambda_um[j] = lam * r->len_um;
             smp.lambda_dot_mps[j] = lamd * r->len_um * 1e-6 / r->sec;
             smp.accel_mps2[j] = acc * r->len_um * 1e-6 / (r->sec * r->sec);
-            smp.force_n[j] = force * m->k_ref * m->bc_m;
+            smp.force_n[j] = force * m->k_ref * m->bc_m * m->force_share; /* per helical half */
             smp.dte_um[j] = y[qidx] * r->len_um / m->dte_scale;
             acc_mean += 0.5 * smp.accel_mps2[j];
             r->sum_a2[j] += smp.accel_mps2[j] * smp.accel_mps2[j];

@@ -87,6 +87,12 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         x->e_m = on * c->ste_mean_um * 1e-6 / m->bc_m;
         x->e_r = on * c->ste_amplitude_um * 1e-6 / m->bc_m;
         x->e_phi = c->ste_phase_deg * deg;
+        for (int j = 0; j < x->nh; j++) {
+            x->cphi[j] = cos(x->phi[j]);
+            x->sphi[j] = sin(x->phi[j]);
+        }
+        x->ce = cos(x->e_phi);
+        x->se = sin(x->e_phi);
     }
 
     if (c->model == GD_MODEL_TORSIONAL) {
@@ -205,6 +211,7 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
     }
     m->n = 2 * m->ndof;
     m->dte_scale = cb;
+    m->force_share = c->model == GD_MODEL_TORSIONAL ? 0.5 : 1.0;
     for (int i = 0; i < m->ndof; i++)
         m->inv_mass[i] = 1.0 / m->mass[i];
     return GD_OK;

@@ -16,6 +16,40 @@ static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
     return f < x->rect_frac;
 }
 
+/* Stiffness factor, error and its rates of mesh j from one sincos of the mesh phase:
+ * harmonics by the angle-addition recurrence, the error by the phase-shift identity. */
+static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes *md, double *kf, double *e,
+                             double *ed, double *edd)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    double th = mesh_phase(m, j, t);
+    double s1, c1;
+    sincos(th, &s1, &c1);
+    if (kf) {
+        if (x->kind == GD_STIFF_HARMONIC) {
+            double sk = s1, ck = c1, k = 1.0;
+            for (int h = 0; h < x->nh; h++) {
+                k += x->a[h] * (ck * x->cphi[h] - sk * x->sphi[h]);
+                double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
+                sk = sn;
+                ck = cn;
+            }
+            *kf = k;
+        } else if (x->kind == GD_STIFF_RECTANGULAR) {
+            int level = md->from_state ? rect_level_at(x, th) : md->rect_level[j];
+            *kf = level ? x->rect_high : x->rect_low;
+        } else {
+            *kf = 1.0;
+        }
+    }
+    double se = s1 * x->ce + c1 * x->se, ce = c1 * x->ce - s1 * x->se; /* sin, cos of th + e_phi */
+    *e = x->e_m + x->e_r * se;
+    if (ed)
+        *ed = x->e_r * m->Omega * ce;
+    if (edd)
+        *edd = -x->e_r * m->Omega * m->Omega * se;
+}
+
 GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md)
 {
     const gd_mesh_excitation *x = &m->mesh[j];
@@ -38,14 +72,7 @@ GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_mo
 GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *md, double *e, double *edot,
                            double *eddot)
 {
-    (void)md;
-    const gd_mesh_excitation *x = &m->mesh[j];
-    double arg = mesh_phase(m, j, t) + x->e_phi;
-    double s = sin(arg), co = cos(arg);
-    *e = x->e_m + x->e_r * s;
-    *edot = x->e_r * m->Omega * co;
-    if (eddot)
-        *eddot = -x->e_r * m->Omega * m->Omega * s;
+    mesh_eval(m, j, t, md, NULL, e, edot, eddot);
 }
 
 static inline void coord(const gd_clearance *cl, const double *y, int ndof, double *x, double *v)
@@ -98,10 +125,8 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
     const double *v = y + nd;
     double *a = ydot + nd;
     double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH];
-    for (int j = 0; j < m->nmesh; j++) {
-        kf[j] = gd_model_stiffness(m, j, t, md);
-        gd_model_error(m, j, t, md, &e[j], &ed[j], NULL);
-    }
+    for (int j = 0; j < m->nmesh; j++)
+        mesh_eval(m, j, t, md, &kf[j], &e[j], &ed[j], NULL);
     for (int i = 0; i < nd; i++) {
         ydot[i] = v[i];
         a[i] = m->F0[i];
@@ -162,11 +187,8 @@ GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, doub
 GD_API void gd_model_roots(const gd_model *m, double t, const double *y, double *g, const gd_modes *md)
 {
     double e[GD_MAX_MESH];
-    for (int j = 0; j < m->nmesh; j++) {
-        const gd_mesh_excitation *x = &m->mesh[j];
-        e[j] = x->e_m + x->e_r * sin(mesh_phase(m, j, t) + x->e_phi);
-    }
-    (void)md;
+    for (int j = 0; j < m->nmesh; j++)
+        mesh_eval(m, j, t, md, NULL, &e[j], NULL, NULL);
     for (int c = 0; c < m->nclear; c++) {
         const gd_clearance *cl = &m->clear[c];
         double x = 0;
@@ -230,12 +252,18 @@ GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const g
     return f < x->rect_frac;
 }
 
+/* Static equilibrium under F0 with the meshes in drive-side contact at mean stiffness.
+ * The bearings start on the side a linear solve (no clearance) puts them, then their
+ * modes are corrected until every spring in contact pushes (never pulls). */
 GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *md, gd_error *err)
 {
     const int nd = m->ndof;
     int modes[GD_MAX_CLEAR];
-    for (int c = 0; c < m->nclear; c++)
-        modes[c] = m->clear[c].kind == GD_CLR_MESH ? 1 : 0;
+    double hsave[GD_MAX_CLEAR];
+    for (int c = 0; c < m->nclear; c++) {
+        modes[c] = 1;
+        hsave[c] = m->clear[c].h;
+    }
     gsl_matrix *A = gsl_matrix_alloc((size_t)nd, (size_t)nd), *V = gsl_matrix_alloc((size_t)nd, (size_t)nd);
     gsl_vector *b = gsl_vector_alloc((size_t)nd), *S = gsl_vector_alloc((size_t)nd),
                *w = gsl_vector_alloc((size_t)nd), *x = gsl_vector_alloc((size_t)nd);
@@ -244,7 +272,8 @@ GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *m
         st = gd_error_set(err, GD_ERR_NOMEM, "static state: out of memory");
         goto done;
     }
-    for (int iter = 0; iter < 20; iter++) {
+    int converged = 0;
+    for (int iter = 0; iter < 50 && !converged; iter++) {
         gsl_matrix_set_zero(A);
         for (int i = 0; i < nd; i++)
             gsl_vector_set(b, (size_t)i, m->F0[i]);
@@ -254,11 +283,13 @@ GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *m
             const gd_clearance *cl = &m->clear[c];
             if (modes[c] == 0)
                 continue;
+            /* first pass: bearings as plain springs, to learn which side they load */
+            double h = (iter == 0 && cl->kind != GD_CLR_MESH) ? 0.0 : hsave[c];
             double em = cl->kind == GD_CLR_MESH ? m->mesh[cl->mesh].e_m : 0.0;
             for (int p = 0; p < cl->nw; p++) {
                 for (int q = 0; q < cl->nw; q++)
                     *gsl_matrix_ptr(A, (size_t)cl->widx[p], (size_t)cl->widx[q]) += cl->k * cl->wval[p] * cl->wval[q];
-                *gsl_vector_ptr(b, (size_t)cl->widx[p]) += cl->k * cl->wval[p] * (em + modes[c] * cl->h);
+                *gsl_vector_ptr(b, (size_t)cl->widx[p]) += cl->k * cl->wval[p] * (em + modes[c] * h);
             }
         }
         /* minimum-norm solution: an axially floating body has a free rigid mode */
@@ -283,17 +314,27 @@ GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *m
                 continue;
             double xc, vc;
             gd_model_clearance(m, c, 0.0, y, md, &xc, &vc);
-            int nm = gd_model_mode_of(m, c, xc);
-            if (nm != modes[c]) {
+            int nm;
+            if (iter == 0)
+                nm = xc > 0 ? 1 : xc < 0 ? -1 : 0;
+            else if (modes[c] != 0)
+                nm = modes[c] * xc > hsave[c] ? modes[c] : 0; /* a contact that would pull opens */
+            else
+                nm = gd_model_mode_of(m, c, xc);
+            if (nm != modes[c] || iter == 0) {
+                changed |= nm != modes[c];
                 modes[c] = nm;
-                changed = 1;
             }
         }
-        if (!changed)
-            break;
+        converged = iter > 0 && !changed;
+    }
+    if (!converged) {
+        st = gd_error_set(err, GD_ERR_PHYSICS, "static state: no consistent set of bearing contacts was found");
+        goto done;
     }
     for (int c = 0; c < m->nclear; c++)
         md->mode[c] = modes[c];
+    st = gd_model_consistent_modes(m, 0.0, y, md, err);
 done:
     gsl_matrix_free(A);
     gsl_matrix_free(V);
@@ -302,4 +343,44 @@ done:
     gsl_vector_free(w);
     gsl_vector_free(x);
     return st;
+}
+
+GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const double *y, gd_modes *md, gd_error *err)
+{
+    double yd[GD_MAX_STATE];
+    int from_state = md->from_state;
+    md->from_state = 0;
+    for (int c = 0; c < m->nclear; c++) {
+        double x, v;
+        gd_model_clearance(m, c, t, y, md, &x, &v);
+        double h = m->clear[c].h, tiny = 1e-12 * (1.0 + h);
+        int on_hi = fabs(x - h) <= tiny, on_lo = fabs(x + h) <= tiny;
+        if (!on_hi && !on_lo) {
+            md->mode[c] = gd_model_mode_of(m, c, x);
+            continue;
+        }
+        /* on a boundary: the side the motion leaves to (velocity, else acceleration) */
+        double d = v;
+        if (d == 0.0) {
+            gd_model_rhs(m, t, y, yd, md);
+            double a = 0;
+            for (int q = 0; q < m->clear[c].nw; q++)
+                a += m->clear[c].wval[q] * yd[m->ndof + m->clear[c].widx[q]];
+            if (m->clear[c].kind == GD_CLR_MESH) {
+                double e, ed, edd;
+                gd_model_error(m, m->clear[c].mesh, t, md, &e, &ed, &edd);
+                a -= edd;
+            }
+            d = a;
+        }
+        if (on_hi && on_lo) /* zero gap */
+            md->mode[c] = d >= 0 ? 1 : -1;
+        else if (on_hi)
+            md->mode[c] = d >= 0 ? 1 : 0;
+        else
+            md->mode[c] = d <= 0 ? -1 : 0;
+    }
+    md->from_state = from_state;
+    (void)err;
+    return GD_OK;
 }

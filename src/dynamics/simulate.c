@@ -199,7 +199,8 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         }
         CHECK(ARKStepSetLinearSolver(s->mem, s->LS, s->A));
         CHECK(ARKStepSetJacFn(s->mem, jac_fn));
-        CHECK(ARKStepSetLinear(s->mem, 1));
+        if (o->fixed_step)
+            CHECK(s->ops->set_fixed_step(s->mem, m->period / o->steps_per_period));
     }
     if (o->root_finding && m->nclear > 0) {
         s->nroots = 2 * m->nclear;
@@ -242,6 +243,14 @@ GD_API void gd_sim_set_hooks(gd_sim *s, gd_step_hook step, gd_event_hook event, 
     s->step_hook = step;
     s->event_hook = event;
     s->hook_user = user;
+}
+
+static int state_finite(const double *y, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!isfinite(y[i]))
+            return 0;
+    return 1;
 }
 
 static double abs_time(const gd_sim *s, double t_local) { return t_local + (double)s->shift * s->m.period; }
@@ -333,12 +342,38 @@ static int new_mode_for(int old, int r_hi, int r_lo)
     return old;
 }
 
+static int kind_of(int old, int nw)
+{
+    return nw == 1 ? GD_EV_CONTACT : nw == -1 ? GD_EV_BACK_CONTACT : old == 1 ? GD_EV_SEPARATION
+                                                                          : GD_EV_BACK_SEPARATION;
+}
+
+static gd_status record_event(gd_sim *s, int c, int old, int nw, int direction, int located, gd_error *err)
+{
+    gd_event ev;
+    ev.t = abs_time(s, s->t);
+    ev.period = s->period;
+    ev.clearance = c;
+    ev.old_mode = old;
+    ev.new_mode = nw;
+    ev.direction = direction;
+    ev.located = located;
+    ev.kind = kind_of(old, nw);
+    gd_model_clearance(&s->m, c, s->t, N_VGetArrayPointer(s->y), &s->md, &ev.x, &ev.xdot);
+    s->events++;
+    s->by_kind[ev.kind]++;
+    s->by_clear[c]++;
+    s->events_this_period++;
+    if (s->event_hook && s->event_hook(s, &ev, s->hook_user))
+        return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the event hook");
+    return GD_OK;
+}
+
 static gd_status handle_roots(gd_sim *s, gd_error *err)
 {
     int flag = s->ops->get_root_info(s->mem, s->rootsfound);
     if (flag < 0)
         return sun_check(s, flag, "GetRootInfo", err);
-    const double *y = N_VGetArrayPointer(s->y);
     for (int c = 0; c < s->m.nclear; c++) {
         int r_hi = s->rootsfound[2 * c], r_lo = s->rootsfound[2 * c + 1];
         if (!r_hi && !r_lo)
@@ -348,22 +383,9 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
         if (nw == old)
             continue;
         s->md.mode[c] = nw;
-        gd_event ev;
-        ev.t = abs_time(s, s->t);
-        ev.period = s->period;
-        ev.clearance = c;
-        ev.old_mode = old;
-        ev.new_mode = nw;
-        ev.direction = (r_hi ? r_hi : r_lo) > 0 ? 1 : -1;
-        ev.kind = nw == 1 ? GD_EV_CONTACT : nw == -1 ? GD_EV_BACK_CONTACT
-                : old == 1 ? GD_EV_SEPARATION : GD_EV_BACK_SEPARATION;
-        gd_model_clearance(&s->m, c, s->t, y, &s->md, &ev.x, &ev.xdot);
-        s->events++;
-        s->by_kind[ev.kind]++;
-        s->by_clear[c]++;
-        s->events_this_period++;
-        if (s->event_hook && s->event_hook(s, &ev, s->hook_user))
-            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the event hook");
+        gd_status st = record_event(s, c, old, nw, (r_hi ? r_hi : r_lo) > 0 ? 1 : -1, 1, err);
+        if (st != GD_OK)
+            return st;
     }
     if (s->events_this_period > s->o.max_events_per_period)
         return gd_error_set(err, GD_ERR_CHATTER,
@@ -373,15 +395,26 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
     return reset_at(s, s->t, err);
 }
 
-/* Update held modes from the state (root finding off) so statistics and guards see them. */
-static void modes_from_state(gd_sim *s)
+/* Root finding off: the modes follow the state; a change between two step ends is
+ * reported as an event at the step end (not located, as a fixed-step user would see it). */
+static gd_status modes_from_state(gd_sim *s, gd_error *err)
 {
     const double *y = N_VGetArrayPointer(s->y);
     for (int c = 0; c < s->m.nclear; c++) {
         double x, v;
         gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &v);
-        s->md.mode[c] = gd_model_mode_of(&s->m, c, x);
+        int nw = gd_model_mode_of(&s->m, c, x), old = s->md.mode[c];
+        if (nw == old)
+            continue;
+        s->md.mode[c] = nw;
+        gd_status st = record_event(s, c, old, nw, nw > old ? 1 : -1, 0, err);
+        if (st != GD_OK)
+            return st;
     }
+    if (s->events_this_period > s->o.max_events_per_period)
+        return gd_error_set(err, GD_ERR_CHATTER, "chattering: more than %d events in mesh period %ld",
+                            s->o.max_events_per_period, s->period);
+    return GD_OK;
 }
 
 GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
@@ -406,7 +439,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             sun_check(s, flag, "Evolve", err);
             return gd_error_prefix(err, "at t = %.9g mesh periods", abs_time(s, t0) / s->m.period);
         }
-        if (!isfinite(N_VGetArrayPointer(s->y)[0]))
+        if (!state_finite(N_VGetArrayPointer(s->y), s->m.n))
             return gd_error_set(err, GD_ERR_SOLVER, "the solution became NaN or infinite at t = %.9g mesh periods",
                                 abs_time(s, tret) / s->m.period);
         /* near-grazing watch: a crossing and return hidden inside the step */
@@ -420,7 +453,8 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
                 gd_status st = reset_at(s, t0, err);
                 if (st != GD_OK)
                     return st;
-                s->ops->set_init_step(s->mem, 0.5 * (tg - t0));
+                if (s->o.method != GD_METHOD_RK4 && !s->o.fixed_step)
+                    s->ops->set_init_step(s->mem, 0.5 * (tg - t0));
                 rewound = 1;
                 t_graze_stop = tg;
                 continue;
@@ -444,8 +478,11 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (st != GD_OK)
                 return st;
         }
-        if (s->md.from_state)
-            modes_from_state(s);
+        if (s->md.from_state) {
+            gd_status st = modes_from_state(s, err);
+            if (st != GD_OK)
+                return st;
+        }
     }
     return GD_OK;
 }

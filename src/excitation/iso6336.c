@@ -11,11 +11,16 @@ GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g)
     double q = C[0] + C[1] / zn1 + C[2] / zn2 + C[3] * x1 + C[4] * x1 / zn1 + C[5] * x2 + C[6] * x2 / zn2 +
                C[7] * x1 * x1 + C[8] * x2 * x2;                     /* mm um / N */
     double cth = 1.0 / q;                                          /* N / (mm um) */
-    double cprime = cth * 0.8 * 1.0 * 0.975 * cos(g->beta);         /* C_M, C_R, C_B */
+    /* basic rack factor C_B = [1 + 0.5 (1.2 - h_fP/m_n)] [1 - 0.02 (20 deg - alpha_n)], with the
+     * rack dedendum h_fP/m_n taken as the dedendum coefficient (0.975 for 1.25 and 20 deg) */
+    double cb = (1.0 + 0.5 * (1.2 - c->dedendum_coefficient)) * (1.0 - 0.02 * (20.0 - g->alpha_n * 180.0 / M_PI));
+    /* C_M = 0.8 (solid blanks), C_R = 1; the reduction of c' below 100 N/mm line load is not
+     * applied: a dynamic model needs the stiffness at every load, and a power sweep must not
+     * change the pair silently (docs/model.md) */
+    double cprime = cth * 0.8 * 1.0 * cb * cos(g->beta);
     double cga = cprime * (0.75 * g->eps_alpha + 0.25);
     if (g->eps_alpha < 1.2)
         cga *= 0.9;
     double k_transverse = cga * (g->b_contact * 1e3) * 1e6;          /* N/(mm um) * mm -> N/um -> N/m */
-    (void)c;
     return k_transverse / (cos(g->beta_b) * cos(g->beta_b));
 }

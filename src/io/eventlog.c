@@ -7,7 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording"
+#define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording,located"
 
 GD_API void gd_eventlog_header(FILE *fp) { fprintf(fp, "%s\n", EVENTLOG_HEADER); }
 
@@ -15,9 +15,9 @@ GD_API void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int
 {
     double ph = ev->t / m->period;
     ph -= floor(ph);
-    fprintf(fp, "%.15g,%ld,%.9f,%s,%s,%d,%.9g,%.9g,%d\n", ev->t / m->omega_n, ev->period, ph,
+    fprintf(fp, "%.15g,%ld,%.9f,%s,%s,%d,%.9g,%.9g,%d,%d\n", ev->t / m->omega_n, ev->period, ph,
             m->clear[ev->clearance].name, gd_event_kind_name(ev->kind), ev->direction,
-            ev->xdot * m->bc_m * m->omega_n, ev->x * m->bc_m * 1e6, recording);
+            ev->xdot * m->bc_m * m->omega_n, ev->x * m->bc_m * 1e6, recording, ev->located);
 }
 
 static int kind_index(const char *k)
@@ -52,13 +52,13 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
         lineno++;
         char copy[1024];
         snprintf(copy, sizeof copy, "%s", line);
-        char *f[9];
+        char *f[10];
         int nf = 0;
         char *save = NULL;
-        for (char *tok = strtok_r(copy, ",\n", &save); tok && nf < 9; tok = strtok_r(NULL, ",\n", &save))
+        for (char *tok = strtok_r(copy, ",\n", &save); tok && nf < 10; tok = strtok_r(NULL, ",\n", &save))
             f[nf++] = tok;
-        if (nf != 9) {
-            st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: expected 9 fields, found %d", path, lineno, nf);
+        if (nf != 10) {
+            st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: expected 10 fields, found %d", path, lineno, nf);
             break;
         }
         char *end;
