@@ -19,7 +19,12 @@ extern "C" {
 #define GD_MAX_HARMONICS 8
 #define GD_PATH_MAX 1024
 
-typedef enum gd_analysis { GD_ANALYSIS_RESPONSE = 0 } gd_analysis;
+typedef enum gd_analysis {
+    GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
+    GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6
+} gd_analysis;
+/* Whether this build can run an analysis (the others are named but refused, with the list). */
+GD_API int gd_analysis_available(int analysis);
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind { GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, GD_STIFF_RECTANGULAR = 2 } gd_stiffness_kind;
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;

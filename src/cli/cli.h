@@ -21,6 +21,8 @@ int cli_load_case(const cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
 
 int cmd_run(int argc, char **argv);
+/* The analyses behind `run`, one file each (dir: the output directory, not yet created). */
+int run_response(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 

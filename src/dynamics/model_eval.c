@@ -359,20 +359,20 @@ GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const do
             md->mode[c] = gd_model_mode_of(m, c, x);
             continue;
         }
-        /* on a boundary: the side the motion leaves to (velocity, else acceleration) */
-        double d = v;
-        if (d == 0.0) {
-            gd_model_rhs(m, t, y, yd, md);
-            double a = 0;
-            for (int q = 0; q < m->clear[c].nw; q++)
-                a += m->clear[c].wval[q] * yd[m->ndof + m->clear[c].widx[q]];
-            if (m->clear[c].kind == GD_CLR_MESH) {
-                double e, ed, edd;
-                gd_model_error(m, m->clear[c].mesh, t, md, &e, &ed, &edd);
-                a -= edd;
-            }
-            d = a;
+        /* on a boundary: the side the motion leaves to. The velocity decides unless it is
+         * so small (a rounding residue, e.g. of e'(0) = e_r Omega cos(pi/2)) that the
+         * acceleration carries the point out of the +-tiny band first: x - x0 = v s +
+         * a s^2 / 2 is dominated by the velocity only if v^2 > 2 tiny |a|. */
+        gd_model_rhs(m, t, y, yd, md);
+        double a = 0;
+        for (int q = 0; q < m->clear[c].nw; q++)
+            a += m->clear[c].wval[q] * yd[m->ndof + m->clear[c].widx[q]];
+        if (m->clear[c].kind == GD_CLR_MESH) {
+            double e, ed, edd;
+            gd_model_error(m, m->clear[c].mesh, t, md, &e, &ed, &edd);
+            a -= edd;
         }
+        double d = v * v > 2.0 * tiny * fabs(a) ? v : a;
         if (on_hi && on_lo) /* zero gap */
             md->mode[c] = d >= 0 ? 1 : -1;
         else if (on_hi)

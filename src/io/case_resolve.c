@@ -67,6 +67,26 @@ static void derive(gd_case *c, const char *section, const char *key, double *fie
 GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
+    if (!gd_analysis_available(c->analysis)) {
+        size_t n;
+        const gd_keyspec *s = gd_case_schema(&n);
+        size_t i = key_index("scene", "analysis");
+        char name[64], avail[256] = "";
+        gd_case_format_value(c, i, name, sizeof name);
+        for (int a = 0; a <= GD_ANALYSIS_WORK_PRECISION; a++)
+            if (gd_analysis_available(a)) {
+                gd_case tmp = *c;
+                tmp.analysis = a;
+                char nm[64];
+                gd_case_format_value(&tmp, i, nm, sizeof nm);
+                size_t used = strlen(avail);
+                snprintf(avail + used, sizeof avail - used, "%s%s", used ? ", " : "", nm);
+            }
+        (void)s;
+        where(c, "scene", "analysis", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: scene.analysis: '%s' is not available in this version of geardyn "
+                            "(valid: %s)", w, name, avail);
+    }
     /* torque or power */
     if (given(c, "operating", "torque_nm") && given(c, "operating", "power_kw")) {
         where(c, "operating", "power_kw", w, sizeof w);

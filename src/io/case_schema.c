@@ -21,7 +21,8 @@
 
 static const gd_keyspec schema[] = {
     /* [scene] */
-    E("scene", "analysis", analysis, 0, "response", "what to compute"),
+    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision",
+      "what to compute"),
     E("scene", "model", model, 2, "torsional|torsional-lr|bta",
       "dynamic model: one mesh coordinate, the two helical halves, or 10-DOF bending-torsion-axial"),
     B("scene", "bearing_clearance", bearing_clearance, 1, "radial bearing clearance (dead zone) in the supports"),
@@ -128,6 +129,16 @@ static const gd_keyspec schema[] = {
     B("output", "event_log", event_log, 1, "write events.csv"),
     B("output", "plots", plots, 1, "draw PNG and SVG pictures with gnuplot when it is installed"),
 };
+
+GD_API int gd_analysis_available(int analysis)
+{
+    switch (analysis) {
+    case GD_ANALYSIS_RESPONSE:
+        return 1;
+    default:
+        return 0;
+    }
+}
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)
 {

@@ -1,4 +1,4 @@
-/* geardyn run: run the scene of a case and write its results, tables and pictures. */
+/* The `response` analysis on the command line: tables, event log, pictures, summary.json. */
 #include "cli.h"
 
 #include <math.h>
@@ -74,16 +74,6 @@ static int on_progress(void *user, long done, long total)
     return 0;
 }
 
-static void default_out_dir(const char *case_path, char *out, size_t len)
-{
-    const char *base = strrchr(case_path, '/');
-    base = base ? base + 1 : case_path;
-    size_t l = strlen(base);
-    if (l > 4 && strcmp(base + l - 4, ".ini") == 0)
-        l -= 4;
-    snprintf(out, len, "results/%.*s", (int)l, base);
-}
-
 /* Draw the time history and the phase portrait with the Poincare section (PNG and SVG). */
 static gd_status draw(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
                       gd_error *err)
@@ -136,41 +126,21 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_model *m, cons
     return st;
 }
 
-int cmd_run(int argc, char **argv)
+int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
 {
-    cli_case_args a;
-    int rc = cli_parse_case_args(argc, argv, &a, 1);
-    if (rc)
-        return rc;
-    gd_case c;
-    rc = cli_load_case(&a, &c);
-    if (rc) {
-        gd_case_free(&c);
-        return rc;
-    }
+    gd_case c = *cp;
     gd_error err = {0};
     gd_model m;
-    if (gd_model_build(&c, &m, &err) != GD_OK) {
-        gd_case_free(&c);
+    if (gd_model_build(&c, &m, &err) != GD_OK)
         return cli_fail(&err);
-    }
-    char dir[GD_PATH_MAX];
-    if (a.out_dir)
-        snprintf(dir, sizeof dir, "%s", a.out_dir);
-    else if (c.directory[0])
-        snprintf(dir, sizeof dir, "%s", c.directory);
-    else
-        default_out_dir(a.case_path, dir, sizeof dir);
-    if (gd_mkdir_p(dir, &err) != GD_OK) {
-        gd_case_free(&c);
+    if (gd_mkdir_p(dir, &err) != GD_OK)
         return cli_fail(&err);
-    }
     run_out o;
     memset(&o, 0, sizeof o);
     o.m = &m;
     o.want_th = c.time_history;
     o.want_ev = c.event_log;
-    o.progress = !a.quiet && isatty(2);
+    o.progress = !a->quiet && isatty(2);
     o.last_pct = -1;
     const char *files[16];
     int nfiles = 0;
@@ -233,22 +203,20 @@ int cmd_run(int argc, char **argv)
     st = gd_summary_write_response(dir, &c, &m, &res, files, nfiles, &err);
     if (st != GD_OK)
         goto fail;
-    if (note && !a.quiet)
+    if (note && !a->quiet)
         fprintf(stderr, "geardyn: note: %s\n", note);
-    if (!a.quiet) {
+    if (!a->quiet) {
         printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2 (left %.6g, right %.6g)\n", dir, res.motion,
                gd_impact_regime_name(res.impact_regime[2]), res.rms_accel_mps2[2], res.rms_accel_mps2[0],
                res.rms_accel_mps2[1]);
         printf("  %ld steps, %ld RHS evaluations, %ld events, %.3f s\n", res.stats.steps, res.stats.rhs_evals,
                res.stats.events, res.wall_s);
     }
-    gd_case_free(&c);
     return 0;
 fail:
     gd_atomic_abort(&o.pc);
     gd_atomic_abort(&o.th);
     gd_atomic_abort(&o.ev);
-    gd_case_free(&c);
     if (o.progress)
         fputc('\n', stderr);
     return cli_fail(&err);
