@@ -30,6 +30,7 @@ typedef enum gd_stiffness_kind { GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, G
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
+typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
 typedef enum gd_source { GD_SRC_DEFAULT = 0, GD_SRC_FILE = 1, GD_SRC_SET = 2, GD_SRC_DERIVED = 3 } gd_source;
@@ -88,6 +89,9 @@ typedef struct gd_case {
     /* [run] */
     int transient_periods, record_periods;
     int initial_condition;   /* gd_initial */
+    int lyapunov_exponents;  /* 0 off, 1 the largest, k the first k */
+    int lyapunov_method;     /* gd_lyapunov_method */
+    double lyapunov_separation; /* two-trajectory: initial separation (dimensionless) */
     /* [output] */
     char directory[GD_PATH_MAX];
     int samples_per_period;

@@ -55,6 +55,18 @@ typedef struct gd_mesh_excitation {
 
 typedef struct gd_nz { int i, j; double v; } gd_nz;
 
+/* A smooth ODE system given by callbacks, run through the same integrator, tangent
+ * and Lyapunov machinery as the gear models (tests use it for the Lorenz system). */
+typedef struct gd_custom_system {
+    int n;
+    void (*rhs)(double t, const double *y, double *ydot, void *ctx);
+    /* out = J(t, y) v */
+    void (*tangent)(double t, const double *y, const double *v, double *out, void *ctx);
+    /* dense J (n x n, row-major), for implicit methods; may be NULL (then dirk is refused) */
+    void (*jacobian)(double t, const double *y, double *J, void *ctx);
+    void *ctx;
+} gd_custom_system;
+
 typedef struct gd_model {
     int kind;                /* gd_model_kind */
     int ndof, n;             /* degrees of freedom, state size 2 ndof */
@@ -80,7 +92,11 @@ typedef struct gd_model {
     double mesh_freq_hz;
     double static_load_n;    /* normal mesh force of one half at the mean torque */
     int damp_contact_only;
+    const gd_custom_system *custom; /* non-NULL: a custom ODE instead of a gear model */
 } gd_model;
+
+/* A model that runs a custom ODE; period: the renormalisation and sampling interval. */
+GD_API void gd_model_custom(gd_model *m, const gd_custom_system *sys, double period);
 
 /* Held per-run state the RHS depends on besides (t, y). */
 typedef struct gd_modes {
@@ -100,6 +116,10 @@ GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double 
                                double *xdot);
 /* ydot = f(t, y) with the held modes. No allocation. */
 GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md);
+/* Tangent (variational) right-hand side out = J(t, y) v in the held modes: the
+ * linearisation of each contact mode, O(nonzeros), no allocation. */
+GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const double *v, double *out,
+                             const gd_modes *md);
 /* Dense Jacobian df/dy (n x n, row-major) in the held modes. */
 GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md);
 /* Root functions: 2 per clearance, x_c - h_c and x_c + h_c. */

@@ -42,6 +42,11 @@ typedef struct gd_response_result {
     long poincare_count;
     int impact_regime[3];        /* left, right, combined */
     long record_events, record_events_by_kind[GD_EV_NKINDS];
+    int n_lyapunov;              /* exponents computed (0: none) */
+    double lyapunov[GD_MAX_STATE]; /* per unit dimensionless time, largest first */
+    double mle_per_period, mle_per_s;
+    double y_final[GD_MAX_STATE]; /* state and modes at the end (continuation of sweeps) */
+    gd_modes md_final;
     double wall_s;
     gd_sim_stats stats;
 } gd_response_result;

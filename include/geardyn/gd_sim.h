@@ -32,6 +32,7 @@ typedef struct gd_solver_opts {
     double max_step_fraction;
     int max_events_per_period;
     int max_separated_periods; /* a mesh open this long stops the run (GD_ERR_PHYSICS) */
+    int n_tangent;           /* tangent vectors integrated with the trajectory (Lyapunov), 0..n */
 } gd_solver_opts;
 
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
@@ -93,6 +94,18 @@ GD_API gd_status gd_sim_dense(gd_sim *s, double t, double *y, gd_error *err);
 /* Right-hand side at (t, y) with the current modes (counted in the statistics). */
 GD_API void gd_sim_rhs(gd_sim *s, double t, const double *y, double *ydot);
 GD_API void gd_sim_get_stats(const gd_sim *s, gd_sim_stats *st);
+
+/* Lyapunov exponents from the tangent vectors (opts.n_tangent > 0): the variational
+ * equations are integrated with the trajectory in the current contact mode, switched
+ * exactly at every located event with the saltation matrix applied, and renormalised
+ * (QR) at every mesh period. gd_sim_lyapunov_start zeroes the sums (call it after the
+ * transient); gd_sim_lyapunov gives the exponents per unit of dimensionless time and
+ * returns their number. */
+GD_API void gd_sim_lyapunov_start(gd_sim *s);
+/* Replace the trajectory state (not the tangent vectors) at the current time; the modes
+ * are made consistent with it and the integrator is reset. */
+GD_API gd_status gd_sim_set_state(gd_sim *s, const double *y, gd_error *err);
+GD_API int gd_sim_lyapunov(const gd_sim *s, double *exponents, double *elapsed);
 GD_API const gd_model *gd_sim_model(const gd_sim *s);
 
 #ifdef __cplusplus

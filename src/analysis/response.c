@@ -166,9 +166,28 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         return st;
     gd_solver_opts so;
     gd_solver_opts_from_case(c, &so);
-    gd_sim *s = NULL;
+    int two = c->lyapunov_exponents > 0 && c->lyapunov_method == GD_LYAP_TWO_TRAJECTORY;
+    so.n_tangent = two ? 0 : (c->lyapunov_exponents < m->n ? c->lyapunov_exponents : m->n);
+    gd_sim *s = NULL, *s2 = NULL;
     if ((st = gd_sim_create(m, &so, y0, &md0, &s, err)) != GD_OK)
         return st;
+    double d0 = c->lyapunov_separation, lsum = 0.0, lt0 = 0.0;
+    if (two) {
+        /* the companion trajectory: displaced by d0 along a fixed generic direction */
+        double y2[GD_MAX_STATE], nrm = 0;
+        for (int i = 0; i < m->n; i++) {
+            y2[i] = sin(1.0 + 2.3 * i);
+            nrm += y2[i] * y2[i];
+        }
+        for (int i = 0; i < m->n; i++)
+            y2[i] = y0[i] + d0 * y2[i] / sqrt(nrm);
+        gd_modes md2 = md0;
+        if ((st = gd_model_consistent_modes(m, 0.0, y2, &md2, err)) != GD_OK ||
+            (st = gd_sim_create(m, &so, y2, &md2, &s2, err)) != GD_OK) {
+            gd_sim_free(s);
+            return st;
+        }
+    }
     run_ctx r;
     memset(&r, 0, sizeof r);
     r.m = m;
@@ -189,6 +208,10 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
     long npts = 0;
     for (long k = 0; k < total; k++) {
         if (k == c->transient_periods) {
+            if (so.n_tangent > 0)
+                gd_sim_lyapunov_start(s);
+            lsum = 0.0;
+            lt0 = gd_sim_time(s);
             const gd_modes *md = gd_sim_modes(s);
             for (int j = 0; j < m->nmesh; j++)
                 r.visited[j][md->mode[m->mesh_clear[j]] + 1] = 1;
@@ -210,6 +233,29 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
                     *err = r.hook_err;
             }
             goto done;
+        }
+        if (s2) {
+            st = gd_sim_period(s2, err);
+            if (st != GD_OK) {
+                gd_error_prefix(err, "two-trajectory Lyapunov exponent, companion trajectory");
+                goto done;
+            }
+            const double *ya = gd_sim_state(s), *yb = gd_sim_state(s2);
+            double d = 0, y2[GD_MAX_STATE];
+            for (int i = 0; i < m->n; i++)
+                d += (yb[i] - ya[i]) * (yb[i] - ya[i]);
+            d = sqrt(d);
+            if (!(d > 0) || !isfinite(d)) {
+                st = gd_error_set(err, GD_ERR_SOLVER, "two-trajectory Lyapunov exponent: the trajectories %s",
+                                  d > 0 ? "diverged" : "coincide");
+                goto done;
+            }
+            if (k >= c->transient_periods)
+                lsum += log(d / d0);
+            for (int i = 0; i < m->n; i++)
+                y2[i] = ya[i] + (yb[i] - ya[i]) * d0 / d;
+            if ((st = gd_sim_set_state(s2, y2, err)) != GD_OK)
+                goto done;
         }
         if (k >= c->transient_periods) {
             const double *y = gd_sim_state(s);
@@ -258,10 +304,25 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         res->impact_regime[2] = worst;
         res->record_events = r.rec_events;
         memcpy(res->record_events_by_kind, r.rec_by_kind, sizeof r.rec_by_kind);
+        if (so.n_tangent > 0) {
+            res->n_lyapunov = gd_sim_lyapunov(s, res->lyapunov, NULL);
+        } else if (s2) {
+            res->n_lyapunov = 1;
+            res->lyapunov[0] = lsum / (gd_sim_time(s) - lt0);
+        }
+        if (res->n_lyapunov > 0) {
+            res->mle_per_period = res->lyapunov[0] * m->period;
+            res->mle_per_s = res->lyapunov[0] * m->omega_n;
+        } else {
+            res->mle_per_period = res->mle_per_s = NAN;
+        }
+        memcpy(res->y_final, gd_sim_state(s), sizeof(double) * (size_t)m->n);
+        res->md_final = *gd_sim_modes(s);
     }
 done:
     gd_sim_get_stats(s, &res->stats);
     gd_sim_free(s);
+    gd_sim_free(s2);
     free(pts);
     clock_gettime(CLOCK_MONOTONIC, &w1);
     res->wall_s = (double)(w1.tv_sec - w0.tv_sec) + 1e-9 * (double)(w1.tv_nsec - w0.tv_nsec);

@@ -119,8 +119,74 @@ static inline double clear_force(const gd_model *m, int c, double x, double v, d
     return f;
 }
 
+GD_API void gd_model_custom(gd_model *m, const gd_custom_system *sys, double period)
+{
+    memset(m, 0, sizeof *m);
+    m->custom = sys;
+    m->n = sys->n;
+    m->ndof = sys->n;
+    m->period = period;
+    m->Omega = 2.0 * M_PI / period;
+    m->omega_n = 1.0;
+    m->bc_m = 1.0;
+    m->m_ref = m->k_ref = 1.0;
+    m->dte_scale = m->force_share = 1.0;
+}
+
+GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const double *v, double *out,
+                             const gd_modes *md)
+{
+    if (m->custom) {
+        m->custom->tangent(t, y, v, out, m->custom->ctx);
+        return;
+    }
+    const int nd = m->ndof;
+    const double *dv = v + nd;
+    double *da = out + nd;
+    double kf[GD_MAX_MESH];
+    for (int j = 0; j < m->nmesh; j++)
+        mesh_eval(m, j, t, md, &kf[j], &(double){0}, NULL, NULL);
+    for (int i = 0; i < nd; i++) {
+        out[i] = dv[i];
+        da[i] = 0.0;
+    }
+    for (int q = 0; q < m->nk; q++)
+        da[m->K0[q].i] -= m->K0[q].v * v[m->K0[q].j];
+    for (int q = 0; q < m->nc; q++)
+        da[m->C0[q].i] -= m->C0[q].v * dv[m->C0[q].j];
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        int mode;
+        if (md->from_state) {
+            double x, xd;
+            gd_model_clearance(m, c, t, y, md, &x, &xd);
+            mode = gd_model_mode_of(m, c, x);
+        } else {
+            mode = md->mode[c];
+        }
+        double ks = mode != 0 ? cl->k * (cl->kind == GD_CLR_MESH ? kf[cl->mesh] : 1.0) : 0.0;
+        double cs = (!cl->damp_contact_only || mode != 0) ? cl->c : 0.0;
+        if (ks == 0.0 && cs == 0.0)
+            continue;
+        double dx = 0, dxd = 0;
+        for (int q = 0; q < cl->nw; q++) {
+            dx += cl->wval[q] * v[cl->widx[q]];
+            dxd += cl->wval[q] * dv[cl->widx[q]];
+        }
+        double f = ks * dx + cs * dxd;
+        for (int q = 0; q < cl->nw; q++)
+            da[cl->widx[q]] -= cl->wval[q] * f;
+    }
+    for (int i = 0; i < nd; i++)
+        da[i] *= m->inv_mass[i];
+}
+
 GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md)
 {
+    if (m->custom) {
+        m->custom->rhs(t, y, ydot, m->custom->ctx);
+        return;
+    }
     const int nd = m->ndof;
     const double *v = y + nd;
     double *a = ydot + nd;
@@ -156,6 +222,10 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
 
 GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md)
 {
+    if (m->custom) {
+        m->custom->jacobian(t, y, J, m->custom->ctx);
+        return;
+    }
     const int nd = m->ndof, n = m->n;
     memset(J, 0, sizeof(double) * (size_t)n * (size_t)n);
     for (int i = 0; i < nd; i++)

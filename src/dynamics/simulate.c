@@ -14,6 +14,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_linalg.h>
+#include <gsl/gsl_rng.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
@@ -35,7 +38,12 @@ struct gd_sim {
     double t;                /* integrator (local) time */
     long shift;              /* whole periods shifted out of t */
     long period;             /* index of the period that contains t */
-    double y_prev[GD_MAX_STATE];
+    double *y_prev;          /* N: the state at the start of the last step */
+    int k, N;                /* tangent vectors, total length n (1 + k) */
+    double lyap_sum[GD_MAX_STATE];
+    double lyap_t0;          /* absolute time where the sums started */
+    gsl_matrix *qr, *Q, *R;
+    gsl_vector *tau;
     double t_step0;          /* start of the last step (local) */
     int nroots;
     int rootsfound[2 * GD_MAX_CLEAR];
@@ -78,7 +86,11 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
 static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
 {
     gd_sim *s = user;
-    gd_model_rhs(&s->m, t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), &s->md);
+    const double *yy = N_VGetArrayPointer(y);
+    double *yd = N_VGetArrayPointer(ydot);
+    gd_model_rhs(&s->m, t, yy, yd, &s->md);
+    for (int v = 1; v <= s->k; v++)
+        gd_model_tangent(&s->m, t, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
     s->nrhs++;
     return 0;
 }
@@ -97,9 +109,12 @@ static int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *user, 
     int n = s->m.n;
     double Jd[GD_MAX_STATE * GD_MAX_STATE];
     gd_model_jacobian(&s->m, t, N_VGetArrayPointer(y), Jd, &s->md);
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++)
-            SM_ELEMENT_D(J, i, j) = Jd[i * n + j];
+    /* the tangent blocks repeat J (within a contact mode J does not depend on the state) */
+    SUNMatZero(J);
+    for (int b = 0; b <= s->k; b++)
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++)
+                SM_ELEMENT_D(J, b * n + i, b * n + j) = Jd[i * n + j];
     s->jac_calls++;
     return 0;
 }
@@ -125,6 +140,10 @@ static gd_status sun_check(gd_sim *s, int flag, const char *call, gd_error *err)
             goto fail;                                                                                             \
     } while (0)
 
+gd_status gd_sim_orthonormalise(gd_sim *s, int accumulate, gd_error *err);
+static double abs_time(const gd_sim *s, double t_local);
+static gd_status reset_at(gd_sim *s, double t, gd_error *err);
+
 GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
                                gd_sim **out, gd_error *err)
 {
@@ -140,13 +159,47 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         free(s);
         return gd_error_set(err, GD_ERR_SOLVER, "SUNContext_Create failed");
     }
-    s->y = N_VNew_Serial(m->n, s->ctx);
-    s->tmp = N_VNew_Serial(m->n, s->ctx);
-    if (!s->y || !s->tmp) {
+    if (o->n_tangent < 0 || o->n_tangent > m->n) {
+        gd_error_set(err, GD_ERR_INPUT, "%d tangent vectors for %d state variables (valid: 0 to %d)", o->n_tangent,
+                     m->n, m->n);
+        goto fail;
+    }
+    if (m->custom && o->method == GD_METHOD_DIRK && !m->custom->jacobian) {
+        gd_error_set(err, GD_ERR_INPUT, "an implicit method needs the system's Jacobian");
+        goto fail;
+    }
+    s->k = o->n_tangent;
+    s->N = m->n * (1 + s->k);
+    s->y = N_VNew_Serial(s->N, s->ctx);
+    s->tmp = N_VNew_Serial(s->N, s->ctx);
+    s->y_prev = calloc((size_t)s->N, sizeof(double));
+    if (!s->y || !s->tmp || !s->y_prev) {
         gd_error_set(err, GD_ERR_NOMEM, "N_VNew_Serial failed");
         goto fail;
     }
     memcpy(N_VGetArrayPointer(s->y), y0, sizeof(double) * (size_t)m->n);
+    if (s->k > 0) {
+        s->qr = gsl_matrix_alloc((size_t)m->n, (size_t)s->k);
+        s->Q = gsl_matrix_alloc((size_t)m->n, (size_t)m->n);
+        s->R = gsl_matrix_alloc((size_t)m->n, (size_t)s->k);
+        s->tau = gsl_vector_alloc((size_t)s->k);
+        gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
+        if (!s->qr || !s->Q || !s->R || !s->tau || !rng) {
+            gsl_rng_free(rng);
+            gd_error_set(err, GD_ERR_NOMEM, "out of memory for the tangent vectors");
+            goto fail;
+        }
+        /* reproducible, generic initial directions: seeded uniform, then orthonormalised */
+        gsl_rng_set(rng, 20261121UL);
+        double *yy = N_VGetArrayPointer(s->y);
+        for (int v = 1; v <= s->k; v++)
+            for (int i = 0; i < m->n; i++)
+                yy[v * m->n + i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
+        gsl_rng_free(rng);
+        gd_status st0 = gd_sim_orthonormalise(s, 0, err);
+        if (st0 != GD_OK)
+            goto fail;
+    }
     s->implicit = o->method == GD_METHOD_DIRK;
     s->ops = s->implicit ? &gd_stepper_ark : &gd_stepper_erk;
     s->mem = s->implicit ? ARKStepCreate(NULL, rhs_fn, 0.0, s->y, s->ctx) : ERKStepCreate(rhs_fn, 0.0, s->y, s->ctx);
@@ -191,7 +244,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
             CHECK(s->ops->set_fixed_step(s->mem, m->period / o->steps_per_period));
     }
     if (s->implicit) {
-        s->A = SUNDenseMatrix(m->n, m->n, s->ctx);
+        s->A = SUNDenseMatrix(s->N, s->N, s->ctx);
         s->LS = s->A ? SUNLinSol_Dense(s->y, s->A, s->ctx) : NULL;
         if (!s->A || !s->LS) {
             gd_error_set(err, GD_ERR_NOMEM, "dense linear solver allocation failed");
@@ -211,12 +264,67 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         s->md.rect_level[j] = gd_model_rect_level_after(m, j, 0.0, &s->md);
         s->was_open[j] = s->md.mode[m->mesh_clear[j]] == 0;
     }
-    memcpy(s->y_prev, y0, sizeof(double) * (size_t)m->n);
+    memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
     *out = s;
     return GD_OK;
 fail:
     gd_sim_free(s);
     return err ? err->code : GD_ERR_SOLVER;
+}
+
+/* QR (GSL Householder) of the tangent vectors: replace them by Q's first k columns and,
+ * when accumulate, add log|R_ii| to the sums. */
+gd_status gd_sim_orthonormalise(gd_sim *s, int accumulate, gd_error *err)
+{
+    const int n = s->m.n, k = s->k;
+    double *y = N_VGetArrayPointer(s->y);
+    for (int v = 0; v < k; v++)
+        for (int i = 0; i < n; i++)
+            gsl_matrix_set(s->qr, (size_t)i, (size_t)v, y[(v + 1) * n + i]);
+    int rc = gsl_linalg_QR_decomp(s->qr, s->tau);
+    if (rc == GSL_SUCCESS)
+        rc = gsl_linalg_QR_unpack(s->qr, s->tau, s->Q, s->R);
+    if (rc != GSL_SUCCESS)
+        return gd_error_set(err, GD_ERR_GSL, "renormalising the tangent vectors: gsl_linalg_QR: %s",
+                            gsl_strerror(rc));
+    for (int v = 0; v < k; v++) {
+        double r = gsl_matrix_get(s->R, (size_t)v, (size_t)v);
+        if (!(fabs(r) > 0) || !isfinite(r))
+            return gd_error_set(err, GD_ERR_SOLVER, "tangent vector %d collapsed or diverged (|R| = %g)", v + 1, r);
+        if (accumulate)
+            s->lyap_sum[v] += log(fabs(r));
+        double sg = r < 0 ? -1.0 : 1.0; /* keep orientation: Q R with a positive diagonal */
+        for (int i = 0; i < n; i++)
+            y[(v + 1) * n + i] = sg * gsl_matrix_get(s->Q, (size_t)i, (size_t)v);
+    }
+    return GD_OK;
+}
+
+GD_API gd_status gd_sim_set_state(gd_sim *s, const double *y, gd_error *err)
+{
+    memcpy(N_VGetArrayPointer(s->y), y, sizeof(double) * (size_t)s->m.n);
+    if (!s->md.from_state) {
+        gd_status st = gd_model_consistent_modes(&s->m, s->t, y, &s->md, err);
+        if (st != GD_OK)
+            return st;
+    }
+    return reset_at(s, s->t, err);
+}
+
+GD_API void gd_sim_lyapunov_start(gd_sim *s)
+{
+    memset(s->lyap_sum, 0, sizeof s->lyap_sum);
+    s->lyap_t0 = abs_time(s, s->t);
+}
+
+GD_API int gd_sim_lyapunov(const gd_sim *s, double *exponents, double *elapsed)
+{
+    double T = abs_time(s, s->t) - s->lyap_t0;
+    if (elapsed)
+        *elapsed = T;
+    for (int v = 0; v < s->k; v++)
+        exponents[v] = T > 0 ? s->lyap_sum[v] / T : NAN;
+    return s->k;
 }
 
 GD_API void gd_sim_free(gd_sim *s)
@@ -235,6 +343,11 @@ GD_API void gd_sim_free(gd_sim *s)
         N_VDestroy(s->tmp);
     if (s->ctx)
         SUNContext_Free(&s->ctx);
+    free(s->y_prev);
+    gsl_matrix_free(s->qr);
+    gsl_matrix_free(s->Q);
+    gsl_matrix_free(s->R);
+    gsl_vector_free(s->tau);
     free(s);
 }
 
@@ -369,6 +482,38 @@ static gd_status record_event(gd_sim *s, int c, int old, int nw, int direction, 
     return GD_OK;
 }
 
+/* Tangent vectors across the switching surface of clearance c (mode about to become nw):
+ * d+ = d + (f+ - f-) (n . d) / (n . f- + dg/dt), n = grad of g = w.x - e(t) -/+ h. With a
+ * continuous dead-zone force and damping that acts always, f+ = f- and this is the identity;
+ * damping in contact only makes the vector field jump. */
+static void saltation(gd_sim *s, int c, int nw)
+{
+    const gd_model *m = &s->m;
+    const int n = m->n, nd = m->ndof;
+    double *y = N_VGetArrayPointer(s->y);
+    double fm[GD_MAX_STATE], fp[GD_MAX_STATE];
+    gd_model_rhs(m, s->t, y, fm, &s->md);
+    int old = s->md.mode[c];
+    s->md.mode[c] = nw;
+    gd_model_rhs(m, s->t, y, fp, &s->md);
+    s->md.mode[c] = old;
+    s->extra_rhs += 2;
+    double x, xdot;
+    gd_model_clearance(m, c, s->t, y, &s->md, &x, &xdot); /* n . f- + dg/dt */
+    if (fabs(xdot) < 1e-300)
+        return;
+    const gd_clearance *cl = &m->clear[c];
+    for (int v = 1; v <= s->k; v++) {
+        double *d = y + v * n;
+        double nd_ = 0;
+        for (int q = 0; q < cl->nw; q++)
+            nd_ += cl->wval[q] * d[cl->widx[q]];
+        double f = nd_ / xdot;
+        for (int i = nd; i < n; i++) /* only accelerations can jump */
+            d[i] += (fp[i] - fm[i]) * f;
+    }
+}
+
 static gd_status handle_roots(gd_sim *s, gd_error *err)
 {
     int flag = s->ops->get_root_info(s->mem, s->rootsfound);
@@ -382,6 +527,8 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
         int nw = new_mode_for(old, r_hi, r_lo);
         if (nw == old)
             continue;
+        if (s->k > 0)
+            saltation(s, c, nw);
         s->md.mode[c] = nw;
         gd_status st = record_event(s, c, old, nw, (r_hi ? r_hi : r_lo) > 0 ? 1 : -1, 1, err);
         if (st != GD_OK)
@@ -431,7 +578,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         if (flag < 0)
             return sun_check(s, flag, "SetStopTime", err);
         double t0 = s->t;
-        memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->m.n);
+        memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
         double tret = t0;
         s->sunmsg[0] = '\0';
         flag = s->ops->evolve(s->mem, tstop, s->y, &tret, ARK_ONE_STEP);
@@ -439,7 +586,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             sun_check(s, flag, "Evolve", err);
             return gd_error_prefix(err, "at t = %.9g mesh periods", abs_time(s, t0) / s->m.period);
         }
-        if (!state_finite(N_VGetArrayPointer(s->y), s->m.n))
+        if (!state_finite(N_VGetArrayPointer(s->y), s->N))
             return gd_error_set(err, GD_ERR_SOLVER, "the solution became NaN or infinite at t = %.9g mesh periods",
                                 abs_time(s, tret) / s->m.period);
         /* near-grazing watch: a crossing and return hidden inside the step */
@@ -448,7 +595,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (tg > 0) {
                 s->grazing_suspects++;
                 s->grazing_rewinds++;
-                memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->m.n);
+                memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
                 s->t = t0;
                 gd_status st = reset_at(s, t0, err);
                 if (st != GD_OK)
@@ -510,6 +657,16 @@ GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err)
                                 "damping, or reduce the excitation", s->m.clear[c].name, s->open_periods[j], s->period);
     }
     memcpy(s->events_at_start, s->by_clear, sizeof s->by_clear);
+    if (s->k > 0) {
+        st = gd_sim_orthonormalise(s, 1, err);
+        if (st != GD_OK)
+            return st;
+        if (s->period - s->shift < SHIFT_PERIODS) {
+            st = reset_at(s, s->t, err);
+            if (st != GD_OK)
+                return st;
+        }
+    }
     if (s->period - s->shift >= SHIFT_PERIODS) {
         s->shift = s->period;
         st = reset_at(s, 0.0, err);

@@ -121,6 +121,12 @@ static const gd_keyspec schema[] = {
     I("run", "transient_periods", transient_periods, 0, 100000000, 300, "mesh periods discarded before recording"),
     I("run", "record_periods", record_periods, 1, 100000000, 200, "mesh periods recorded"),
     E("run", "initial_condition", initial_condition, 0, "static|zero", "start at the static deflection under the mean load, or at rest undeflected"),
+    I("run", "lyapunov_exponents", lyapunov_exponents, 0, 20, 1,
+      "Lyapunov exponents computed over the recorded window: 0 none, 1 the largest, k the first k (tangent method)"),
+    E("run", "lyapunov_method", lyapunov_method, 0, "tangent|two-trajectory",
+      "variational equations with saltation at events, or two trajectories (Benettin; largest exponent only)"),
+    D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-8,
+      "two-trajectory: initial and renormalised separation (dimensionless state norm)"),
 
     /* [output] */
     S("output", "directory", directory, "", "output directory (default: results/<case name>; --out overrides)"),

@@ -156,6 +156,14 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(ir, "right", json_string(gd_impact_regime_name(r->impact_regime[1])));
     json_object_set_new(res, "impact_regime_by_mesh", ir);
     json_object_set_new(res, "recorded_events", json_integer(r->record_events));
+    static const char *lm[] = {"tangent", "two-trajectory"};
+    json_object_set_new(res, "lyapunov_method", r->n_lyapunov ? json_string(lm[c->lyapunov_method]) : json_null());
+    json_object_set_new(res, "mle_per_period", num(r->n_lyapunov ? r->mle_per_period : NAN));
+    json_object_set_new(res, "mle_per_s", num(r->n_lyapunov ? r->mle_per_s : NAN));
+    json_t *spec = json_array();
+    for (int i = 0; i < r->n_lyapunov; i++)
+        json_array_append_new(spec, num(r->lyapunov[i] * m->period));
+    json_object_set_new(res, "lyapunov_spectrum_per_period", spec);
     json_object_set_new(root, "results", res);
 
     json_t *fl = json_array();
