@@ -92,6 +92,8 @@ typedef struct gd_case {
     int lyapunov_exponents;  /* 0 off, 1 the largest, k the first k */
     int lyapunov_method;     /* gd_lyapunov_method */
     double lyapunov_separation; /* two-trajectory: initial separation (dimensionless) */
+    double periodicity_tol;  /* relative tolerance for equal Poincare points */
+    double chaos_threshold_per_period; /* |MLE| per mesh period separating chaos / quasi-periodicity */
     /* [output] */
     char directory[GD_PATH_MAX];
     int samples_per_period;

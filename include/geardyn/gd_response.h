@@ -37,7 +37,7 @@ typedef struct gd_response_result {
     double dte_mean_um[2], dte_rms_um[2], dte_pp_um[2]; /* RMS about the mean */
     double lambda_min_um[2], lambda_max_um[2];
     int period_n;                /* n for period-n, 0 when not periodic */
-    char motion[32];             /* "period-n" or "not-periodic" */
+    char motion[32];             /* "period-n", "quasi-periodic", "chaotic" or "not-periodic" (gd_motion_classify) */
     int poincare_distinct;
     long poincare_count;
     int impact_regime[3];        /* left, right, combined */
@@ -53,7 +53,7 @@ typedef struct gd_response_result {
 
 /* Options that are not in the case (tests set them; the CLI uses the defaults). */
 typedef struct gd_response_opts {
-    double periodicity_tol;      /* relative tolerance for equal Poincare points (default 1e-6) */
+    double periodicity_tol;      /* relative tolerance for equal Poincare points (0: run.periodicity_tol) */
     int max_period;              /* largest n tested (default 64) */
     const double *y0;            /* initial state (NULL: from [run] initial_condition) */
     const gd_modes *md0;
@@ -66,6 +66,13 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
 /* Motion class from a sequence of Poincare points (npts x n, row-major). */
 GD_API int gd_poincare_period(const double *pts, long npts, int n, double tol, int max_period);
 GD_API int gd_poincare_distinct(const double *pts, long npts, int n, double tol);
+/* The motion class from the Poincare period (0: none found) and the largest Lyapunov
+ * exponent per mesh period (when have_mle): period-n when the section repeats; else
+ * chaotic when mle > threshold, quasi-periodic when |mle| <= threshold, and
+ * not-periodic when mle < -threshold (a transient not yet died out, or a period above
+ * the largest tested) or when no exponent was computed. */
+GD_API void gd_motion_classify(int period_n, int have_mle, double mle_per_period, double threshold, char *out,
+                               size_t len);
 
 /* Initial state of a run: static deflection or rest. */
 GD_API gd_status gd_initial_state(const gd_case *c, const gd_model *m, double *y, gd_modes *md, gd_error *err);

@@ -1,8 +1,10 @@
-/* Poincare-section analysis: the period of a sequence of stroboscopic points and the
- * number of distinct points, with a relative tolerance on the scale of the cloud. */
+/* Poincare-section analysis and the motion class: the period of a sequence of stroboscopic
+ * points, the number of distinct points (relative tolerance on the scale of the cloud),
+ * and the class from the period and the largest Lyapunov exponent. */
 #include "geardyn/gd_response.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 static double cloud_scale(const double *pts, long npts, int n, int i)
@@ -59,4 +61,17 @@ GD_API int gd_poincare_distinct(const double *pts, long npts, int n, double tol)
     }
     free(rep);
     return nrep;
+}
+
+GD_API void gd_motion_classify(int period_n, int have_mle, double mle_per_period, double threshold, char *out,
+                               size_t len)
+{
+    if (period_n > 0)
+        snprintf(out, len, "period-%d", period_n);
+    else if (have_mle && isfinite(mle_per_period) && mle_per_period > threshold)
+        snprintf(out, len, "chaotic");
+    else if (have_mle && isfinite(mle_per_period) && fabs(mle_per_period) <= threshold)
+        snprintf(out, len, "quasi-periodic");
+    else
+        snprintf(out, len, "not-periodic");
 }

@@ -16,7 +16,7 @@ GD_API const char *gd_impact_regime_name(int regime)
 GD_API void gd_response_opts_default(gd_response_opts *o)
 {
     memset(o, 0, sizeof *o);
-    o->periodicity_tol = 1e-6;
+    o->periodicity_tol = 0; /* 0: the case's run.periodicity_tol */
     o->max_period = 64;
 }
 
@@ -286,13 +286,9 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         }
         /* the last point closes the window; periodicity is judged over all of them */
         res->poincare_count = npts;
-        res->period_n = gd_poincare_period(pts, npts, m->n, opts->periodicity_tol, opts->max_period);
-        res->poincare_distinct = res->period_n > 0 ? res->period_n
-                                                   : gd_poincare_distinct(pts, npts, m->n, opts->periodicity_tol);
-        if (res->period_n > 0)
-            snprintf(res->motion, sizeof res->motion, "period-%d", res->period_n);
-        else
-            snprintf(res->motion, sizeof res->motion, "not-periodic");
+        double ptol = opts->periodicity_tol > 0 ? opts->periodicity_tol : c->periodicity_tol;
+        res->period_n = gd_poincare_period(pts, npts, m->n, ptol, opts->max_period);
+        res->poincare_distinct = res->period_n > 0 ? res->period_n : gd_poincare_distinct(pts, npts, m->n, ptol);
         int worst = 0;
         for (int j = 0; j < 2; j++) {
             int jj = j < m->nmesh ? j : 0;
@@ -316,6 +312,8 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         } else {
             res->mle_per_period = res->mle_per_s = NAN;
         }
+        gd_motion_classify(res->period_n, res->n_lyapunov > 0, res->mle_per_period, c->chaos_threshold_per_period,
+                           res->motion, sizeof res->motion);
         memcpy(res->y_final, gd_sim_state(s), sizeof(double) * (size_t)m->n);
         res->md_final = *gd_sim_modes(s);
     }

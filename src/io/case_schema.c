@@ -87,7 +87,7 @@ static const gd_keyspec schema[] = {
       "mesh phase of the right half relative to the left (stagger), degrees of the mesh cycle"),
 
     /* [damping] */
-    D("damping", "mesh_damping_ratio", "", mesh_damping_ratio, 0, 1, 0, 0, 0.02, "zeta: c = 2 zeta sqrt(k_m m_n)"),
+    D("damping", "mesh_damping_ratio", "", mesh_damping_ratio, 0, 2, 0, 0, 0.02, "zeta: c = 2 zeta sqrt(k_m m_n) (above 1: overdamped)"),
     E("damping", "mesh_damping_mode", mesh_damping_mode, 0, "always|contact",
       "mesh damping acts always (Kahraman & Singh) or only while the teeth are in contact"),
     D("damping", "support_damping_ratio", "", support_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of every bearing support"),
@@ -127,6 +127,10 @@ static const gd_keyspec schema[] = {
       "variational equations with saltation at events, or two trajectories (Benettin; largest exponent only)"),
     D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-8,
       "two-trajectory: initial and renormalised separation (dimensionless state norm)"),
+    D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, 1e-6,
+      "Poincare points closer than this (relative to 1 + the largest value of each state variable) are equal"),
+    D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
+      "largest Lyapunov exponent per mesh period above which a non-periodic motion is chaotic (|mle| below: quasi-periodic)"),
 
     /* [output] */
     S("output", "directory", directory, "", "output directory (default: results/<case name>; --out overrides)"),
