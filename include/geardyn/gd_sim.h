@@ -33,6 +33,7 @@ typedef struct gd_solver_opts {
     int max_events_per_period;
     int max_separated_periods; /* a mesh open this long stops the run (GD_ERR_PHYSICS) */
     int n_tangent;           /* tangent vectors integrated with the trajectory (Lyapunov), 0..n */
+    int refine_events;       /* redo the step to a located root with the method (not the interpolant) */
 } gd_solver_opts;
 
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);

@@ -76,6 +76,7 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->atol = c->atol;
     o->steps_per_period = c->steps_per_period;
     o->fixed_step = c->fixed_step;
+    o->refine_events = 1;
     o->root_finding = c->root_finding;
     o->grazing_watch = c->grazing_watch;
     o->max_step_fraction = c->max_step_fraction;
@@ -514,11 +515,47 @@ static void saltation(gd_sim *s, int c, int nw)
     }
 }
 
+/* The state at a located root comes from ARKODE's Hermite interpolant (degree at most 5),
+ * less accurate than a step of a high-order method. Redo the step from its start to the
+ * root with the method itself, so that the state at the event has the method's accuracy
+ * (the root information of the original return is kept). */
+static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *err)
+{
+    if (!(tr > t0))
+        return GD_OK;
+    memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
+    int fixed = s->o.method == GD_METHOD_RK4 || s->o.fixed_step;
+    int flag = s->ops->reset(s->mem, t0, s->y);
+    if (flag >= 0)
+        flag = fixed ? s->ops->set_fixed_step(s->mem, tr - t0) : s->ops->set_init_step(s->mem, tr - t0);
+    if (flag >= 0)
+        flag = s->ops->set_stop_time(s->mem, tr);
+    double t2 = t0;
+    if (flag >= 0)
+        flag = s->ops->evolve(s->mem, tr, s->y, &t2, ARK_NORMAL);
+    if (flag == ARK_ROOT_RETURN) {
+        /* the redone step met a crossing just before tr (another clearance, or the same one a
+         * rounding earlier): add it to the crossings being handled */
+        int more[2 * GD_MAX_CLEAR];
+        if (s->ops->get_root_info(s->mem, more) >= 0)
+            for (int i = 0; i < s->nroots; i++)
+                if (!s->rootsfound[i])
+                    s->rootsfound[i] = more[i];
+    }
+    if (fixed && flag >= 0) {
+        int f2 = s->ops->set_fixed_step(s->mem, s->m.period / s->o.steps_per_period);
+        if (f2 < 0)
+            flag = f2;
+    }
+    if (flag < 0)
+        return sun_check(s, flag, "refining the state at an event", err);
+    s->resets++;
+    s->t = t2;
+    return GD_OK;
+}
+
 static gd_status handle_roots(gd_sim *s, gd_error *err)
 {
-    int flag = s->ops->get_root_info(s->mem, s->rootsfound);
-    if (flag < 0)
-        return sun_check(s, flag, "GetRootInfo", err);
     for (int c = 0; c < s->m.nclear; c++) {
         int r_hi = s->rootsfound[2 * c], r_lo = s->rootsfound[2 * c + 1];
         if (!r_hi && !r_lo)
@@ -531,6 +568,26 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
             saltation(s, c, nw);
         s->md.mode[c] = nw;
         gd_status st = record_event(s, c, old, nw, (r_hi ? r_hi : r_lo) > 0 ? 1 : -1, 1, err);
+        if (st != GD_OK)
+            return st;
+    }
+    /* Another clearance may have crossed within the root tolerance of this one (two halves
+     * that touch together, up to rounding) or once the state was refined: a coordinate past
+     * a boundary its held mode does not allow switches here and now, or ARKODE, restarting
+     * with the root function already past zero, would never see that crossing. */
+    const double *y = N_VGetArrayPointer(s->y);
+    for (int c = 0; c < s->m.nclear; c++) {
+        if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1])
+            continue;
+        double x, xd;
+        gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &xd);
+        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        if (nw == old)
+            continue;
+        if (s->k > 0)
+            saltation(s, c, nw);
+        s->md.mode[c] = nw;
+        gd_status st = record_event(s, c, old, nw, xd >= 0 ? 1 : -1, 1, err);
         if (st != GD_OK)
             return st;
     }
@@ -614,6 +671,14 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         if (s->step_hook && s->step_hook(s, abs_time(s, t0), abs_time(s, tret), s->hook_user))
             return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
         if (flag == ARK_ROOT_RETURN) {
+            int f2 = s->ops->get_root_info(s->mem, s->rootsfound);
+            if (f2 < 0)
+                return sun_check(s, f2, "GetRootInfo", err);
+            if (s->o.refine_events) {
+                gd_status st = refine_root_state(s, t0, tret, err);
+                if (st != GD_OK)
+                    return st;
+            }
             gd_status st = handle_roots(s, err);
             if (st != GD_OK)
                 return st;

@@ -125,8 +125,9 @@ static const gd_keyspec schema[] = {
       "Lyapunov exponents computed over the recorded window: 0 none, 1 the largest, k the first k (tangent method)"),
     E("run", "lyapunov_method", lyapunov_method, 0, "tangent|two-trajectory",
       "variational equations with saltation at events, or two trajectories (Benettin; largest exponent only)"),
-    D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-8,
-      "two-trajectory: initial and renormalised separation (dimensionless state norm)"),
+    D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-6,
+      "two-trajectory: initial and renormalised separation (dimensionless state norm); keep it far above the "
+      "integration error of each trajectory (about rtol times the state)"),
     D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, 1e-6,
       "Poincare points closer than this (relative to 1 + the largest value of each state variable) are equal"),
     D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
