@@ -98,6 +98,7 @@ typedef struct gd_case {
     char directory[GD_PATH_MAX];
     int samples_per_period;
     int time_history, event_log, plots;
+    char response_variable[32];
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */

@@ -10,5 +10,6 @@
 #include "geardyn/gd_sim.h"
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_output.h"
+#include "geardyn/gd_spectrum.h"
 
 #endif

@@ -20,6 +20,29 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out);
 int cli_load_case(const cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
 
+/* The response variable of the local analysis ([output] response_variable). */
+typedef struct cli_variable {
+    int kind, index;
+    char name[32];
+} cli_variable;
+
+typedef struct cli_local {
+    cli_variable var;
+    double *t, *x, *xd;      /* uniform samples: s, um, m/s */
+    size_t n, cap;
+    double *px, *pxd;        /* Poincare points */
+    size_t np, pcap;
+    double spec_amax;        /* largest spectral amplitude (for the plot's floor) */
+} cli_local;
+
+int cli_variable_resolve(const gd_case *c, const gd_model *m, cli_variable *v, gd_error *err);
+void cli_variable_value(const gd_model *m, const cli_variable *v, double t, const double *y, double *x, double *xdot);
+int cli_local_add_sample(cli_local *L, double t_s, double x, double xdot);
+int cli_local_add_poincare(cli_local *L, double x, double xdot);
+void cli_local_free(cli_local *L);
+gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
+                          cli_local *L, const char **files, int *nfiles, int draw, gd_error *err);
+
 int cmd_run(int argc, char **argv);
 /* The analyses behind `run`, one file each (dir: the output directory, not yet created). */
 int run_response(const cli_case_args *a, gd_case *c, const char *dir);

@@ -13,15 +13,20 @@ typedef struct run_out {
     int want_th, want_ev;
     int progress;
     long last_pct;
+    cli_local local;
+    int local_failed;
 } run_out;
 
 static int on_sample(void *user, const gd_sample *s)
 {
     run_out *o = user;
+    const gd_model *m = o->m;
+    double vx, vxd;
+    cli_variable_value(m, &o->local.var, s->t_s * m->omega_n, s->y, &vx, &vxd);
+    o->local_failed |= cli_local_add_sample(&o->local, s->t_s, vx, vxd);
     if (!o->want_th)
         return 0;
     FILE *fp = o->th.fp;
-    const gd_model *m = o->m;
     fprintf(fp, "%.12g,%ld", s->t_s, s->period);
     for (int j = 0; j < 2; j++)
         fprintf(fp, ",%.9g,%.9g,%.9g,%.9g,%.9g", s->lambda_um[j], s->lambda_dot_mps[j], s->accel_mps2[j],
@@ -40,6 +45,9 @@ static int on_poincare(void *user, long period, double t_s, const double *y)
     gd_modes md;
     memset(&md, 0, sizeof md);
     double t = t_s * m->omega_n;
+    double vx, vxd;
+    cli_variable_value(m, &o->local.var, t, y, &vx, &vxd);
+    o->local_failed |= cli_local_add_poincare(&o->local, vx, vxd);
     fprintf(o->pc.fp, "%ld,%.12g", period, t_s);
     for (int j = 0; j < 2; j++) {
         int c = m->mesh_clear[j < m->nmesh ? j : 0];
@@ -133,16 +141,18 @@ int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
     gd_model m;
     if (gd_model_build(&c, &m, &err) != GD_OK)
         return cli_fail(&err);
-    if (gd_mkdir_p(dir, &err) != GD_OK)
-        return cli_fail(&err);
     run_out o;
     memset(&o, 0, sizeof o);
+    if (cli_variable_resolve(&c, &m, &o.local.var, &err))
+        return cli_fail(&err);
+    if (gd_mkdir_p(dir, &err) != GD_OK)
+        return cli_fail(&err);
     o.m = &m;
     o.want_th = c.time_history;
     o.want_ev = c.event_log;
     o.progress = !a->quiet && isatty(2);
     o.last_pct = -1;
-    const char *files[16];
+    const char *files[24];
     int nfiles = 0;
     gd_status st = gd_atomic_open(&o.pc, dir, "poincare.csv", &err);
     if (st == GD_OK && o.want_th)
@@ -184,6 +194,13 @@ int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
     }
     if (st != GD_OK)
         goto fail;
+    if (o.local_failed) {
+        st = gd_error_set(&err, GD_ERR_NOMEM, "out of memory for the local analysis");
+        goto fail;
+    }
+    st = cli_local_write(dir, &c, &m, &res, &o.local, files, &nfiles, c.plots && gd_gnuplot_available(), &err);
+    if (st != GD_OK)
+        goto fail;
     const char *note = NULL;
     if (c.plots && o.want_th) {
         if (!gd_gnuplot_available()) {
@@ -205,6 +222,7 @@ int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
         goto fail;
     if (note && !a->quiet)
         fprintf(stderr, "geardyn: note: %s\n", note);
+    cli_local_free(&o.local);
     if (!a->quiet) {
         printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2 (left %.6g, right %.6g)\n", dir, res.motion,
                gd_impact_regime_name(res.impact_regime[2]), res.rms_accel_mps2[2], res.rms_accel_mps2[0],
@@ -214,6 +232,7 @@ int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
     }
     return 0;
 fail:
+    cli_local_free(&o.local);
     gd_atomic_abort(&o.pc);
     gd_atomic_abort(&o.th);
     gd_atomic_abort(&o.ev);

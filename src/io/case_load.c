@@ -24,6 +24,18 @@ GD_API const char *gd_source_name(gd_source s)
 static void *field(gd_case *c, const gd_keyspec *k) { return (char *)c + k->offset; }
 static const void *cfield(const gd_case *c, const gd_keyspec *k) { return (const char *)c + k->offset; }
 
+/* capacity of a string key's field */
+static size_t string_cap(const gd_keyspec *k)
+{
+    if (k->offset == offsetof(gd_case, directory))
+        return GD_PATH_MAX;
+    if (k->offset == offsetof(gd_case, table))
+        return 128;
+    if (k->offset == offsetof(gd_case, response_variable))
+        return 32;
+    return 256;
+}
+
 static void set_default(gd_case *c, const gd_keyspec *k)
 {
     switch (k->type) {
@@ -31,7 +43,7 @@ static void set_default(gd_case *c, const gd_keyspec *k)
     case GD_KEY_INT:
     case GD_KEY_ENUM:
     case GD_KEY_BOOL: *(int *)field(c, k) = (int)k->def; break;
-    case GD_KEY_STRING: snprintf((char *)field(c, k), 2, "%s", ""); break;
+    case GD_KEY_STRING: snprintf((char *)field(c, k), string_cap(k), "%s", k->choices ? k->choices : ""); break;
     case GD_KEY_DLIST: *(int *)((char *)c + k->count_offset) = 0; break;
     }
 }
@@ -262,8 +274,7 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
     }
     case GD_KEY_STRING: {
         char *dst = field(c, k);
-        size_t cap = (k->offset == offsetof(gd_case, directory)) ? GD_PATH_MAX
-                   : (k->offset == offsetof(gd_case, table)) ? 128 : 256;
+        size_t cap = string_cap(k);
         if (strlen(value) >= cap)
             return bad_value(where, k, value, "too long:", err);
         snprintf(dst, cap, "%s", value);

@@ -139,6 +139,9 @@ static const gd_keyspec schema[] = {
     B("output", "time_history", time_history, 1, "write time_history.csv"),
     B("output", "event_log", event_log, 1, "write events.csv"),
     B("output", "plots", plots, 1, "draw PNG and SVG pictures with gnuplot when it is installed"),
+    S("output", "response_variable", response_variable, "lambda_L",
+      "variable of the local analysis (time history, phase portrait, spectrum, Poincare section): lambda_L, "
+      "lambda_R (mesh deflection), dte_L, dte_R, or a degree of freedom (y1L, z1L, y2L, z2L, qL, ..., q)"),
 };
 
 GD_API int gd_analysis_available(int analysis)

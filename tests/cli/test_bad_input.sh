@@ -53,6 +53,10 @@ helix_angle_deg = 0
 profile_shift_pinion = 1.2" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
 check_bad "[scene]
 analysis = ltca" "case.ini:2: scene.analysis: 'ltca' is not available in this version of geardyn \\(valid: response\\)" "analysis not yet available"
+check_bad "[scene]
+model = torsional
+[output]
+response_variable = y1L" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, lambda_R, dte_L, dte_R, q\\)" "response variable of another model"
 check_bad "this is not ini" "case.ini:1: syntax error" "syntax error"
 
 # missing file

@@ -23,7 +23,7 @@ out="$work/run"
 "$G" run "$SRC/cases/quickstart.ini" --out "$out" --quiet --set scene.model=torsional-lr \
     --set run.transient_periods=50 --set run.record_periods=20 > "$work/run.txt" 2>&1
 ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
-for f in summary.json poincare.csv time_history.csv events.csv; do
+for f in summary.json poincare.csv time_history.csv events.csv variable.csv variable_poincare.csv spectrum.csv; do
     [ -s "$out/$f" ]; ok $? "run wrote $f"
 done
 ls -a "$out" | grep -q '\.tmp'; [ $? -ne 0 ]; ok $? "no temporary files left"
@@ -54,6 +54,18 @@ head -1 "$out/time_history.csv" | grep -q "^t_s,period,lambda_L_um,lambda_dot_L_
 rows=$(($(wc -l < "$out/time_history.csv") - 1)); [ "$rows" -eq $((20 * 64)) ]; ok $? "time history has record x samples rows ($rows)"
 prow=$(($(wc -l < "$out/poincare.csv") - 1)); [ "$prow" -eq 21 ]; ok $? "poincare has record + 1 rows ($prow)"
 
+head -1 "$out/spectrum.csv" | grep -q "^frequency_hz,order,amplitude_um$"; ok $? "spectrum header"
+python3 - "$out/spectrum.csv" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+best = max(rows[1:], key=lambda r: float(r["amplitude_um"]))
+assert abs(float(best["order"]) - 1.0) < 1e-9, best  # the mesh frequency dominates
+PY
+ok $? "the spectrum's largest line is the mesh frequency (order 1)"
+"$G" run "$SRC/cases/quickstart.ini" --out "$work/run3" --quiet --set scene.model=torsional-lr \
+    --set run.transient_periods=20 --set run.record_periods=10 --set output.response_variable=qR > /dev/null 2>&1
+ok $? "a degree of freedom as the response variable"
+head -1 "$work/run3/variable.csv" | grep -q "^t_s,qR_um,qR_rate_mps$"; ok $? "variable.csv names it"
 "$G" events "$out/events.csv" --recorded --csv "$work/ev.csv" > "$work/ev.txt"; ok $? "events exits 0"
 grep -q "impact regime:" "$work/ev.txt"; ok $? "events prints the impact regime"
 regime=$(python3 -c "import json;print(json.load(open('$out/summary.json'))['results']['impact_regime'])")
