@@ -148,6 +148,18 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: solver.order: 7 for erk (valid: 2, 3, 4, 5, 6, 8: SUNDIALS "
                             "6.4 has no 7th-order explicit table)", w);
     }
+    if (c->lyapunov_exponents > 0 && c->lyapunov_method == GD_LYAP_TANGENT && !c->root_finding) {
+        where(c, given(c, "run", "lyapunov_exponents") ? "run" : "solver",
+              given(c, "run", "lyapunov_exponents") ? "lyapunov_exponents" : "root_finding", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.lyapunov_exponents: the tangent method needs "
+                            "solver.root_finding = on, the variational equations must switch exactly at every "
+                            "contact (valid: lyapunov_exponents = 0, or lyapunov_method = two-trajectory)", w);
+    }
+    if (c->lyapunov_method == GD_LYAP_TWO_TRAJECTORY && c->lyapunov_exponents > 1) {
+        where(c, "run", "lyapunov_exponents", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.lyapunov_exponents: %d with the two-trajectory method "
+                            "(valid: 1; the tangent method gives more)", w, c->lyapunov_exponents);
+    }
     if (c->method == GD_METHOD_DIRK && !given(c, "solver", "order"))
         c->order = 4;
     if (c->table[0]) {
