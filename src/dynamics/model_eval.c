@@ -300,14 +300,17 @@ GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_
             continue;
         double ph = mesh_phase(m, j, t) / (2.0 * M_PI);
         double k = floor(ph);
-        double cand[3] = {k + x->rect_frac, k + 1.0, k + 1.0 + x->rect_frac};
-        for (int q = 0; q < 3; q++) {
-            if (cand[q] - ph <= 1e-12 * (1.0 + fabs(ph)))
-                continue;
+        double cand[4] = {k + x->rect_frac, k + 1.0, k + 1.0 + x->rect_frac, k + 2.0};
+        /* the first edge strictly after t: an edge reached a rounding ago is skipped, never
+         * the next one (an edge computed back from the phase can land on or before t) */
+        double tiny = 1e-12 * (fabs(t) + m->period);
+        for (int q = 0; q < 4; q++) {
             double tc = (2.0 * M_PI * cand[q] - x->phase) / m->Omega;
-            if (tc > t && tc < best)
-                best = tc;
-            break;
+            if (tc > t + tiny) {
+                if (tc < best)
+                    best = tc;
+                break;
+            }
         }
     }
     return best;

@@ -683,12 +683,20 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (st != GD_OK)
                 return st;
             rewound = 0;
-        } else if (flag == ARK_TSTOP_RETURN && tret == disc && disc <= t_end) {
-            for (int j = 0; j < s->m.nmesh; j++)
-                s->md.rect_level[j] = gd_model_rect_level_after(&s->m, j, tret, &s->md);
-            gd_status st = reset_at(s, tret, err);
-            if (st != GD_OK)
-                return st;
+        } else if (flag == ARK_TSTOP_RETURN) {
+            /* at any stop (an edge, or a period end that an edge shares up to rounding) the
+             * level is the one just after this time; a change is a discontinuity: reset */
+            int changed = 0;
+            for (int j = 0; j < s->m.nmesh; j++) {
+                int lv = gd_model_rect_level_after(&s->m, j, tret, &s->md);
+                changed |= lv != s->md.rect_level[j];
+                s->md.rect_level[j] = lv;
+            }
+            if (changed) {
+                gd_status st = reset_at(s, tret, err);
+                if (st != GD_OK)
+                    return st;
+            }
         }
         if (s->md.from_state) {
             gd_status st = modes_from_state(s, err);
