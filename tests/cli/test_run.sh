@@ -76,6 +76,13 @@ sel=$(grep -o "[0-9]* selected" "$work/ev.txt" | cut -d' ' -f1)
 grep -Eq "^mesh-R" "$work/ev2.txt"; [ $? -ne 0 ]; ok $? "events filter keeps one clearance"
 "$G" events "$SRC/cases/quickstart.ini" > /dev/null 2>&1; rc=$?; [ $rc -eq 2 ]; ok $? "events refuses a non-log (exit $rc)"
 
+# without gnuplot: a note, not an error, and no pictures
+env PATH=/nonexistent "$G" run "$SRC/cases/quickstart.ini" --out "$work/nogp" --set scene.model=torsional \
+    --set run.transient_periods=10 --set run.record_periods=5 > "$work/nogp.txt" 2>&1; rc=$?
+[ $rc -eq 0 ]; ok $? "without gnuplot the run still succeeds (exit $rc)"
+grep -q "note: gnuplot is not installed" "$work/nogp.txt"; ok $? "and notes it ($(tail -c 200 "$work/nogp.txt"))"
+ls "$work/nogp" | grep -q "png\|svg"; [ $? -ne 0 ]; ok $? "and draws nothing"
+
 # a failure at run time leaves nothing behind: zero torque and no damping never re-engages
 out2="$work/run2"
 "$G" run "$SRC/cases/quickstart.ini" --out "$out2" --quiet --set scene.model=torsional --set operating.torque_nm=0 \
