@@ -11,5 +11,6 @@
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_spectrum.h"
+#include "geardyn/gd_contact.h"
 
 #endif
