@@ -178,6 +178,11 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         gd_error_set(err, GD_ERR_NOMEM, "N_VNew_Serial failed");
         goto fail;
     }
+    /* fused vector operations: one pass over the short state vectors instead of several */
+    if (N_VEnableFusedOps_Serial(s->y, SUNTRUE) != 0 || N_VEnableFusedOps_Serial(s->tmp, SUNTRUE) != 0) {
+        gd_error_set(err, GD_ERR_SOLVER, "N_VEnableFusedOps_Serial failed");
+        goto fail;
+    }
     memcpy(N_VGetArrayPointer(s->y), y0, sizeof(double) * (size_t)m->n);
     if (s->k > 0) {
         s->qr = gsl_matrix_alloc((size_t)m->n, (size_t)s->k);
