@@ -12,5 +12,6 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_spectrum.h"
 #include "geardyn/gd_contact.h"
+#include "geardyn/gd_compliance.h"
 
 #endif
