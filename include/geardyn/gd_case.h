@@ -32,6 +32,12 @@ typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damp
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
+/* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
+typedef enum gd_arrangement { GD_ARR_HERRINGBONE = 0, GD_ARR_HELICAL = 1, GD_ARR_SPUR = 2 } gd_arrangement;
+typedef enum gd_hand { GD_HAND_RIGHT = 0, GD_HAND_LEFT = 1 } gd_hand;
+/* [solver] tca_formulation: (b) surface separation, (a) surface tangency, or both compared */
+typedef enum gd_tca_formulation { GD_TCA_SEPARATION = 0, GD_TCA_TANGENCY = 1, GD_TCA_BOTH = 2 } gd_tca_formulation;
+
 /* Where a resolved value came from. */
 typedef enum gd_source { GD_SRC_DEFAULT = 0, GD_SRC_FILE = 1, GD_SRC_SET = 2, GD_SRC_DERIVED = 3 } gd_source;
 
@@ -53,6 +59,14 @@ typedef struct gd_case {
     double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
     double pinion_mass_kg, gear_mass_kg, pinion_inertia_kgm2, gear_inertia_kgm2;
     double equivalent_mass_kg; /* torsional equivalent mass of one half, m_e */
+    int arrangement;         /* gd_arrangement */
+    int pinion_hand;         /* gd_hand of the pinion helix in the left half (gear and right half opposite) */
+    /* [modification] of the pinion flank (docs/geometry.md): amounts normal to the flank, profile
+     * lengths as transverse roll lengths, lead lengths along the axis */
+    double root_relief_amount_um, root_relief_length_mm, tip_relief_amount_um, tip_relief_length_mm; /* y1..y4 */
+    double lead_relief_inner_um, lead_relief_outer_um, lead_unmodified_length_mm;                 /* y5, y6, y7 */
+    /* [misalignment] of the gear axis about the middle of the gear, and centre-distance error */
+    double axis_in_plane_arcmin, axis_cross_plane_arcmin, centre_distance_error_mm;
     /* [operating] */
     double speed_rpm, torque_nm, power_kw;
     /* [clearance]: total backlash 2b and total radial bearing clearance 2*eps */
@@ -86,6 +100,9 @@ typedef struct gd_case {
     double max_step_fraction;
     double characteristic_length_um;
     int max_events_per_period;
+    int tca_profile_points, tca_face_points, tca_positions_per_cycle, tca_cycles;
+    int tca_formulation;     /* gd_tca_formulation */
+    int tca_refine;          /* refine the grid minimum to the exact minimum (Newton) */
     /* [run] */
     int transient_periods, record_periods;
     int initial_condition;   /* gd_initial */
@@ -99,6 +116,7 @@ typedef struct gd_case {
     int samples_per_period;
     int time_history, event_log, plots;
     char response_variable[32];
+    double paint_thickness_um; /* TCA contact pattern: separation below this is marked */
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */

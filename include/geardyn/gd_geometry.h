@@ -23,6 +23,14 @@ typedef struct gd_geometry {
     double b_contact;       /* common (contact) face width of one half */
     double r_sap[2];        /* start of active profile radii */
     double tip_thickness_n[2]; /* normal tooth thickness at the tip circle (arc, m) */
+    /* Transverse roll lengths rho = sqrt(r^2 - rb^2) (docs/geometry.md): tip, start of active
+     * profile, and the involute form circle (lowest point of the generated involute: below it
+     * lies the fillet). Index 0 pinion, 1 gear. */
+    double rho_a[2], rho_sap[2], rho_form[2];
+    double r_form[2];        /* involute form circle radius */
+    double psi_b[2];         /* half tooth thickness angle at the base circle, s_t/(2r) + inv(alpha_t) */
+    double eta_b[2];         /* half space width angle at the base circle, pi/z - psi_b */
+    double pbn;              /* normal base pitch p_bt cos(beta_b) */
     const char *bad_key;     /* on GD_ERR_GEOMETRY: the [gear] key most responsible */
 } gd_geometry;
 

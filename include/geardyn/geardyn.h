@@ -13,5 +13,7 @@
 #include "geardyn/gd_spectrum.h"
 #include "geardyn/gd_contact.h"
 #include "geardyn/gd_compliance.h"
+#include "geardyn/gd_flank.h"
+#include "geardyn/gd_tca.h"
 
 #endif

@@ -46,6 +46,7 @@ gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, 
 int cmd_run(int argc, char **argv);
 /* The analyses behind `run`, one file each (dir: the output directory, not yet created). */
 int run_response(const cli_case_args *a, gd_case *c, const char *dir);
+int run_tca(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 

@@ -87,7 +87,17 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
         double s_at = 2 * g->ra[i] * (s_t / (2 * g->r[i]) + gd_involute(g->alpha_t) - gd_involute(alpha_a));
         double beta_a = atan(tan(g->beta) * g->ra[i] / g->r[i]);
         g->tip_thickness_n[i] = s_at * cos(beta_a);
+        g->psi_b[i] = s_t / (2 * g->r[i]) + gd_involute(g->alpha_t);
+        g->eta_b[i] = M_PI / g->z[i] - g->psi_b[i];
+        g->rho_a[i] = ga[i];
+        g->rho_sap[i] = rho > 0 ? rho : 0;
+        /* involute form circle: the generating rack's straight flank ends h_a* m_n above its
+         * datum line (ISO 53: the rest of the rack tip is the fillet-generating radius), so the
+         * generated involute starts at the roll length r sin(alpha_t) - (h_a* - x) m_n / sin(alpha_t) */
+        g->rho_form[i] = g->r[i] * sin(g->alpha_t) - (c->addendum_coefficient - g->x[i]) * g->mn / sin(g->alpha_t);
+        g->r_form[i] = sqrt(g->rb[i] * g->rb[i] + (g->rho_form[i] > 0 ? g->rho_form[i] * g->rho_form[i] : 0));
     }
+    g->pbn = g->pbt * cos(g->beta_b);
 
     static const char *name[2] = {"pinion", "gear"};
     static const char *shift_key[2] = {"profile_shift_pinion", "profile_shift_gear"};
@@ -119,6 +129,10 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: interference: start of active profile %.4g mm lies below the root circle %.4g mm", name[i],
                 g->r_sap[i] * 1e3, g->rf[i] * 1e3);
+        if (g->rho_sap[i] < g->rho_form[i] - 1e-12)
+            return gd_error_set(err, GD_ERR_GEOMETRY,
+                "%s: interference: the mating tip reaches the fillet (start of active profile %.4g mm below the "
+                "involute form circle %.4g mm)", name[i], g->r_sap[i] * 1e3, g->r_form[i] * 1e3);
     }
     g->bad_key = "addendum_coefficient";
     if (!(g->eps_alpha >= 1.0))

@@ -1,6 +1,7 @@
 /* Resolving a case: cross-key consistency and the derived values that were not pinned. */
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_flank.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -189,6 +190,28 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
             where(c, "gear", k, w, sizeof w);
             return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.%s: bore %g mm does not fit inside the root circle "
                                 "(valid: below %.4g mm)", w, k, bore, 2e3 * g.rf[i]);
+        }
+    }
+    /* arrangement, [modification] on the pinion flank, [misalignment] (docs/geometry.md) */
+    if (c->arrangement == GD_ARR_SPUR && c->helix_angle_deg != 0) {
+        where(c, "gear", "helix_angle_deg", w, sizeof w);
+        return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.helix_angle_deg: %g with arrangement = spur (valid: 0)", w,
+                            c->helix_angle_deg);
+    }
+    const char *mkey = NULL;
+    if (gd_modification_check(c, &g, &mkey, err) != GD_OK) {
+        where(c, "modification", mkey, w, sizeof w);
+        return gd_error_prefix(err, "%s: modification.%s", w, mkey);
+    }
+    {
+        double sb = g.rb[0] + g.rb[1], aop = g.a + c->centre_distance_error_mm * 1e-3;
+        double ea = (g.rho_a[0] + g.rho_a[1] - sqrt(aop * aop - sb * sb)) / g.pbt;
+        if (ea < 1.0) {
+            double amax = sqrt(sb * sb + pow(g.rho_a[0] + g.rho_a[1] - g.pbt, 2));
+            where(c, "misalignment", "centre_distance_error_mm", w, sizeof w);
+            return gd_error_set(err, GD_ERR_GEOMETRY, "%s: misalignment.centre_distance_error_mm: transverse contact ratio "
+                                "%.4f below 1 at the operating centre distance %.6g mm (valid: below %.4g mm)", w, ea,
+                                aop * 1e3, (amax - g.a) * 1e3);
         }
     }
     double m1, i1, m2, i2;

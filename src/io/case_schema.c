@@ -55,6 +55,39 @@ static const gd_keyspec schema[] = {
     D("gear", "equivalent_mass_kg", "kg", equivalent_mass_kg, 0, 1e6, 1, 0, NAN,
       "torsional equivalent mass of one half m_e = I1 I2/(I1 rb2^2 + I2 rb1^2) (derived)"),
 
+    E("gear", "arrangement", arrangement, 0, "herringbone|helical|spur",
+      "two helical halves of opposite hand on common bodies, one helical pair, or a spur pair (helix_angle_deg = 0)"),
+    E("gear", "pinion_hand", pinion_hand, 0, "right|left",
+      "hand of the pinion helix in the left half (the right half and the gear have the opposite hand)"),
+
+    /* [modification]: pinion flank only, form-ground (docs/geometry.md). Amounts are measured normal to
+     * the flank; profile lengths are transverse roll lengths; lead lengths are axial. */
+    D("modification", "root_relief_amount_um", "um", root_relief_amount_um, 0, 1000, 0, 0, 0,
+      "y1: root relief normal to the flank at the start of active profile (parabolic)"),
+    D("modification", "root_relief_length_mm", "mm", root_relief_length_mm, 0, 1000, 0, 0, 0,
+      "y2: roll length from the start of active profile up to where the root relief ends"),
+    D("modification", "tip_relief_amount_um", "um", tip_relief_amount_um, 0, 1000, 0, 0, 0,
+      "y3: tip relief normal to the flank at the tip (parabolic)"),
+    D("modification", "tip_relief_length_mm", "mm", tip_relief_length_mm, 0, 1000, 0, 0, 0,
+      "y4: roll length from the tip down to where the tip relief ends"),
+    D("modification", "lead_relief_inner_um", "um", lead_relief_inner_um, 0, 1000, 0, 0, 0,
+      "y5: lead relief normal to the flank on the reference circle at the face end toward the groove "
+      "(herringbone) or at the -z end (helical, spur)"),
+    D("modification", "lead_relief_outer_um", "um", lead_relief_outer_um, 0, 1000, 0, 0, 0,
+      "y6: lead relief at the other face end (same measure as y5)"),
+    D("modification", "lead_unmodified_length_mm", "mm", lead_unmodified_length_mm, 0, 5000, 0, 0, 0,
+      "y7: axial length without lead relief, centred on the face of each half (0: crowned over the whole face)"),
+
+    /* [misalignment] */
+    D("misalignment", "axis_in_plane_arcmin", "arcmin", axis_in_plane_arcmin, -600, 600, 0, 0, 0,
+      "gear axis tilt in the plane of the axes, about the middle of the gear (+: the right end moves away from the pinion)"),
+    D("misalignment", "axis_cross_plane_arcmin", "arcmin", axis_cross_plane_arcmin, -600, 600, 0, 0, 0,
+      "gear axis tilt across the plane of the axes, about the middle of the gear (+: rotation about the line of "
+      "centres, the right end moves to -y); the paper's delta is the resultant of the two components"),
+    D("misalignment", "centre_distance_error_mm", "mm", centre_distance_error_mm, 0, 10, 0, 0, 0,
+      "dE: centre distance increase (the flanks have no backlash allowance: a decrease would jam the pair)"),
+
+
     /* [operating] */
     D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, 4000, "pinion (input) speed n"),
     D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque over both halves (default 500, or from power_kw)"),
@@ -116,6 +149,13 @@ static const gd_keyspec schema[] = {
     D("solver", "max_step_fraction", "", max_step_fraction, 0, 1, 1, 0, 0.1, "largest step as a fraction of the mesh period"),
     D("solver", "characteristic_length_um", "um", characteristic_length_um, 0, 1e4, 1, 0, 1.0, "length scale of the dimensionless equations"),
     I("solver", "max_events_per_period", max_events_per_period, 1, 100000000, 10000, "more events than this in one mesh period stop the run (chattering)"),
+    I("solver", "tca_profile_points", tca_profile_points, 3, 2001, 15, "TCA: grid points along the pinion profile (roll length)"),
+    I("solver", "tca_face_points", tca_face_points, 2, 2001, 21, "TCA: grid points across the face width of each half"),
+    I("solver", "tca_positions_per_cycle", tca_positions_per_cycle, 2, 100000, 32, "TCA: pinion positions per mesh cycle (one pinion pitch)"),
+    I("solver", "tca_cycles", tca_cycles, 1, 1000, 2, "TCA: mesh cycles computed"),
+    E("solver", "tca_formulation", tca_formulation, 0, "separation|tangency|both",
+      "TCA: (b) surface separation on the flank grid, (a) surface tangency and edge-contact systems, or both compared"),
+    B("solver", "tca_refine", tca_refine, 1, "TCA: refine the grid minimum of the separation to the exact minimum (Newton)"),
 
     /* [run] */
     I("run", "transient_periods", transient_periods, 0, 100000000, 300, "mesh periods discarded before recording"),
@@ -142,12 +182,15 @@ static const gd_keyspec schema[] = {
     S("output", "response_variable", response_variable, "lambda_L",
       "variable of the local analysis (time history, phase portrait, spectrum, Poincare section): lambda_L, "
       "lambda_R (mesh deflection), dte_L, dte_R, or a degree of freedom (y1L, z1L, y2L, z2L, qL, ..., q)"),
+    D("output", "paint_thickness_um", "um", paint_thickness_um, 0, 1000, 1, 0, 6.32,
+      "TCA: flank points whose separation from the mating flank stays below this form the contact pattern"),
 };
 
 GD_API int gd_analysis_available(int analysis)
 {
     switch (analysis) {
     case GD_ANALYSIS_RESPONSE:
+    case GD_ANALYSIS_TCA:
         return 1;
     default:
         return 0;

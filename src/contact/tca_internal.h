@@ -1,0 +1,112 @@
+/* Internals of the contact analysis shared by the src/contact sources (not installed). */
+#ifndef GD_TCA_INTERNAL_H
+#define GD_TCA_INTERNAL_H
+
+#include "geardyn/gd_tca.h"
+
+#include <gsl/gsl_multiroots.h>
+
+#define TCA_MAX_N 5
+
+/* Rigid map of pinion flank points (half body frame) into the gear's half frame:
+ * Q = A x + c. The gear's half frame is the gear body frame turned by pi about its axis, so that
+ * the mesh lies near polar angle 0 (away from the branch cut of atan2). */
+typedef struct tca_pose {
+    double A[9];
+    double c[3];
+} tca_pose;
+
+typedef struct tca_half {
+    gd_flank f1, f2;         /* pinion and gear flank of tooth 0 */
+    double zc;               /* axial position of the middle of the half, fixed frame */
+    double *x1;              /* pinion grid node positions, 3 per node, profile index fastest */
+    double *sep, *ease;      /* topography accumulators (min over positions), nodes */
+} tca_half;
+
+/* Gap of a pinion point and its derivatives with respect to (rho1, z1) (rho1 = rb1 u1), with the
+ * mate's radius and axial position on the gear and their derivatives. */
+typedef struct tca_local {
+    int ok;                  /* mate outside the gear base cylinder: the gap is defined */
+    double u, z;
+    double g, g_r, g_z, g_rr, g_rz, g_zz;
+    double R, R_r, R_z, R_rr, R_rz, R_zz;      /* mate radius */
+    double Z, Z_r, Z_z, Z_rr, Z_rz, Z_zz;      /* mate axial position */
+} tca_local;
+
+/* A boundary of the feasible set of pinion points, h >= 0 feasible. */
+enum {
+    TCA_C_P_ROOT = 0, TCA_C_P_TIP = 1, TCA_C_P_LO = 2, TCA_C_P_HI = 3,
+    TCA_C_G_ROOT = 4, TCA_C_G_TIP = 5, TCA_C_G_LO = 6, TCA_C_G_HI = 7, TCA_NC = 8
+};
+
+typedef int (*tca_fdf_fn)(const double *x, void *p, double *f, double *J);
+
+struct gd_tca {
+    gd_case c;               /* copy of the scalar keys (no bookkeeping arrays) */
+    gd_geometry g;
+    int halves;
+    tca_half h[2];
+    double theta1, theta2;   /* phase offsets of pinion and gear (docs/tca.md) */
+    double C[3];             /* gear centre (middle of the gear), fixed frame */
+    double M[9];             /* misalignment rotation of the gear axis */
+    double ratio;            /* z1 / z2 */
+    double tau1, tau2;       /* angular pitches */
+    double alpha_op;         /* operating transverse pressure angle of the ideal involutes */
+    int nprof, nface;
+    double *rho, *z;         /* grid node roll lengths and axial positions */
+    int maxpairs;            /* pairs the node buffers hold */
+    double *gbuf;            /* gap per node, maxpairs pairs */
+    unsigned char *fbuf;     /* feasibility per node (0 ok, else 1 + violated constraint) */
+    double *sg;              /* scratch: one slice of gaps (nprof) */
+    unsigned char *sf;       /* scratch: one slice of feasibility (nprof) */
+    int refine;
+    double tol_edge;         /* gap tolerance for ties (rad) */
+    double tol_contact;      /* gap tolerance for "in contact" (rad) */
+    gsl_multiroot_fdfsolver *solver[TCA_MAX_N + 1];
+    gsl_vector *xv[TCA_MAX_N + 1];
+    long iterations;
+    gd_tca_line_point *lines;
+    int nlines, cap_lines;
+};
+
+/* tca_pair.c: kinematics and the gap function */
+void tca_pose_at(const gd_tca *t, int half, double phi1, double phi2, int pair, tca_pose *P);
+double tca_phi2_nominal(const gd_tca *t, double phi1);
+/* order 0: g, R, Z only; 1: and first derivatives; 2: and second */
+void tca_local_eval(const gd_tca *t, int half, const tca_pose *P, double u, double z, int order, tca_local *L);
+/* constraint value h_k >= 0 feasible, and its derivatives in (rho1, z1) */
+void tca_constraint(const gd_tca *t, int half, const tca_local *L, int k, double *h, double *h_r, double *h_z,
+                    double *h_rr, double *h_rz, double *h_zz);
+/* 0 when feasible, else 1 + the first violated constraint */
+int tca_feasible(const gd_tca *t, int half, const tca_local *L, double tol);
+unsigned tca_edge_bit(int constraint);
+void tca_mat_vec(const double A[9], const double x[3], double y[3]);
+void tca_fixed_point(const gd_tca *t, int half, double phi1, int pair, const double x[3], double X[3]);
+void tca_fixed_vector(const gd_tca *t, double phi1, int pair, const double v[3], double V[3]);
+/* Gear half-frame vector -> fixed frame (no translation), and gear half-frame point -> fixed frame. */
+void tca_gear_to_fixed(const gd_tca *t, int half, double phi2, int pair, const double v[3], int is_point, double V[3]);
+/* Candidate tooth pairs for a position: [*lo, *hi]. */
+void tca_pair_range(const gd_tca *t, int half, double phi1, int *lo, int *hi);
+
+/* tca_newton.c: GSL multiroot (hybridsj, analytic Jacobian) on n <= 5 unknowns; *conv = 1 when
+ * converged to |dx| <= xtol (all unknowns in metres), 0 when it did not (no progress, bad
+ * function, iteration limit): that is an outcome, not an error. GD_ERR_GSL only for a failure of
+ * GSL itself. */
+gd_status tca_newton(gd_tca *t, int n, tca_fdf_fn fn, void *p, double *x, double xtol, int maxit, int *conv,
+                     int *iters, gd_error *err);
+
+/* tca_separation.c: formulation (b) */
+gd_status tca_separation(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);
+gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *err);
+/* exact minimum of the gap of one pair near (u0, z0): interior, edges, corners; returns the best */
+gd_status tca_refine_pair(gd_tca *t, int half, const tca_pose *P, double u0, double z0, double *u, double *z,
+                          double *g, unsigned *edge, int *iters, gd_error *err);
+
+/* tca_tangency.c: formulation (a) */
+gd_status tca_tangency(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);
+
+/* fill the geometric fields of a contact from (pair, u1, z1) and the gear rotation */
+void tca_fill_contact(const gd_tca *t, int half, double phi1, int pair, double u1, double z1, double te,
+                      gd_tca_contact *out);
+
+#endif
