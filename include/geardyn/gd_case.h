@@ -26,7 +26,10 @@ typedef enum gd_analysis {
 /* Whether this build can run an analysis (the others are named but refused, with the list). */
 GD_API int gd_analysis_available(int analysis);
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
-typedef enum gd_stiffness_kind { GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, GD_STIFF_RECTANGULAR = 2 } gd_stiffness_kind;
+typedef enum gd_stiffness_kind {
+    GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, GD_STIFF_RECTANGULAR = 2, GD_STIFF_LTCA = 3,
+    GD_STIFF_TABLE = 100 /* model level: a tabulated stiffness (from LTCA) */
+} gd_stiffness_kind;
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;

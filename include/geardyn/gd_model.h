@@ -25,6 +25,7 @@ extern "C" {
 #define GD_MAX_CLEAR 6
 #define GD_MAX_MESH 2
 #define GD_MAX_NNZ 64
+#define GD_MESH_HARMONICS 64 /* Fourier terms of a mesh stiffness (a tabulated LTCA stiffness of 128 samples) */
 
 typedef enum gd_clearance_kind { GD_CLR_MESH = 0, GD_CLR_BEARING = 1 } gd_clearance_kind;
 
@@ -41,16 +42,23 @@ typedef struct gd_clearance {
     char name[24];           /* "mesh-L", "bearing-1L", ... */
 } gd_clearance;
 
-/* Mesh excitation of one half: stiffness shape s(phase) with mean 1, and error e. */
+/* Mesh excitation of one half: stiffness shape s(phase) = mean + sum a_h cos(h phase + phi_h)
+ * (harmonic and tabulated stiffness) or a rectangular wave, the error e, and the mesh-in impact
+ * pulse. */
 typedef struct gd_mesh_excitation {
     int kind;                /* gd_stiffness_kind */
     int nh;
-    double a[GD_MAX_HARMONICS], phi[GD_MAX_HARMONICS];
+    double mean;             /* mean of s (1 for the harmonic kind; the half's mean over k_ref for a table) */
+    double a[GD_MESH_HARMONICS], phi[GD_MESH_HARMONICS];
     double rect_high, rect_low, rect_frac; /* levels relative to the mean, fraction at high */
     double phase;            /* half phase offset (rad of the mesh cycle) */
     double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
     /* precomputed: cos and sin of phi[h] and of e_phi (one sincos per evaluation) */
-    double cphi[GD_MAX_HARMONICS], sphi[GD_MAX_HARMONICS], ce, se;
+    double cphi[GD_MESH_HARMONICS], sphi[GD_MESH_HARMONICS], ce, se;
+    /* mesh-in impact (paper section 5.2): a force pulse of height imp_force (dimensionless, along
+     * the mesh normal like the mesh force) for the phases [imp_phase, imp_phase + imp_width) of
+     * every mesh cycle; imp_width = 0: none */
+    double imp_force, imp_phase, imp_width;
 } gd_mesh_excitation;
 
 typedef struct gd_nz { int i, j; double v; } gd_nz;
@@ -102,6 +110,7 @@ GD_API void gd_model_custom(gd_model *m, const gd_custom_system *sys, double per
 typedef struct gd_modes {
     int mode[GD_MAX_CLEAR];  /* -1, 0, +1 */
     int rect_level[GD_MAX_MESH]; /* 1 high, 0 low (rectangular stiffness) */
+    int pulse_on[GD_MAX_MESH];   /* 1 while the mesh-in impact pulse of mesh j acts */
     int from_state;          /* 1: modes follow the state at every call (root finding off) */
 } gd_modes;
 
@@ -140,6 +149,18 @@ GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const do
 GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md);
 /* Level (1 high / 0 low) of the rectangular stiffness of mesh j just after time t. */
 GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const gd_modes *md);
+/* The impact pulse force of mesh j at time t (dimensionless; 0 when off). */
+GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md);
+/* Whether the impact pulse of mesh j acts just after time t. */
+GD_API int gd_model_pulse_after(const gd_model *m, int j, double t);
+/* A tabulated mesh stiffness of mesh j: n samples k_i (N/m) equally spaced over one mesh cycle
+ * from mesh phase 0, turned into its trigonometric interpolant (GSL real FFT; n even, at most
+ * 2 GD_MESH_HARMONICS): a smooth periodic function through every sample. */
+GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *k_n_per_m, int n, gd_error *err);
+/* The mesh-in impact of mesh j: a pulse of force_n (N, along the mesh normal) starting at mesh
+ * phase phase_rad of every cycle and lasting duration_s. */
+GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
+                                     gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -75,6 +75,7 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         gd_mesh_excitation *x = &m->mesh[s];
         x->kind = c->stiffness;
         x->nh = c->stiffness == GD_STIFF_HARMONIC ? c->n_stiffness_harmonics : 0;
+        x->mean = 1.0;
         for (int j = 0; j < x->nh; j++) {
             x->a[j] = c->stiffness_harmonics[j];
             x->phi[j] = j < c->n_stiffness_phases ? c->stiffness_phases_deg[j] * deg : 0.0;

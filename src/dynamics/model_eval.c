@@ -3,6 +3,7 @@
 #include "geardyn/gd_model.h"
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_fft_real.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
 #include <string.h>
@@ -26,8 +27,8 @@ static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes 
     double s1, c1;
     sincos(th, &s1, &c1);
     if (kf) {
-        if (x->kind == GD_STIFF_HARMONIC) {
-            double sk = s1, ck = c1, k = 1.0;
+        if (x->kind == GD_STIFF_HARMONIC || x->kind == GD_STIFF_TABLE) {
+            double sk = s1, ck = c1, k = x->mean;
             for (int h = 0; h < x->nh; h++) {
                 k += x->a[h] * (ck * x->cphi[h] - sk * x->sphi[h]);
                 double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
@@ -54,8 +55,9 @@ GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_mo
 {
     const gd_mesh_excitation *x = &m->mesh[j];
     switch (x->kind) {
-    case GD_STIFF_HARMONIC: {
-        double ph = mesh_phase(m, j, t), s = 1.0;
+    case GD_STIFF_HARMONIC:
+    case GD_STIFF_TABLE: {
+        double ph = mesh_phase(m, j, t), s = x->mean;
         for (int h = 0; h < x->nh; h++)
             s += x->a[h] * cos((h + 1) * ph + x->phi[h]);
         return s;
@@ -181,6 +183,30 @@ GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const
         da[i] *= m->inv_mass[i];
 }
 
+static inline int pulse_at(const gd_mesh_excitation *x, double th)
+{
+    if (!(x->imp_width > 0))
+        return 0;
+    double f = (th - x->imp_phase) / (2.0 * M_PI);
+    f -= floor(f);
+    return f * 2.0 * M_PI < x->imp_width;
+}
+
+GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    if (!(x->imp_width > 0))
+        return 0.0;
+    int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
+    return on ? x->imp_force : 0.0;
+}
+
+GD_API int gd_model_pulse_after(const gd_model *m, int j, double t)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    return pulse_at(x, mesh_phase(m, j, t) + 1e-9);
+}
+
 GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md)
 {
     if (m->custom) {
@@ -213,6 +239,8 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
         }
         int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
         double f = clear_force(m, c, x, xd, kfac, mode);
+        if (cl->kind == GD_CLR_MESH)
+            f += gd_model_pulse_force(m, cl->mesh, t, md);
         for (int q = 0; q < cl->nw; q++)
             a[cl->widx[q]] -= cl->wval[q] * f;
     }
@@ -290,27 +318,36 @@ GD_API double gd_model_energy(const gd_model *m, double t, const double *y, cons
     return E;
 }
 
+/* first edge of a periodic on/off pattern (edges at fractions e0, e1 of the cycle) strictly after
+ * t, or +inf */
+static double next_edge(const gd_model *m, int j, double t, double e0, double e1)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    double ph = (m->Omega * t + x->phase) / (2.0 * M_PI);
+    double k = floor(ph), tiny = 1e-12 * (fabs(t) + m->period), best = INFINITY;
+    for (int cyc = -1; cyc <= 2; cyc++) {
+        double cand[2] = {k + cyc + e0, k + cyc + e1};
+        for (int q = 0; q < 2; q++) {
+            /* the edge computed back from the phase can land on or before t: skip it, never the next */
+            double tc = (2.0 * M_PI * cand[q] - x->phase) / m->Omega;
+            if (tc > t + tiny && tc < best)
+                best = tc;
+        }
+    }
+    return best;
+}
+
 GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md)
 {
     (void)md;
     double best = INFINITY;
     for (int j = 0; j < m->nmesh; j++) {
         const gd_mesh_excitation *x = &m->mesh[j];
-        if (x->kind != GD_STIFF_RECTANGULAR)
-            continue;
-        double ph = mesh_phase(m, j, t) / (2.0 * M_PI);
-        double k = floor(ph);
-        double cand[4] = {k + x->rect_frac, k + 1.0, k + 1.0 + x->rect_frac, k + 2.0};
-        /* the first edge strictly after t: an edge reached a rounding ago is skipped, never
-         * the next one (an edge computed back from the phase can land on or before t) */
-        double tiny = 1e-12 * (fabs(t) + m->period);
-        for (int q = 0; q < 4; q++) {
-            double tc = (2.0 * M_PI * cand[q] - x->phase) / m->Omega;
-            if (tc > t + tiny) {
-                if (tc < best)
-                    best = tc;
-                break;
-            }
+        if (x->kind == GD_STIFF_RECTANGULAR)
+            best = fmin(best, next_edge(m, j, t, 0.0, x->rect_frac));
+        if (x->imp_width > 0) {
+            double e0 = x->imp_phase / (2.0 * M_PI);
+            best = fmin(best, next_edge(m, j, t, e0 - floor(e0), e0 - floor(e0) + x->imp_width / (2.0 * M_PI)));
         }
     }
     return best;
@@ -455,5 +492,57 @@ GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const do
     }
     md->from_state = from_state;
     (void)err;
+    return GD_OK;
+}
+
+GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *k, int n, gd_error *err)
+{
+    if (j < 0 || j >= m->nmesh)
+        return gd_error_set(err, GD_ERR_INTERNAL, "stiffness table for mesh %d of %d", j, m->nmesh);
+    if (n < 2 || n % 2 || n > 2 * GD_MESH_HARMONICS)
+        return gd_error_set(err, GD_ERR_INPUT, "stiffness table of %d samples (valid: even, 2 to %d)", n,
+                            2 * GD_MESH_HARMONICS);
+    double buf[2 * GD_MESH_HARMONICS];
+    for (int i = 0; i < n; i++) {
+        if (!(k[i] > 0) || !isfinite(k[i]))
+            return gd_error_set(err, GD_ERR_PHYSICS, "stiffness table of mesh %d: sample %d is %g N/m (valid: positive)",
+                                j, i, k[i]);
+        buf[i] = k[i] / m->k_ref;
+    }
+    gsl_fft_real_wavetable *tab = gsl_fft_real_wavetable_alloc((size_t)n);
+    gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc((size_t)n);
+    int rc = (tab && ws) ? gsl_fft_real_transform(buf, 1, (size_t)n, tab, ws) : GSL_ENOMEM;
+    gsl_fft_real_wavetable_free(tab);
+    gsl_fft_real_workspace_free(ws);
+    if (rc != GSL_SUCCESS)
+        return gd_error_set(err, GD_ERR_GSL, "stiffness table: gsl_fft_real_transform: %s", gsl_strerror(rc));
+    gd_mesh_excitation *x = &m->mesh[j];
+    x->kind = GD_STIFF_TABLE;
+    x->mean = buf[0] / n;
+    x->nh = n / 2;
+    for (int h = 1; h <= n / 2; h++) {
+        double re = 2 * h == n ? buf[n - 1] : buf[2 * h - 1], im = 2 * h == n ? 0.0 : buf[2 * h];
+        double scale = 2 * h == n ? 1.0 / n : 2.0 / n; /* the Nyquist term appears once */
+        x->a[h - 1] = scale * sqrt(re * re + im * im);
+        x->phi[h - 1] = atan2(im, re); /* Re(X e^{i h th}) = |X| cos(h th + arg X) */
+        x->cphi[h - 1] = cos(x->phi[h - 1]);
+        x->sphi[h - 1] = sin(x->phi[h - 1]);
+    }
+    return GD_OK;
+}
+
+GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
+                                     gd_error *err)
+{
+    if (j < 0 || j >= m->nmesh)
+        return gd_error_set(err, GD_ERR_INTERNAL, "impact for mesh %d of %d", j, m->nmesh);
+    double width = duration_s * m->omega_n * m->Omega; /* seconds -> radians of mesh phase */
+    if (!(width >= 0) || width >= 2.0 * M_PI || !isfinite(force_n))
+        return gd_error_set(err, GD_ERR_PHYSICS, "impact pulse of %g s at %g N: it must last less than a mesh period "
+                            "(%g s)", duration_s, force_n, 2.0 * M_PI / (m->omega_n * m->Omega));
+    gd_mesh_excitation *x = &m->mesh[j];
+    x->imp_force = force_n / (m->k_ref * m->bc_m) * (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
+    x->imp_phase = phase_rad - 2.0 * M_PI * floor(phase_rad / (2.0 * M_PI));
+    x->imp_width = width;
     return GD_OK;
 }

@@ -268,6 +268,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     }
     for (int j = 0; j < m->nmesh; j++) {
         s->md.rect_level[j] = gd_model_rect_level_after(m, j, 0.0, &s->md);
+        s->md.pulse_on[j] = gd_model_pulse_after(m, j, 0.0);
         s->was_open[j] = s->md.mode[m->mesh_clear[j]] == 0;
     }
     memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
@@ -694,8 +695,10 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             int changed = 0;
             for (int j = 0; j < s->m.nmesh; j++) {
                 int lv = gd_model_rect_level_after(&s->m, j, tret, &s->md);
-                changed |= lv != s->md.rect_level[j];
+                int pv = gd_model_pulse_after(&s->m, j, tret);
+                changed |= lv != s->md.rect_level[j] || pv != s->md.pulse_on[j];
                 s->md.rect_level[j] = lv;
+                s->md.pulse_on[j] = pv;
             }
             if (changed) {
                 gd_status st = reset_at(s, tret, err);
