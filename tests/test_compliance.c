@@ -68,6 +68,11 @@ int main(void)
         gd_tooth tp, tg;
         gd_tooth_init(&c, &g, 0, &tp, &e);
         gd_tooth_init(&c, &g, 1, &tg, &e);
+        gd_load_point tipg, tipp;
+        gd_load_point_at(&tg, g.ra[1], &tipg);
+        gd_load_point_at(&tp, g.ra[0], &tipp);
+        tap_ok(isfinite(gd_tooth_influence(&tg, &tipg, &tipg)) && isfinite(gd_tooth_influence(&tp, &tipp, &tipp)),
+               "loads at the tip radii are inside the tables");
         gd_load_point pp, pg;
         gd_load_point_at(&tp, g.rw[0], &pp);
         gd_load_point_at(&tg, g.rw[1], &pg);

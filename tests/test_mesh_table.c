@@ -93,6 +93,7 @@ int main(void)
     gd_case_free(&ch);
 
     /* 2. impact pulses on the linear oscillator (constant stiffness, no clearance reached) */
+    gd_case_free(&c);
     au_ks_case(&c, &m, 0.0, 0.05, 20.0, 0.0, 1.5, extra);
     double Fimp = 3.0, d = 0.15; /* dimensionless height (K&S units of one half), fraction of the period */
     double T = m.period, phase = 1.0;

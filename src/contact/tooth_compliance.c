@@ -165,8 +165,11 @@ GD_API void gd_load_point_at(const gd_tooth *t, double r, gd_load_point *p)
 
 static double F(const gd_tooth *t, int w, double r)
 {
-    r = fmin(fmax(r, t->r0), t->r1);
-    return gsl_spline_eval((gsl_spline *)t->spline[w], r, (gsl_interp_accel *)t->acc[w]);
+    /* clamp to the table's own range: its last node can round just below the tip radius, and an
+     * evaluation outside would go to GSL's error handler */
+    const gsl_spline *sp = t->spline[w];
+    r = fmin(fmax(r, sp->interp->xmin), sp->interp->xmax);
+    return gsl_spline_eval(sp, r, (gsl_interp_accel *)t->acc[w]);
 }
 
 /* Maxwell-Betti: int M_j M_k / (E' I) + 1.2 V_j V_k / (G A) + N_j N_k / (E' A) dx from the root to
