@@ -33,6 +33,8 @@ typedef enum gd_stiffness_kind {
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
+/* [support] pinion_axial: LTCA with an axially floating pinion (equal axial forces on the halves) or a fixed one */
+typedef enum gd_pinion_axial { GD_PINION_FLOATING = 0, GD_PINION_FIXED = 1 } gd_pinion_axial;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
@@ -91,6 +93,7 @@ typedef struct gd_case {
     double radial_stiffness_pinion_n_per_m, radial_stiffness_gear_n_per_m;
     double axial_stiffness_pinion_n_per_m, axial_stiffness_gear_n_per_m;
     double shaft_stiffness_pinion_n_per_m, shaft_stiffness_gear_n_per_m; /* groove shafts, axial */
+    int pinion_axial;        /* gd_pinion_axial (LTCA) */
     /* [solver] */
     int method;              /* gd_method */
     int order;
@@ -106,6 +109,7 @@ typedef struct gd_case {
     int tca_profile_points, tca_face_points, tca_positions_per_cycle, tca_cycles;
     int tca_formulation;     /* gd_tca_formulation */
     int tca_refine;          /* refine the grid minimum to the exact minimum (Newton) */
+    int ltca_positions_per_cycle, ltca_face_slices; /* LTCA discretisation */
     /* [run] */
     int transient_periods, record_periods;
     int initial_condition;   /* gd_initial */

@@ -15,5 +15,6 @@
 #include "geardyn/gd_compliance.h"
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_tca.h"
+#include "geardyn/gd_ltca.h"
 
 #endif

@@ -47,6 +47,7 @@ int cmd_run(int argc, char **argv);
 /* The analyses behind `run`, one file each (dir: the output directory, not yet created). */
 int run_response(const cli_case_args *a, gd_case *c, const char *dir);
 int run_tca(const cli_case_args *a, gd_case *c, const char *dir);
+int run_ltca(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 

@@ -242,5 +242,11 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
                                 (1 - d) / d);
         }
     }
+    if (c->analysis == GD_ANALYSIS_LTCA && !(c->torque_nm > 0)) {
+        const char *k = given(c, "operating", "power_kw") ? "power_kw" : "torque_nm";
+        where(c, "operating", k, w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: operating.%s: a pinion torque of %g N m for LTCA (valid: > 0, "
+                            "the loaded contact needs a load)", w, k, c->torque_nm);
+    }
     return GD_OK;
 }

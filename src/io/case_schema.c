@@ -135,6 +135,8 @@ static const gd_keyspec schema[] = {
       "axial stiffness of the pinion groove shaft (derived: E A / groove width, root circle section)"),
     D("support", "shaft_stiffness_gear_n_per_m", "N/m", shaft_stiffness_gear_n_per_m, 0, 1e14, 1, 0, NAN,
       "axial stiffness of the gear groove shaft (derived likewise)"),
+    E("support", "pinion_axial", pinion_axial, 0, "floating|fixed",
+      "LTCA: herringbone pinion axially floating (the halves carry equal axial forces) or axially fixed"),
 
     /* [solver] */
     E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),
@@ -156,6 +158,10 @@ static const gd_keyspec schema[] = {
     E("solver", "tca_formulation", tca_formulation, 0, "separation|tangency|both",
       "TCA: (b) surface separation on the flank grid, (a) surface tangency and edge-contact systems, or both compared"),
     B("solver", "tca_refine", tca_refine, 1, "TCA: refine the grid minimum of the separation to the exact minimum (Newton)"),
+    I("solver", "ltca_positions_per_cycle", ltca_positions_per_cycle, 2, 100000, 32,
+      "LTCA: pinion positions per mesh cycle (one cycle is computed)"),
+    I("solver", "ltca_face_slices", ltca_face_slices, 3, 1001, 21,
+      "LTCA: transverse slices across the face of each half (one contact point per tooth pair and slice)"),
 
     /* [run] */
     I("run", "transient_periods", transient_periods, 0, 100000000, 300, "mesh periods discarded before recording"),
@@ -191,6 +197,7 @@ GD_API int gd_analysis_available(int analysis)
     switch (analysis) {
     case GD_ANALYSIS_RESPONSE:
     case GD_ANALYSIS_TCA:
+    case GD_ANALYSIS_LTCA:
         return 1;
     default:
         return 0;

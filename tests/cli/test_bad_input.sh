@@ -52,7 +52,7 @@ teeth_pinion = 12
 helix_angle_deg = 0
 profile_shift_pinion = 1.2" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
 check_bad "[scene]
-analysis = ltca" "case.ini:2: scene.analysis: 'ltca' is not available in this version of geardyn \\(valid: response(, [a-z-]+)*\\)" "analysis not yet available"
+analysis = optimize" "case.ini:2: scene.analysis: 'optimize' is not available in this version of geardyn \\(valid: response(, [a-z-]+)*\\)" "analysis not yet available"
 check_bad "[scene]
 model = torsional
 [output]
