@@ -86,6 +86,8 @@ typedef struct gd_case {
     double ste_amplitude_um, ste_mean_um, ste_phase_deg;
     double base_pitch_deviation_um, profile_deviation_um;
     double half_phase_deg;   /* mesh phase of the right half relative to the left */
+    int impact;              /* mesh-in impact from LTCA */
+    double impact_exponent;
     /* [damping] */
     double mesh_damping_ratio, support_damping_ratio, shaft_damping_ratio;
     int mesh_damping_mode;   /* gd_damping_mode */

@@ -16,5 +16,6 @@
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"
+#include "geardyn/gd_excitation.h"
 
 #endif

@@ -1,5 +1,6 @@
 /* Building the dimensionless model (torsional, torsional-lr, bta) from a resolved case. */
 #include "geardyn/gd_model.h"
+#include "geardyn/gd_excitation.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -211,9 +212,9 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         m->nclear = nclr;
     }
     m->n = 2 * m->ndof;
-    m->dte_scale = cb;
-    m->force_share = c->model == GD_MODEL_TORSIONAL ? 0.5 : 1.0;
     for (int i = 0; i < m->ndof; i++)
         m->inv_mass[i] = 1.0 / m->mass[i];
-    return GD_OK;
+    m->dte_scale = cb;
+    m->force_share = c->model == GD_MODEL_TORSIONAL ? 0.5 : 1.0;
+    return gd_model_apply_ltca(c, m, err);
 }

@@ -2,6 +2,7 @@
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_flank.h"
+#include "geardyn/gd_excitation.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -224,7 +225,28 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
     double I1 = c->pinion_inertia_kgm2, I2 = c->gear_inertia_kgm2;
     derive(c, "gear", "equivalent_mass_kg", &c->equivalent_mass_kg,
            I1 * I2 / (I1 * g.rb[1] * g.rb[1] + I2 * g.rb[0] * g.rb[0]));
-    derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, &g));
+    if (c->stiffness == GD_STIFF_LTCA || c->impact) {
+        const char *k = c->stiffness == GD_STIFF_LTCA ? "stiffness" : "impact";
+        if (!(c->torque_nm > 0)) {
+            where(c, "excitation", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: LTCA needs a load, the torque is %g N m "
+                                "(valid: operating.torque_nm > 0)", w, k, c->torque_nm);
+        }
+        if (c->stiffness == GD_STIFF_LTCA && c->half_phase_deg != 0.0) {
+            where(c, "excitation", "half_phase_deg", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with stiffness = ltca (valid: 0; "
+                                "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
+        }
+        const gd_ltca_excitation *x;
+        gd_status sx = gd_ltca_excitation_cached(c, &x, err);
+        if (sx != GD_OK)
+            return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
+        if (c->stiffness == GD_STIFF_LTCA)
+            derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m,
+                   x->halves > 1 && x->k[1] ? 0.5 * (x->k_mean[0] + x->k_mean[1]) : x->k_mean[0]);
+    }
+    if (c->stiffness != GD_STIFF_LTCA)
+        derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, &g));
     derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
            gd_groove_shaft_stiffness(c, &g, 0));
     derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,

@@ -98,7 +98,11 @@ static const gd_keyspec schema[] = {
     D("clearance", "bearing_clearance_um", "um", bearing_clearance_um, 0, 5000, 0, 0, 5, "total radial clearance 2*eps of every bearing"),
 
     /* [excitation] */
-    E("excitation", "stiffness", stiffness, 1, "constant|harmonic|rectangular", "mesh stiffness k(t) of each half"),
+    E("excitation", "stiffness", stiffness, 1, "constant|harmonic|rectangular|ltca",
+      "mesh stiffness k(t) of each half (ltca: from loaded tooth contact analysis, docs/ltca.md)"),
+    B("excitation", "impact", impact, 0, "mesh-in impact force from LTCA, once per mesh period per half (paper section 5.2)"),
+    D("excitation", "impact_exponent", "", impact_exponent, 1, 3, 0, 0, 1,
+      "exponent n of the impact contact law F = c delta^n (1: linear, F_s = v_s sqrt(m_e k_s))"),
     D("excitation", "mesh_stiffness_n_per_m", "N/m", mesh_stiffness_n_per_m, 0, 1e12, 1, 0, NAN,
       "mean mesh stiffness of one half (derived: ISO 6336-1 c_gamma_alpha times face width)"),
     L("excitation", "stiffness_harmonics", "", stiffness_harmonics, n_stiffness_harmonics, 0, 0.95,
