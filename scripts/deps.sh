@@ -3,7 +3,7 @@
 # Sourced by scripts/quickstart.sh and scripts/test.sh; safe to run again.
 set -euo pipefail
 GD_PACKAGES=(gcc pkg-config meson ninja-build cmake python3 libsundials-dev libgsl-dev libnlopt-dev
-             libinih-dev libjansson-dev gnuplot-nox)
+             libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${GD_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

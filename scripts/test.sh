@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install what is missing, build geardyn twice (normal with -Werror, and with ASan+UBSan),
-# run the test suite in both, check that every exported symbol has the gd_ prefix, and
-# end with the line "N passed, N failed".
+# run the test suite in both, check that every exported symbol has the gd_ prefix, build a
+# third time with Open MPI and run the sweep suite there (2 MPI ranks), and end with the
+# line "N passed, N failed".
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh || { echo "0 passed, 1 failed"; exit 1; }
@@ -57,6 +58,11 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktra
 TEST_ARGS=(--timeout-multiplier 4)
 build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
     -Dwerror=true
+
+echo "== build with Open MPI (-Dmpi=enabled) and run the sweep suite (its MPI test runs 2 ranks)"
+unset ASAN_OPTIONS UBSAN_OPTIONS
+TEST_ARGS=(--suite sweep)
+build_and_test build-mpi -Dmpi=enabled -Dbuildtype=debugoptimized -Dwerror=true
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

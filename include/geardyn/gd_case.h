@@ -33,15 +33,14 @@ typedef enum gd_stiffness_kind {
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
-/* [support] pinion_axial: LTCA with an axially floating pinion (equal axial forces on the halves) or a fixed one */
-typedef enum gd_pinion_axial { GD_PINION_FLOATING = 0, GD_PINION_FIXED = 1 } gd_pinion_axial;
-typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
-
 /* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
 typedef enum gd_arrangement { GD_ARR_HERRINGBONE = 0, GD_ARR_HELICAL = 1, GD_ARR_SPUR = 2 } gd_arrangement;
 typedef enum gd_hand { GD_HAND_RIGHT = 0, GD_HAND_LEFT = 1 } gd_hand;
 /* [solver] tca_formulation: (b) surface separation, (a) surface tangency, or both compared */
 typedef enum gd_tca_formulation { GD_TCA_SEPARATION = 0, GD_TCA_TANGENCY = 1, GD_TCA_BOTH = 2 } gd_tca_formulation;
+/* [support] pinion_axial: LTCA with an axially floating pinion (equal axial forces on the halves) or a fixed one */
+typedef enum gd_pinion_axial { GD_PINION_FLOATING = 0, GD_PINION_FIXED = 1 } gd_pinion_axial;
+typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
 typedef enum gd_source { GD_SRC_DEFAULT = 0, GD_SRC_FILE = 1, GD_SRC_SET = 2, GD_SRC_DERIVED = 3 } gd_source;
@@ -125,7 +124,30 @@ typedef struct gd_case {
     int samples_per_period;
     int time_history, event_log, plots;
     char response_variable[32];
+    /* [sweep] (analysis = sweep; gd_sweep.h): parameter and parameter2 are "section.key" */
+    char sweep_parameter[256], sweep_parameter2[256];
+    double sweep_from, sweep_to, sweep_from2, sweep_to2; /* in the unit of the swept key */
+    int sweep_points, sweep_points2;
+    int sweep_spacing, sweep_spacing2; /* gd_sweep_spacing */
+    int sweep_mode;          /* gd_sweep_mode */
+    int sweep_direction;     /* gd_sweep_direction */
+    char sweep_response[256]; /* Poincare responses, comma-separated ("": lambda_L, lambda_R) */
     double paint_thickness_um; /* TCA contact pattern: separation below this is marked */
+
+    /* [workprecision] (analysis = work-precision; gd_workprec.h, docs/accuracy.md) */
+    char wp_families[256];   /* comma-separated: rk4, erk2..erk8, dirk2..dirk5 */
+    int wp_root_finding_off; /* also run every family with root finding off */
+    int wp_rk4_steps_min, wp_rk4_steps_max;
+    double wp_rtol_loosest, wp_rtol_tightest;
+    int wp_rtols_per_decade;
+    double wp_atol_over_rtol;
+    double wp_reference_rtol, wp_reference_max_error, wp_reference_max_step_fraction;
+    int wp_reference_order, wp_check_order;
+    int wp_horizon_periods;
+    int wp_order_study, wp_order_steps_min, wp_order_steps_max;
+    int wp_repeats, wp_max_steps_per_period;
+    int wp_lyapunov;
+    int wp_scene_class;      /* gd_wp_class */
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */

@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
@@ -33,6 +34,18 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
             a->out_dir = argv[++i];
         } else if (allow_out && strcmp(s, "--quiet") == 0) {
             a->quiet = 1;
+        } else if (allow_out && strcmp(s, "--resume") == 0) {
+            a->resume = 1;
+        } else if (allow_out && (strcmp(s, "--threads") == 0 || strncmp(s, "--threads=", 10) == 0)) {
+            const char *v = s[9] == '=' ? s + 10 : i + 1 < argc ? argv[++i] : NULL;
+            char *end = NULL;
+            long t = v ? strtol(v, &end, 10) : 0;
+            if (!v || !*v || *end || t < 1 || t > 4096) {
+                fprintf(stderr, "geardyn: --threads needs a whole number from 1 to 4096%s%s%s\n", v ? " (got '" : "",
+                        v ? v : "", v ? "')" : "");
+                return 2;
+            }
+            a->threads = (int)t;
         } else if (s[0] == '-' && s[1] != '\0') {
             fprintf(stderr, "geardyn: unknown option '%s' (see geardyn --help)\n", s);
             return 2;

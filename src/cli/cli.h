@@ -12,6 +12,8 @@ typedef struct cli_case_args {
     int nsets;
     const char *out_dir;
     int quiet;
+    int resume;              /* run: --resume (sweeps) */
+    int threads;             /* run: --threads N (0: the OpenMP default) */
 } cli_case_args;
 
 /* Parse CASE [--set s.k=v ...] [--out DIR] [--quiet]; returns 0 or the exit status. */
@@ -48,6 +50,8 @@ int cmd_run(int argc, char **argv);
 int run_response(const cli_case_args *a, gd_case *c, const char *dir);
 int run_tca(const cli_case_args *a, gd_case *c, const char *dir);
 int run_ltca(const cli_case_args *a, gd_case *c, const char *dir);
+int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
+int run_work_precision(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 

@@ -34,8 +34,10 @@ int cmd_run(int argc, char **argv)
     else
         default_out_dir(a.case_path, dir, sizeof dir);
     switch (c.analysis) {
+    case GD_ANALYSIS_SWEEP: rc = run_sweep(&a, &c, dir); break;
     case GD_ANALYSIS_TCA: rc = run_tca(&a, &c, dir); break;
     case GD_ANALYSIS_LTCA: rc = run_ltca(&a, &c, dir); break;
+    case GD_ANALYSIS_WORK_PRECISION: rc = run_work_precision(&a, &c, dir); break;
     case GD_ANALYSIS_RESPONSE:
     default:
         rc = run_response(&a, &c, dir);

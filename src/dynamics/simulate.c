@@ -58,6 +58,7 @@ struct gd_sim {
     long extra_rhs, jac_calls, resets, grazing_suspects, grazing_rewinds;
     long events, by_kind[GD_EV_NKINDS], by_clear[GD_MAX_CLEAR];
     char sunmsg[512];
+    int nonfinite;           /* a root function met a non-finite state */
 };
 
 GD_API const char *gd_event_kind_name(int kind)
@@ -101,6 +102,13 @@ static int root_fn(realtype t, N_Vector y, realtype *g, void *user)
     gd_sim *s = user;
     gd_model_roots(&s->m, t, N_VGetArrayPointer(y), g, &s->md);
     s->nroot_evals++;
+    /* a solution gone NaN or infinite inside a step (an unstable fixed step) would send
+     * ARKODE's root search around for ever: fail the step instead */
+    for (int i = 0; i < s->nroots; i++)
+        if (!isfinite(g[i])) {
+            s->nonfinite = 1;
+            return -1;
+        }
     return 0;
 }
 
@@ -605,6 +613,39 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
     return reset_at(s, s->t, err);
 }
 
+/* Root finding on, after a step that ended without a root: a held mode the state has left by
+ * more than 1e-6 (1 + h) is a crossing the root finding could not see. It happens at a grazing
+ * contact: a separation located exactly on the boundary restarts its root function at exactly
+ * zero, ARKODE deactivates it, and a return to contact within the first instants of the next
+ * step is never reported; the teeth would then pass through each other without force. The mode
+ * is switched at the step end and the event logged as not located (located = 0). The threshold
+ * is far above the distance (about 1e-8) a refined event state may lie on the old side of its
+ * boundary, and far below any physical length. */
+static gd_status repair_held_modes(gd_sim *s, gd_error *err)
+{
+    const double *y = N_VGetArrayPointer(s->y);
+    int changed = 0;
+    for (int c = 0; c < s->m.nclear; c++) {
+        double x, xd, h = s->m.clear[c].h;
+        gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &xd);
+        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        if (nw == old)
+            continue;
+        /* distance past the boundary of the region the held mode allows */
+        double past = old > 0 ? h - x : old < 0 ? x + h : fabs(x) - h;
+        if (!(past > 1e-6 * (1.0 + fabs(h))))
+            continue;
+        if (s->k > 0)
+            saltation(s, c, nw);
+        s->md.mode[c] = nw;
+        changed = 1;
+        gd_status st = record_event(s, c, old, nw, nw > old ? 1 : -1, 0, err);
+        if (st != GD_OK)
+            return st;
+    }
+    return changed ? reset_at(s, s->t, err) : GD_OK;
+}
+
 /* Root finding off: the modes follow the state; a change between two step ends is
  * reported as an event at the step end (not located, as a fixed-step user would see it). */
 static gd_status modes_from_state(gd_sim *s, gd_error *err)
@@ -645,6 +686,9 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         double tret = t0;
         s->sunmsg[0] = '\0';
         flag = s->ops->evolve(s->mem, tstop, s->y, &tret, ARK_ONE_STEP);
+        if (flag < 0 && s->nonfinite)
+            return gd_error_set(err, GD_ERR_SOLVER, "the solution became NaN or infinite at t = %.9g mesh periods",
+                                abs_time(s, t0) / s->m.period);
         if (flag < 0) {
             sun_check(s, flag, "Evolve", err);
             return gd_error_prefix(err, "at t = %.9g mesh periods", abs_time(s, t0) / s->m.period);
@@ -708,6 +752,10 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         }
         if (s->md.from_state) {
             gd_status st = modes_from_state(s, err);
+            if (st != GD_OK)
+                return st;
+        } else if (s->nroots && flag != ARK_ROOT_RETURN) {
+            gd_status st = repair_held_modes(s, err);
             if (st != GD_OK)
                 return st;
         }

@@ -3,6 +3,8 @@
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_excitation.h"
+#include "geardyn/gd_sweep.h"
+#include "geardyn/gd_workprec.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -270,5 +272,10 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.%s: a pinion torque of %g N m for LTCA (valid: > 0, "
                             "the loaded contact needs a load)", w, k, c->torque_nm);
     }
+    /* [sweep]: the swept keys and every value of the grid */
+    if (c->analysis == GD_ANALYSIS_SWEEP)
+        return gd_sweep_check_case(c, err);
+    if (c->analysis == GD_ANALYSIS_WORK_PRECISION && gd_workprec_check_case(c, err) != GD_OK)
+        return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
     return GD_OK;
 }

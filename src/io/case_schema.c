@@ -54,7 +54,6 @@ static const gd_keyspec schema[] = {
     D("gear", "gear_inertia_kgm2", "kg m^2", gear_inertia_kgm2, 0, 1e6, 1, 0, NAN, "polar inertia of one gear half (derived)"),
     D("gear", "equivalent_mass_kg", "kg", equivalent_mass_kg, 0, 1e6, 1, 0, NAN,
       "torsional equivalent mass of one half m_e = I1 I2/(I1 rb2^2 + I2 rb1^2) (derived)"),
-
     E("gear", "arrangement", arrangement, 0, "herringbone|helical|spur",
       "two helical halves of opposite hand on common bodies, one helical pair, or a spur pair (helix_angle_deg = 0)"),
     E("gear", "pinion_hand", pinion_hand, 0, "right|left",
@@ -194,6 +193,61 @@ static const gd_keyspec schema[] = {
       "lambda_R (mesh deflection), dte_L, dte_R, or a degree of freedom (y1L, z1L, y2L, z2L, qL, ..., q)"),
     D("output", "paint_thickness_um", "um", paint_thickness_um, 0, 1000, 1, 0, 6.32,
       "TCA: flank points whose separation from the mating flank stays below this form the contact pattern"),
+
+    /* [sweep] (analysis = sweep; docs/sweeps.md) */
+    S("sweep", "parameter", sweep_parameter, "", "swept numeric key, section.key (e.g. operating.speed_rpm)"),
+    D("sweep", "from", "", sweep_from, -1e30, 1e30, 0, 0, NAN, "first value, in the unit of the swept key"),
+    D("sweep", "to", "", sweep_to, -1e30, 1e30, 0, 0, NAN, "last value, in the unit of the swept key"),
+    I("sweep", "points", sweep_points, 1, 100000, 41, "number of values from `from` to `to`, both included"),
+    E("sweep", "spacing", sweep_spacing, 0, "linear|log", "spacing of the values"),
+    E("sweep", "mode", sweep_mode, 0, "continuation|independent",
+      "continuation: each point starts from the final state of the previous one; independent: all from the initial state"),
+    E("sweep", "direction", sweep_direction, 2, "up|down|both",
+      "continuation: increasing, decreasing parameter, or both (jumps and hysteresis show as two branches)"),
+    S("sweep", "parameter2", sweep_parameter2, "", "second swept key for a regime map (empty: one-parameter sweep)"),
+    D("sweep", "from2", "", sweep_from2, -1e30, 1e30, 0, 0, NAN, "first value of parameter2"),
+    D("sweep", "to2", "", sweep_to2, -1e30, 1e30, 0, 0, NAN, "last value of parameter2"),
+    I("sweep", "points2", sweep_points2, 1, 100000, 11, "number of values of parameter2"),
+    E("sweep", "spacing2", sweep_spacing2, 0, "linear|log", "spacing of the values of parameter2"),
+    S("sweep", "response", sweep_response, "",
+      "Poincare responses, comma-separated: lambda_L, lambda_R (default), lambda_dot_L, lambda_dot_R, DOF names, DOF_dot"),
+
+    /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
+    S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk8",
+      "method families, comma-separated: rk4 (fixed steps), erk2 to erk8 (no erk7), dirk2 to dirk5 (over rtol)"),
+    B("workprecision", "root_finding_off", wp_root_finding_off, 1,
+      "also run every family with root finding off (contact modes from the state, events seen at step ends)"),
+    I("workprecision", "rk4_steps_min", wp_rk4_steps_min, 4, 1000000, 16, "rk4: fewest steps per mesh period (doubled up to rk4_steps_max)"),
+    I("workprecision", "rk4_steps_max", wp_rk4_steps_max, 4, 1000000, 1024, "rk4: most steps per mesh period"),
+    D("workprecision", "rtol_loosest", "", wp_rtol_loosest, 1e-14, 0.1, 0, 0, 1e-3, "adaptive families: loosest rtol"),
+    D("workprecision", "rtol_tightest", "", wp_rtol_tightest, 1e-14, 0.1, 0, 0, 1e-12, "adaptive families: tightest rtol"),
+    I("workprecision", "rtols_per_decade", wp_rtols_per_decade, 1, 10, 1, "adaptive families: tolerances per decade"),
+    D("workprecision", "atol_over_rtol", "", wp_atol_over_rtol, 1e-6, 1, 0, 0, 1e-2,
+      "atol of every run = rtol times this (dimensionless state; the [solver] defaults have 1e-2)"),
+    D("workprecision", "reference_rtol", "", wp_reference_rtol, 1e-14, 1e-6, 0, 0, 1e-13,
+      "rtol of the reference and of its check (events located)"),
+    D("workprecision", "reference_max_step_fraction", "", wp_reference_max_step_fraction, 0, 1, 1, 0, 0.002,
+      "largest step of the reference and its check / mesh period: event times are located on ARKODE's interpolant "
+      "(degree 5 at most), so they are only as accurate as the steps are short"),
+    I("workprecision", "reference_order", wp_reference_order, 2, 8, 8, "explicit order of the reference (not 7)"),
+    I("workprecision", "check_order", wp_check_order, 2, 8, 6,
+      "explicit order of the independent check of the reference (not 7, not reference_order)"),
+    D("workprecision", "reference_max_error", "", wp_reference_max_error, 0, 1, 1, 0, 1e-9,
+      "largest Poincare difference between the reference and its check for a converged reference"),
+    I("workprecision", "horizon_periods", wp_horizon_periods, 1, 100000, 10,
+      "short horizon: trajectory error of chaotic scenes, event times of chaotic scenes, and the order study"),
+    B("workprecision", "order_study", wp_order_study, 1,
+      "measure the convergence order of the Poincare points of every explicit family at fixed steps, events on and off"),
+    I("workprecision", "order_steps_min", wp_order_steps_min, 4, 1000000, 4, "order study: fewest steps per mesh period"),
+    I("workprecision", "order_steps_max", wp_order_steps_max, 4, 1000000, 1024, "order study: most steps per mesh period"),
+    I("workprecision", "repeats", wp_repeats, 1, 100, 1, "timed repetitions of every run (the best is kept)"),
+    I("workprecision", "max_steps_per_period", wp_max_steps_per_period, 10, 100000000, 20000,
+      "budget: a run taking more steps per mesh period stops (over-budget) and the tighter settings of its family are skipped"),
+    B("workprecision", "lyapunov", wp_lyapunov, 1,
+      "chaotic scenes: error of the largest Lyapunov exponent (one more, untimed run per setting)"),
+    E("workprecision", "scene_class", wp_scene_class, 0, "auto|periodic|chaotic",
+      "which errors lead: Poincare points over the window (periodic) or the short horizon and statistics (chaotic); "
+      "auto: from the reference's motion class"),
 };
 
 GD_API int gd_analysis_available(int analysis)
@@ -202,6 +256,8 @@ GD_API int gd_analysis_available(int analysis)
     case GD_ANALYSIS_RESPONSE:
     case GD_ANALYSIS_TCA:
     case GD_ANALYSIS_LTCA:
+    case GD_ANALYSIS_SWEEP:
+    case GD_ANALYSIS_WORK_PRECISION:
         return 1;
     default:
         return 0;

@@ -1,0 +1,183 @@
+/* Sweeps (`analysis = sweep`): one case key, or two for a regime map, varied over a grid,
+ * every grid point a `response` run (gd_response.h).
+ *
+ * Modes: continuation (each point starts from the final state of the previous point of its
+ * chain; a chain runs up or down the first parameter at one value of the second, so that
+ * jumps and hysteresis show as two branches) and independent (every point from the case's
+ * initial state). The work units are the chains (continuation) or the points (independent);
+ * they run in parallel with OpenMP, and over MPI ranks when the caller distributes them
+ * (gd_sweep_opts.rank, .nranks). Every point is computed by the same deterministic code
+ * from the same inputs whatever the thread or rank, so results do not depend on either.
+ *
+ * A finished point is handed to the caller at once (gd_sweep_opts.point_done) and can be
+ * written as one self-checking text record (gd_sweep_record_format) that holds everything
+ * the final files and a continuation need; a journal of such records is read back by
+ * gd_sweep_journal_load to resume an interrupted sweep. The final tables and summary.json
+ * (gd_sweep_write_outputs) are written from the point array in slot order, so neither the
+ * thread count, the ranks nor an interruption change them. */
+#ifndef GD_SWEEP_H
+#define GD_SWEEP_H
+
+#include <stdint.h>
+
+#include "geardyn/gd_response.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum gd_sweep_spacing { GD_SWEEP_LINEAR = 0, GD_SWEEP_LOG = 1 } gd_sweep_spacing;
+typedef enum gd_sweep_mode { GD_SWEEP_CONTINUATION = 0, GD_SWEEP_INDEPENDENT = 1 } gd_sweep_mode;
+typedef enum gd_sweep_direction { GD_SWEEP_UP = 0, GD_SWEEP_DOWN = 1, GD_SWEEP_BOTH = 2 } gd_sweep_direction;
+/* The branch a result belongs to: the `direction` column of the tables. */
+typedef enum gd_sweep_branch { GD_BRANCH_UP = 0, GD_BRANCH_DOWN = 1, GD_BRANCH_INDEPENDENT = 2 } gd_sweep_branch;
+GD_API const char *gd_sweep_branch_name(int branch);
+
+/* Status of a point. */
+typedef enum gd_sweep_status { GD_POINT_PENDING = 0, GD_POINT_DONE = 1, GD_POINT_FAILED = 2 } gd_sweep_status;
+
+#define GD_SWEEP_MAX_RESPONSES 8
+
+/* A response sampled at every Poincare point: the dimensionless mesh deflection
+ * lambda = w.x - e(t) of a mesh or its rate, or a state variable. */
+typedef enum gd_sweep_response_kind { GD_RESP_MESH = 0, GD_RESP_MESH_RATE = 1, GD_RESP_STATE = 2 } gd_sweep_response_kind;
+typedef struct gd_sweep_response {
+    char name[24];           /* column name in bifurcation.csv */
+    int kind;                /* gd_sweep_response_kind */
+    int index;               /* mesh index, or index into the state */
+} gd_sweep_response;
+
+/* A chain: the points run one after the other from one state (continuation), or a single
+ * point (independent). Its points are the slots first .. first + count - 1. */
+typedef struct gd_sweep_chain {
+    int branch;              /* gd_sweep_branch */
+    int row;                 /* index along parameter2 (0 for a one-parameter sweep) */
+    int first, count;
+} gd_sweep_chain;
+
+typedef struct gd_sweep_plan {
+    int naxes;               /* 1: parameter only; 2: a regime map over parameter and parameter2 */
+    char parameter[2][256];  /* "section.key" */
+    char unit[2][32];
+    int npoints[2];
+    double *values[2];       /* npoints[a] values of axis a, from `from` to `to` */
+    int mode, direction, spacing[2];
+    int nchains;
+    gd_sweep_chain *chains;  /* in output order: rows of parameter2, then up before down */
+    int nslots;              /* results: one per point and branch */
+    int nresp;
+    gd_sweep_response resp[GD_SWEEP_MAX_RESPONSES];
+    int n, nclear, nmesh;    /* state size, clearances and meshes of the model */
+    long npoincare;          /* Poincare samples per point: record_periods + 1 */
+    uint64_t fingerprint;    /* of every input that changes a result, and the version */
+    int *slot_info;          /* 4 x nslots: chain, position in the chain, index along each axis */
+} gd_sweep_plan;
+
+/* One result. The first fields come from the plan (gd_sweep_points_create). */
+typedef struct gd_sweep_point {
+    int slot, chain, pos, branch, idx[2];
+    double value[2];         /* the swept values (value[1] unused for one parameter) */
+    /* result */
+    int status;              /* gd_sweep_status */
+    int error_code;          /* gd_status of a failed point */
+    char error[256];
+    double rms_accel_mps2[3];    /* left, right, combined */
+    double mle_per_period, mle_per_s; /* NaN when not computed */
+    char motion[32];             /* gd_response_result.motion, or "failed" */
+    int period_n, poincare_distinct;
+    int impact_regime[3];        /* left, right, combined */
+    long steps, rhs_evals, events;
+    double wall_s;               /* not written to any output file */
+    long npoincare;              /* 0 for a failed point */
+    double *poincare;            /* npoincare x nresp (row-major) */
+    double y_final[GD_MAX_STATE];
+    gd_modes md_final;
+} gd_sweep_point;
+
+/* Check the [sweep] keys of a resolved case (gd_case_resolve calls it for analysis =
+ * sweep): the parameters name numeric keys, every value of the grid is inside the key's
+ * range (and whole for an integer key), log spacing has positive bounds, the responses
+ * exist in the model. Messages name the case file line. */
+GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err);
+/* Value i of axis a (0: parameter, 1: parameter2) of the case's grid; i = 0 gives `from`
+ * and i = points - 1 gives `to` exactly. */
+GD_API double gd_sweep_axis_value(const gd_case *c, int axis, int i);
+
+GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_error *err);
+GD_API void gd_sweep_plan_free(gd_sweep_plan *p);
+/* An array of plan->nslots points, all pending, with their slot, chain and values. */
+GD_API gd_status gd_sweep_points_create(const gd_sweep_plan *p, gd_sweep_point **pts, gd_error *err);
+GD_API void gd_sweep_points_free(const gd_sweep_plan *p, gd_sweep_point *pts);
+/* Forget the result of a point (back to pending). */
+GD_API void gd_sweep_point_clear(gd_sweep_point *pt);
+
+/* The case and model of a slot: a deep copy of the base case with the swept keys set,
+ * resolved again (derived values follow unless pinned), and its model. Free out with
+ * gd_case_free. */
+GD_API gd_status gd_sweep_point_case(const gd_case *base, const gd_sweep_plan *p, int slot, gd_case *out,
+                                     gd_model *m, gd_error *err);
+/* The initial state of a point: the case's initial condition when prev is NULL or failed,
+ * else prev's final state with its contact modes made consistent with this point's model
+ * (the clearances may have changed). Continuation point k starts from exactly this. */
+GD_API gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
+                                      gd_modes *md0, gd_error *err);
+/* Responses of the plan at a Poincare point (t_s, y) of model m: out[nresp]. */
+GD_API void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, const double *y, double *out);
+
+typedef struct gd_sweep_opts {
+    int threads;             /* OpenMP threads (0: the OpenMP default) */
+    int rank, nranks;        /* run the work units u with u % nranks == rank (0, 1: all) */
+    gd_response_opts response;
+    /* Called once per finished point (done or failed), at once, never by two threads at a
+     * time; non-GD_OK stops the sweep with that error. */
+    gd_status (*point_done)(void *user, const gd_sweep_plan *p, const gd_sweep_point *pt, gd_error *err);
+    /* Polled about once per mesh period by every computing thread (possibly at the same
+     * time); nonzero stops the sweep: points in progress are abandoned (left pending). */
+    int (*should_stop)(void *user);
+    void *user;
+} gd_sweep_opts;
+
+GD_API void gd_sweep_opts_default(gd_sweep_opts *o);
+
+/* Run every pending point of this rank's work units. Points already done (resumed) are
+ * skipped; a continuation chain resumes after its last done point. A point that fails
+ * (solver, chattering, endless separation) is recorded as failed and its chain goes on
+ * from the initial condition. Returns GD_ERR_INTERRUPTED when stopped by should_stop, the
+ * error of point_done, or an error that is not a point's (out of memory). */
+GD_API gd_status gd_sweep_run(const gd_case *base, const gd_sweep_plan *p, gd_sweep_point *pts,
+                              const gd_sweep_opts *o, gd_error *err);
+
+/* Points not yet done or failed. */
+GD_API int gd_sweep_pending(const gd_sweep_plan *p, const gd_sweep_point *pts);
+
+/* Journal records: one text line per point ending in a CRC-32, e.g. for a journal file or a
+ * message between MPI ranks. format: a malloc'd line with its '\n' (free it). */
+GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_point *pt, char **line, size_t *len,
+                                        gd_error *err);
+/* Parse one record (with or without its '\n') into pts[slot]; GD_ERR_INPUT for a torn,
+ * corrupt or foreign record. *slot gets the slot. */
+GD_API gd_status gd_sweep_record_parse(const gd_sweep_plan *p, const char *line, size_t len, gd_sweep_point *pts,
+                                       int *slot, gd_error *err);
+/* The first line of a journal (identifies the sweep by its fingerprint). */
+GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t len);
+
+/* Read a journal: every intact record of this sweep is loaded into pts (points after a
+ * missing one in a continuation chain are dropped, they depend on it); a torn or corrupt
+ * line (the last one after a kill) is ignored. *text (malloc'd) receives the header and the
+ * kept lines, to be written back as the journal. A missing file or one with a torn header
+ * gives no points; a journal of another sweep is GD_ERR_INPUT. */
+GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
+                                       size_t *text_len, int *loaded, int *ignored, gd_error *err);
+
+/* The final files, atomically, from the points in slot order: sweep.csv, bifurcation.csv
+ * and summary.json (which lists files[0..nfiles-1] as the files of the run). */
+GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
+                                       gd_error *err);
+GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
+                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
+                                        gd_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

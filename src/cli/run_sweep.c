@@ -1,0 +1,693 @@
+/* The `sweep` analysis on the command line: the journal and --resume, signals, the progress
+ * line, MPI ranks, pictures and the final files.
+ *
+ * The journal (DIR/.sweep.journal) is the only file written while the sweep runs: a header
+ * naming the sweep, then one checksummed record per finished point, appended and synced
+ * to disk as the point finishes. --resume reads it back (dropping a line torn by a kill),
+ * rewrites it without the damaged lines and runs only the points it lacks. At the end the
+ * final files are written atomically from all the points in slot order and the journal is
+ * removed, so an interrupted and resumed sweep gives the same files as an uninterrupted
+ * one, whatever the number of threads or ranks. */
+#include "cli.h"
+#include "sweep_mpi.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdatomic.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/file.h>
+#include <time.h>
+#include <unistd.h>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#define JOURNAL ".sweep.journal"
+
+static volatile sig_atomic_t g_signal = 0;
+static void on_signal(int sig) { g_signal = sig; }
+
+typedef struct sweep_cli {
+    const gd_sweep_plan *p;
+    gd_sweep_point *pts;
+    int rank, size;
+    int fd;                  /* the journal, rank 0 */
+    int dir_fd;              /* the output directory, locked against a second sweep into it */
+    char journal[GD_PATH_MAX + 32];
+    pthread_mutex_t io;      /* journal appends, the progress line and MPI calls */
+    int progress;
+    double t0, last_print;
+    atomic_llong last_poll_ns;
+    int total, done, done_at_start;
+    int ranks_done, remote_interrupted, remote_failed;
+    char remote_msg[1200];
+    atomic_int fatal;        /* rank 0 could not journal a point */
+    gd_error fatal_err;
+} sweep_cli;
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static void progress_line(sweep_cli *s, int final)
+{
+    if (!s->progress)
+        return;
+    double t = now();
+    if (!final && t - s->last_print < 0.25 && s->done < s->total)
+        return;
+    s->last_print = t;
+    int computed = s->done - s->done_at_start;
+    double el = t - s->t0, rate = el > 0 ? computed / el : 0;
+    char eta[64];
+    int left = s->total - s->done;
+    if (left == 0)
+        snprintf(eta, sizeof eta, "done");
+    else if (computed == 0 || !(rate > 0))
+        snprintf(eta, sizeof eta, "time left unknown");
+    else {
+        double sec = left / rate;
+        if (sec < 90)
+            snprintf(eta, sizeof eta, "%.0f s left", sec);
+        else if (sec < 5400)
+            snprintf(eta, sizeof eta, "%.0f min left", sec / 60);
+        else
+            snprintf(eta, sizeof eta, "%.1f h left", sec / 3600);
+    }
+    fprintf(stderr, "\rgeardyn: sweep %d/%d points, %.3g points/s, %s   %s", s->done, s->total, rate, eta,
+            final ? "\n" : "");
+    fflush(stderr);
+}
+
+static gd_status journal_append(sweep_cli *s, const char *line, size_t len, gd_error *err)
+{
+    size_t off = 0;
+    while (off < len) {
+        ssize_t w = write(s->fd, line + off, len - off);
+        if (w < 0) {
+            if (errno == EINTR)
+                continue;
+            return gd_error_set(err, GD_ERR_IO, "%s: cannot append: %s", s->journal, strerror(errno));
+        }
+        off += (size_t)w;
+    }
+    if (fdatasync(s->fd) != 0 && errno != EINVAL)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot sync: %s", s->journal, strerror(errno));
+    return GD_OK;
+}
+
+/* a point of another rank, on rank 0 (the io lock is held) */
+static int on_remote_record(void *user, int source, const char *line, size_t len)
+{
+    sweep_cli *s = user;
+    int slot;
+    gd_error e = {0};
+    if (gd_sweep_record_parse(s->p, line, len, s->pts, &slot, &e) != GD_OK) {
+        gd_error_set(&s->fatal_err, GD_ERR_INTERNAL, "rank %d sent a bad record: %s", source, e.msg);
+        atomic_store(&s->fatal, 1);
+        return 1;
+    }
+    if (journal_append(s, line, len, &e) != GD_OK) {
+        s->fatal_err = e;
+        atomic_store(&s->fatal, 1);
+        return 1;
+    }
+    s->done++;
+    progress_line(s, 0);
+    return 0;
+}
+
+static void on_remote_done(void *user, int source, int status, const char *msg)
+{
+    sweep_cli *s = user;
+    s->ranks_done++;
+    if (status == 1)
+        s->remote_interrupted = 1;
+    if (status == 2 && !s->remote_failed) {
+        s->remote_failed = 1;
+        snprintf(s->remote_msg, sizeof s->remote_msg, "rank %d: %s", source, msg);
+    }
+}
+
+static gd_status on_point(void *user, const gd_sweep_plan *p, const gd_sweep_point *pt, gd_error *err)
+{
+    sweep_cli *s = user;
+    char *line;
+    size_t len;
+    gd_status st = gd_sweep_record_format(p, pt, &line, &len, err);
+    if (st != GD_OK)
+        return st;
+    pthread_mutex_lock(&s->io);
+    if (s->rank == 0) {
+        st = journal_append(s, line, len, err);
+        if (st == GD_OK) {
+            s->done++;
+            progress_line(s, 0);
+        }
+    } else if (cli_mpi_send_record(line, len) != 0) {
+        st = gd_error_set(err, GD_ERR_IO, "MPI: cannot send a finished point to rank 0");
+    }
+    pthread_mutex_unlock(&s->io);
+    free(line);
+    return st;
+}
+
+static int should_stop(void *user)
+{
+    sweep_cli *s = user;
+    if (g_signal || atomic_load(&s->fatal))
+        return 1;
+    if (s->size > 1 && s->rank == 0) {
+        /* rank 0 takes the other ranks' points while it computes (every 20 ms at most) */
+        long long t = (long long)(now() * 1e9);
+        if (t - atomic_load(&s->last_poll_ns) > 20000000LL && pthread_mutex_trylock(&s->io) == 0) {
+            atomic_store(&s->last_poll_ns, t);
+            cli_mpi_handlers h = {on_remote_record, on_remote_done, s};
+            cli_mpi_poll(0, &h);
+            pthread_mutex_unlock(&s->io);
+        }
+    }
+    return atomic_load(&s->fatal);
+}
+
+/* Temporary files of an earlier run killed while writing its final files. */
+static void remove_stale_temporaries(const char *dir)
+{
+    static const char *prefixes[] = {".sweep.csv.tmp-", ".bifurcation.csv.tmp-", ".summary.json.tmp-",
+                                     "." JOURNAL ".tmp-", ".bifurcation.png.tmp", ".bifurcation.svg.tmp",
+                                     ".regime_map.png.tmp", ".regime_map.svg.tmp"};
+    DIR *d = opendir(dir);
+    if (!d)
+        return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++)
+            if (strncmp(e->d_name, prefixes[i], strlen(prefixes[i])) == 0) {
+                char path[GD_PATH_MAX + 300];
+                snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+                unlink(path);
+                break;
+            }
+    closedir(d);
+}
+
+/* Rank 0: the output directory and the journal (read back with --resume, else new). */
+static gd_status prepare(sweep_cli *s, const cli_case_args *a, const char *dir, char **text, size_t *tlen,
+                         gd_error *err)
+{
+    gd_status st = gd_mkdir_p(dir, err);
+    if (st != GD_OK)
+        return st;
+    s->dir_fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    if (s->dir_fd < 0)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot open: %s", dir, strerror(errno));
+    if (flock(s->dir_fd, LOCK_EX | LOCK_NB) != 0)
+        return gd_error_set(err, GD_ERR_IO, "%s: another geardyn is running a sweep into this directory", dir);
+    remove_stale_temporaries(dir);
+    snprintf(s->journal, sizeof s->journal, "%s/%s", dir, JOURNAL);
+    int exists = access(s->journal, F_OK) == 0;
+    if (a->resume) {
+        int loaded = 0, ignored = 0;
+        st = gd_sweep_journal_load(s->journal, s->p, s->pts, text, tlen, &loaded, &ignored, err);
+        if (st != GD_OK)
+            return st;
+        if (!a->quiet) {
+            if (!exists)
+                fprintf(stderr, "geardyn: note: no journal in %s: the sweep starts from the beginning\n", dir);
+            else
+                fprintf(stderr, "geardyn: resuming: %d of %d points already done%s\n", loaded, s->p->nslots,
+                        ignored ? " (a torn or unusable journal line was dropped)" : "");
+        }
+    } else {
+        char header[300];
+        gd_sweep_journal_header(s->p, header, sizeof header);
+        *tlen = strlen(header);
+        *text = malloc(*tlen + 1);
+        if (!*text)
+            return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+        memcpy(*text, header, *tlen + 1);
+        if (exists && !a->quiet)
+            fprintf(stderr, "geardyn: note: %s held an unfinished sweep; starting over (--resume continues one)\n",
+                    dir);
+    }
+    gd_atomic_file f;
+    if ((st = gd_atomic_open(&f, dir, JOURNAL, err)) != GD_OK)
+        return st;
+    if (fwrite(*text, 1, *tlen, f.fp) != *tlen) {
+        gd_atomic_abort(&f);
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot write", s->journal);
+    }
+    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
+        return st;
+    s->fd = open(s->journal, O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (s->fd < 0)
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot open: %s", s->journal, strerror(errno));
+    return GD_OK;
+}
+
+/* Other ranks: the journal rank 0 read, as text. */
+static gd_status load_text(sweep_cli *s, const char *text, size_t len, gd_error *err)
+{
+    char header[300];
+    gd_sweep_journal_header(s->p, header, sizeof header);
+    size_t hl = strlen(header);
+    if (len < hl || memcmp(text, header, hl) != 0)
+        return gd_error_set(err, GD_ERR_INPUT, "rank %d does not see the same sweep as rank 0 (another case file, "
+                            "or another geardyn?)", s->rank);
+    for (size_t pos = hl; pos < len;) {
+        const char *nl = memchr(text + pos, '\n', len - pos);
+        size_t l = nl ? (size_t)(nl - (text + pos)) + 1 : len - pos;
+        int slot;
+        gd_status st = gd_sweep_record_parse(s->p, text + pos, l, s->pts, &slot, err);
+        if (st != GD_OK)
+            return st;
+        pos += l;
+    }
+    return GD_OK;
+}
+
+/* ---- pictures ---- */
+
+typedef struct sbuf {
+    char *s;
+    size_t n, cap;
+} sbuf;
+
+static void add(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void add(sbuf *b, const char *fmt, ...)
+{
+    for (;;) {
+        va_list ap;
+        va_start(ap, fmt);
+        int k = vsnprintf(b->s ? b->s + b->n : NULL, b->s ? b->cap - b->n : 0, fmt, ap);
+        va_end(ap);
+        if (k < 0)
+            return;
+        if (b->s && b->n + (size_t)k < b->cap) {
+            b->n += (size_t)k;
+            return;
+        }
+        size_t cap = (b->cap + (size_t)k + 1) * 2;
+        char *ns = realloc(b->s, cap);
+        if (!ns)
+            return;
+        b->s = ns;
+        b->cap = cap;
+    }
+}
+
+static const char *branch_colour[] = {"#1f77b4", "#d62728", "#222222"};
+/* up: open circles and a wide line under down's small dots and thin line, so that both
+ * show where the branches coincide */
+static const char *branch_point[] = {"pt 6 ps 0.55", "pt 7 ps 0.25", "pt 7 ps 0.3"};
+static const char *branch_line[] = {"pt 6 ps 0.6 lw 2.5", "pt 7 ps 0.35 lw 1", "pt 7 ps 0.4 lw 1.2"};
+
+/* Fig. 15 of the paper: the bifurcation diagram, the largest Lyapunov exponent and the RMS
+ * acceleration, stacked on one parameter axis; up and down in two colours. */
+static void script_bifurcation(sbuf *b, const char *dir, const gd_case *c, const gd_sweep_plan *p,
+                               const int *has, int mle, const char *term, const char *ext)
+{
+    double x0 = fmin(p->values[0][0], p->values[0][p->npoints[0] - 1]);
+    double x1 = fmax(p->values[0][0], p->values[0][p->npoints[0] - 1]);
+    if (x1 <= x0) {
+        x0 -= fabs(x0) * 0.05 + 1e-9;
+        x1 += fabs(x1) * 0.05 + 1e-9;
+    }
+    static const char *models[] = {"torsional", "torsional-lr", "bta"};
+    int panels = mle ? 3 : 2;
+    add(b, "set terminal %s\nset output '%s/.bifurcation%s.tmp'\n", term, dir, ext);
+    add(b, "set multiplot layout %d,1 margins 0.1,0.96,0.07,0.93 spacing 0,0.025 title 'Sweep of %s (%s model, %s)'\n",
+        panels, p->parameter[0], models[c->model],
+        p->mode == GD_SWEEP_CONTINUATION ? "continuation" : "independent points");
+    add(b, "set grid\nset xrange [%.12g:%.12g]\n%sset key top right opaque box\nset format x ''\nunset xlabel\n", x0, x1,
+        p->spacing[0] == GD_SWEEP_LOG ? "set logscale x\n" : "");
+    /* the Poincare samples of the first response */
+    add(b, "set ylabel '%s at the Poincare section (-)'\nplot ", p->resp[0].name);
+    int first = 1;
+    for (int br = 0; br < 3; br++)
+        if (has[br]) {
+            add(b, "%s'%s/bifurcation.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(3) : 1/0) with points %s "
+                   "lc rgb '%s' title '%s'",
+                first ? "" : ", ", dir, gd_sweep_branch_name(br), branch_point[br], branch_colour[br],
+                gd_sweep_branch_name(br));
+            first = 0;
+        }
+    add(b, "\n");
+    const char *what[2] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s^2)"};
+    int col[2] = {4, 3};
+    for (int q = mle ? 0 : 1; q < 2; q++) {
+        if (q == 1)
+            add(b, "unset xzeroaxis\nset format x '%%g'\nset xlabel '%s%s%s%s'\n", p->parameter[0],
+                p->unit[0][0] ? " (" : "", p->unit[0], p->unit[0][0] ? ")" : "");
+        else
+            add(b, "set xzeroaxis lt -1\n");
+        add(b, "unset key\n");
+        add(b, "set ylabel '%s'\nplot ", what[q]);
+        first = 1;
+        for (int br = 0; br < 3; br++)
+            if (has[br]) {
+                add(b, "%s'%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(%d) : 1/0) with linespoints "
+                       "%s lc rgb '%s' notitle",
+                    first ? "" : ", ", dir, gd_sweep_branch_name(br), col[q], branch_line[br], branch_colour[br]);
+                first = 0;
+            }
+        add(b, "\n");
+    }
+    add(b, "unset multiplot\nunset output\n");
+}
+
+/* The regime map: motion class and largest Lyapunov exponent over the two parameters, one
+ * row of panels per branch. */
+static void script_map(sbuf *b, const char *dir, const gd_sweep_plan *p, const int *has, double mle_abs,
+                       const char *term, const char *ext)
+{
+    int rows = has[0] + has[1] + has[2];
+    double half[2], fac[2];
+    for (int a = 0; a < 2; a++) {
+        int n = p->npoints[a];
+        double v0 = p->values[a][0], v1 = p->values[a][n - 1];
+        half[a] = n > 1 ? fabs(v1 - v0) / (2.0 * (n - 1)) : fabs(v0) * 0.05 + 0.5;
+        fac[a] = n > 1 && p->spacing[a] == GD_SWEEP_LOG ? pow(fmax(v0, v1) / fmin(v0, v1), 1.0 / (2.0 * (n - 1)))
+                                                        : 1.0;
+    }
+    char xl[80], xh[80], yl[80], yh[80];
+    if (p->spacing[0] == GD_SWEEP_LOG)
+        snprintf(xl, sizeof xl, "($1/%.12g)", fac[0]), snprintf(xh, sizeof xh, "($1*%.12g)", fac[0]);
+    else
+        snprintf(xl, sizeof xl, "($1-%.12g)", half[0]), snprintf(xh, sizeof xh, "($1+%.12g)", half[0]);
+    if (p->spacing[1] == GD_SWEEP_LOG)
+        snprintf(yl, sizeof yl, "($7/%.12g)", fac[1]), snprintf(yh, sizeof yh, "($7*%.12g)", fac[1]);
+    else
+        snprintf(yl, sizeof yl, "($7-%.12g)", half[1]), snprintf(yh, sizeof yh, "($7+%.12g)", half[1]);
+    add(b, "set terminal %s\nset output '%s/.regime_map%s.tmp'\n", term, dir, ext);
+    add(b, "set multiplot layout %d,2 title 'Regime map: %s x %s'\n", rows, p->parameter[0], p->parameter[1]);
+    add(b, "cls(s) = s eq 'chaotic' ? 12 : s eq 'quasi-periodic' ? 11 : s eq 'not-periodic' ? 10 : "
+           "s eq 'failed' ? 0 : (strlen(s) > 7 && s[1:7] eq 'period-') ? (int(s[8:]) > 8 ? 9 : int(s[8:])) : 10\n");
+    add(b, "set xlabel '%s (%s)'\nset ylabel '%s (%s)'\nunset key\nset tics out\n%s%s", p->parameter[0], p->unit[0],
+        p->parameter[1], p->unit[1], p->spacing[0] == GD_SWEEP_LOG ? "set logscale x\n" : "",
+        p->spacing[1] == GD_SWEEP_LOG ? "set logscale y\n" : "");
+    for (int br = 0; br < 3; br++) {
+        if (!has[br])
+            continue;
+        add(b, "set title 'motion (%s)'\nset palette maxcolors 13\n"
+               "set palette defined (0 '#cccccc', 1 '#1f77b4', 2 '#2ca02c', 3 '#bcbd22', 4 '#17becf', 5 '#9467bd', "
+               "6 '#8c564b', 7 '#e377c2', 8 '#7f7f7f', 9 '#aec7e8', 10 '#ffbb78', 11 '#ff7f0e', 12 '#d62728')\n"
+               "set cbrange [-0.5:12.5]\nset cbtics ('failed' 0, 'P1' 1, 'P2' 2, 'P3' 3, 'P4' 4, 'P5' 5, 'P6' 6, "
+               "'P7' 7, 'P8' 8, 'P9+' 9, 'not periodic' 10, 'quasi-periodic' 11, 'chaotic' 12)\n",
+            gd_sweep_branch_name(br));
+        /* (the branch filter goes on y: gnuplot leaves the boxes unfilled when it is on the colour) */
+        add(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(cls(strcol(5))) "
+               "with boxxyerror fs solid 1.0 noborder lc palette\n",
+            dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
+        add(b, "set title 'largest Lyapunov exponent per mesh period (%s)'\nset palette maxcolors 0\n"
+               "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\nset cbrange [%.6g:%.6g]\nset cbtics auto\n",
+            gd_sweep_branch_name(br), -mle_abs, mle_abs);
+        add(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(column(4)) "
+               "with boxxyerror fs solid 1.0 noborder lc palette\n",
+            dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
+    }
+    add(b, "unset multiplot\nunset output\n");
+}
+
+/* Draw the pictures; the names drawn go to names[] (*n of them). */
+static gd_status draw(const char *dir, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
+                      const char **names, int *n, gd_error *err)
+{
+    int has[3] = {0, 0, 0}, mle = 0;
+    double mle_abs = 0;
+    for (int s = 0; s < p->nslots; s++) {
+        has[pts[s].branch] = 1;
+        if (pts[s].status == GD_POINT_DONE && isfinite(pts[s].mle_per_period)) {
+            mle = 1;
+            mle_abs = fmax(mle_abs, fabs(pts[s].mle_per_period));
+        }
+    }
+    if (!(mle_abs > 0))
+        mle_abs = 1;
+    static const char *fmt[2][2] = {{"pngcairo noenhanced size 1200,1200 font ',11'", ".png"},
+                                    {"svg noenhanced size 1200,1200 dynamic font 'sans,11'", ".svg"}};
+    sbuf b = {NULL, 0, 0};
+    add(&b, "set datafile separator ','\nset datafile missing 'nan'\n");
+    const char *stem = p->naxes > 1 ? "regime_map" : "bifurcation";
+    for (int f = 0; f < 2; f++) {
+        if (p->naxes > 1)
+            script_map(&b, dir, p, has, mle_abs, fmt[f][0], fmt[f][1]);
+        else
+            script_bifurcation(&b, dir, c, p, has, mle, fmt[f][0], fmt[f][1]);
+    }
+    if (!b.s)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
+    gd_status st = gd_gnuplot_run(dir, b.s, err);
+    free(b.s);
+    static const char *png[] = {"bifurcation.png", "regime_map.png"}, *svg[] = {"bifurcation.svg", "regime_map.svg"};
+    for (int f = 0; f < 2; f++) {
+        char tmp[GD_PATH_MAX + 64], fin[GD_PATH_MAX + 64];
+        snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, stem, fmt[f][1]);
+        snprintf(fin, sizeof fin, "%s/%s%s", dir, stem, fmt[f][1]);
+        if (st == GD_OK && rename(tmp, fin) != 0)
+            st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
+        unlink(tmp);
+    }
+    if (st == GD_OK) {
+        names[(*n)++] = p->naxes > 1 ? png[1] : png[0];
+        names[(*n)++] = p->naxes > 1 ? svg[1] : svg[0];
+    }
+    return st;
+}
+
+/* ---- the end ---- */
+
+static int finish(sweep_cli *s, const cli_case_args *a, const gd_case *c, const char *dir, double wall, int threads)
+{
+    const gd_sweep_plan *p = s->p;
+    gd_error err = {0};
+    if (gd_sweep_write_tables(dir, p, s->pts, &err) != GD_OK)
+        return cli_fail(&err);
+    const char *files[8];
+    int nfiles = 0;
+    files[nfiles++] = "sweep.csv";
+    files[nfiles++] = "bifurcation.csv";
+    const char *note = NULL;
+    if (c->plots) {
+        if (!gd_gnuplot_available()) {
+            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
+        } else {
+            gd_error perr = {0};
+            if (draw(dir, c, p, s->pts, files, &nfiles, &perr) != GD_OK && !a->quiet)
+                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
+        }
+    }
+    files[nfiles++] = "summary.json";
+    if (gd_sweep_write_summary(dir, c, p, s->pts, files, nfiles, &err) != GD_OK)
+        return cli_fail(&err);
+    unlink(s->journal);
+    if (note && !a->quiet)
+        fprintf(stderr, "geardyn: note: %s\n", note);
+    int failed = 0;
+    char counts[512] = "";
+    const char *seen[24];
+    int cnt[24], nseen = 0;
+    double rmax = -INFINITY, rmax_at = NAN, lmax = -INFINITY, lmax_at = NAN;
+    for (int i = 0; i < p->nslots; i++) {
+        const gd_sweep_point *pt = &s->pts[i];
+        failed += pt->status == GD_POINT_FAILED;
+        int k = 0;
+        while (k < nseen && strcmp(seen[k], pt->motion) != 0)
+            k++;
+        if (k == nseen && nseen < 24) {
+            seen[nseen] = pt->motion;
+            cnt[nseen++] = 0;
+        }
+        if (k < nseen)
+            cnt[k]++;
+        if (pt->status == GD_POINT_DONE && pt->rms_accel_mps2[2] > rmax)
+            rmax = pt->rms_accel_mps2[2], rmax_at = pt->value[0];
+        if (pt->status == GD_POINT_DONE && isfinite(pt->mle_per_period) && pt->mle_per_period > lmax)
+            lmax = pt->mle_per_period, lmax_at = pt->value[0];
+    }
+    for (int k = 0; k < nseen; k++) {
+        size_t u = strlen(counts);
+        snprintf(counts + u, sizeof counts - u, "%s%s %d", k ? ", " : "", seen[k], cnt[k]);
+    }
+    if (!a->quiet) {
+        const char *how = p->mode == GD_SWEEP_INDEPENDENT ? "independent points"
+                        : p->direction == GD_SWEEP_BOTH   ? "continuation up and down"
+                        : p->direction == GD_SWEEP_UP     ? "continuation up"
+                                                          : "continuation down";
+        printf("%s: sweep of %s%s%s, %d points (%s) in %.1f s, %d thread%s", dir, p->parameter[0],
+               p->naxes > 1 ? " x " : "", p->naxes > 1 ? p->parameter[1] : "", p->nslots, how, wall, threads,
+               threads == 1 ? "" : "s");
+        if (s->size > 1)
+            printf(" x %d ranks", s->size);
+        printf("\n  motion: %s\n", counts);
+        if (isfinite(rmax))
+            printf("  largest RMS mesh acceleration %.6g m/s^2 at %s = %.6g %s\n", rmax, p->parameter[0], rmax_at,
+                   p->unit[0]);
+        if (isfinite(lmax))
+            printf("  largest Lyapunov exponent %.4g per mesh period at %s = %.6g %s\n", lmax, p->parameter[0],
+                   lmax_at, p->unit[0]);
+    }
+    if (failed)
+        fprintf(stderr, "geardyn: note: %d point%s failed (see the error column of sweep.csv)\n", failed,
+                failed == 1 ? "" : "s");
+    return 0;
+}
+
+int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
+{
+    gd_error err = {0};
+    gd_sweep_plan plan;
+    if (gd_sweep_plan_create(c, &plan, &err) != GD_OK)
+        return cli_fail(&err);
+    gd_sweep_point *pts = NULL;
+    if (gd_sweep_points_create(&plan, &pts, &err) != GD_OK) {
+        gd_sweep_plan_free(&plan);
+        return cli_fail(&err);
+    }
+    sweep_cli s;
+    memset(&s, 0, sizeof s);
+    s.p = &plan;
+    s.pts = pts;
+    s.rank = cli_mpi_rank();
+    s.size = cli_mpi_size();
+    s.fd = -1;
+    s.dir_fd = -1;
+    s.total = plan.nslots;
+    pthread_mutex_init(&s.io, NULL);
+    int rc = 0;
+    char *text = NULL;
+    size_t tlen = 0;
+
+    /* rank 0 prepares the directory and the journal; the others get what it read */
+    int ok = 1;
+    if (s.rank == 0 && prepare(&s, a, dir, &text, &tlen, &err) != GD_OK) {
+        rc = cli_fail(&err);
+        ok = 0;
+    }
+    if (s.size > 1) {
+        ok = cli_mpi_bcast_int(ok);
+        rc = cli_mpi_bcast_int(rc);
+        if (ok && cli_mpi_bcast_text(&text, &tlen) != 0) {
+            fprintf(stderr, "geardyn: rank %d: MPI broadcast of the journal failed\n", s.rank);
+            cli_mpi_abort(1);
+        }
+        if (ok && s.rank != 0 && load_text(&s, text, tlen, &err) != GD_OK) {
+            fprintf(stderr, "geardyn: rank %d: %s\n", s.rank, err.msg);
+            cli_mpi_abort(1);
+        }
+    }
+    if (!ok)
+        goto out;
+    s.done = s.done_at_start = plan.nslots - gd_sweep_pending(&plan, pts);
+    s.progress = s.rank == 0 && !a->quiet && isatty(2);
+
+    struct sigaction sa, old_int, old_term;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    if (old_int.sa_handler == SIG_IGN) /* started in the background by a shell: leave it so */
+        sigaction(SIGINT, &old_int, NULL);
+
+    gd_sweep_opts o;
+    gd_sweep_opts_default(&o);
+    o.threads = a->threads;
+    if (s.size > 1 && a->threads == 0 && !getenv("OMP_NUM_THREADS")) {
+        long np = sysconf(_SC_NPROCESSORS_ONLN) / cli_mpi_local_size();
+        o.threads = np > 1 ? (int)np : 1;
+    }
+    if (s.size > 1 && !cli_mpi_threads_ok())
+        o.threads = 1;
+    o.rank = s.rank;
+    o.nranks = s.size;
+    o.point_done = on_point;
+    o.should_stop = should_stop;
+    o.user = &s;
+    int threads = o.threads;
+#ifdef _OPENMP
+    if (threads <= 0)
+        threads = omp_get_max_threads();
+#else
+    threads = 1;
+#endif
+    s.t0 = now();
+    progress_line(&s, 0);
+    gd_status st = gd_sweep_run(c, &plan, pts, &o, &err);
+
+    if (s.size > 1 && s.rank != 0) {
+        int status = st == GD_OK ? 0 : st == GD_ERR_INTERRUPTED ? 1 : 2;
+        cli_mpi_send_done(status, st == GD_OK ? "" : err.msg);
+    } else if (s.size > 1) {
+        if (st != GD_OK && st != GD_ERR_INTERRUPTED) {
+            if (s.progress)
+                fputc('\n', stderr);
+            fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n", err.msg);
+            cli_mpi_abort(1);
+        }
+        cli_mpi_handlers h = {on_remote_record, on_remote_done, &s};
+        while (s.ranks_done < s.size - 1) {
+            pthread_mutex_lock(&s.io);
+            int prc = cli_mpi_poll(1, &h);
+            pthread_mutex_unlock(&s.io);
+            if (prc) {
+                if (s.progress)
+                    fputc('\n', stderr);
+                fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n",
+                        s.fatal_err.msg);
+                cli_mpi_abort(1);
+            }
+        }
+    }
+    double wall = now() - s.t0;
+    sigaction(SIGINT, &old_int, NULL);
+    sigaction(SIGTERM, &old_term, NULL);
+
+    if (s.rank == 0) {
+        progress_line(&s, 1);
+        if (s.fd >= 0)
+            close(s.fd);
+        s.fd = -1;
+        int pending = gd_sweep_pending(&plan, pts);
+        if (pending == 0) {
+            rc = finish(&s, a, c, dir, wall, threads);
+        } else if (g_signal || st == GD_ERR_INTERRUPTED || s.remote_interrupted) {
+            fprintf(stderr, "geardyn: sweep interrupted%s: %d of %d points done and kept in %s; run the same "
+                            "command with --resume to finish it\n",
+                    g_signal == SIGINT ? " (SIGINT)" : g_signal == SIGTERM ? " (SIGTERM)" : "", plan.nslots - pending,
+                    plan.nslots, s.journal);
+            rc = g_signal ? 128 + g_signal : 1;
+        } else if (st != GD_OK || s.remote_failed) {
+            fprintf(stderr, "geardyn: %s; %d of %d points done and kept: run again with --resume\n",
+                    st != GD_OK ? err.msg : s.remote_msg, plan.nslots - pending, plan.nslots);
+            rc = st != GD_OK ? gd_status_exit_code(st) : 1;
+        } else {
+            fprintf(stderr, "geardyn: internal error: %d points were not run\n", pending);
+            rc = 1;
+        }
+    }
+    if (s.size > 1)
+        rc = cli_mpi_bcast_int(rc);
+out:
+    if (s.fd >= 0)
+        close(s.fd);
+    if (s.dir_fd >= 0)
+        close(s.dir_fd); /* and its lock */
+    pthread_mutex_destroy(&s.io);
+    free(text);
+    gd_sweep_points_free(&plan, pts);
+    gd_sweep_plan_free(&plan);
+    return rc;
+}

@@ -1,0 +1,449 @@
+/* The `work-precision` analysis on the command line (docs/accuracy.md): the grid as it runs,
+ * then work_precision.csv, order_study.csv, orders.csv, the work-precision diagrams
+ * (work_precision.png/.svg) and summary.json. */
+#include "cli.h"
+
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+typedef struct wp_out {
+    int quiet;
+    int tty;
+} wp_out;
+
+static void fmt_err(char *buf, size_t len, double v)
+{
+    if (isfinite(v))
+        snprintf(buf, len, "%.2e", v);
+    else
+        snprintf(buf, len, "-");
+}
+
+static int on_start(void *user, const char *what, const char *label, int index, int total)
+{
+    wp_out *o = user;
+    if (o->quiet)
+        return 0;
+    if (strcmp(what, "grid") != 0 && strcmp(what, "order") != 0)
+        printf("  %s: %s\n", what, label);
+    else if (o->tty)
+        fprintf(stderr, "\rgeardyn: %s %d/%d: %-40s", what, index + 1, total, label);
+    fflush(stdout);
+    return 0;
+}
+
+static int on_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res)
+{
+    wp_out *o = user;
+    if (o->quiet || strcmp(what, "grid") != 0)
+        return 0;
+    if (o->tty)
+        fprintf(stderr, "\r%80s\r", "");
+    char a[16], b[16], c[16], d[16];
+    fmt_err(a, sizeof a, res->ref.chaotic ? r->err_short : r->err_poincare);
+    fmt_err(b, sizeof b, r->err_rms);
+    fmt_err(c, sizeof c, r->err_events);
+    fmt_err(d, sizeof d, r->err_mle);
+    if (r->status == GD_WP_OK)
+        printf("  %-22s %8.3f s %9.1f RHS/period %7ld events   %s %s  rms %s  events %s%s%s\n", r->label, r->cpu_s,
+               (double)r->rhs_evals / (double)r->periods, r->events, res->ref.chaotic ? "short" : "poincare", a, b, c,
+               isfinite(r->err_mle) ? "  mle " : "", isfinite(r->err_mle) ? d : "");
+    else
+        printf("  %-22s %s%s%s\n", r->label, gd_wp_status_name(r->status), r->message[0] ? ": " : "", r->message);
+    fflush(stdout);
+    return 0;
+}
+
+static void csv_num(FILE *fp, double v)
+{
+    if (isfinite(v))
+        fprintf(fp, ",%.6g", v);
+    else
+        fputs(",", fp);
+}
+
+static void write_run_row(FILE *fp, const gd_wp_result *res, const gd_wp_run *r)
+{
+    static const char *methods[] = {"erk", "dirk", "rk4"};
+    const gd_wp_family *F = &res->families[r->family];
+    fprintf(fp, "%s,%s,%s,%d,%d,%d", r->label, F->name, methods[F->method], F->order, F->root_finding, r->fixed_step);
+    if (r->fixed_step)
+        fprintf(fp, ",%d", r->steps_per_period);
+    else
+        fputs(",", fp);
+    csv_num(fp, r->rtol);
+    csv_num(fp, r->atol);
+    fprintf(fp, ",%s", gd_wp_status_name(r->status));
+    csv_num(fp, r->cpu_s);
+    csv_num(fp, r->periods > 0 ? 1e6 * r->cpu_s / (double)r->periods : NAN);
+    fprintf(fp, ",%ld", r->rhs_evals);
+    csv_num(fp, r->periods > 0 ? (double)r->rhs_evals / (double)r->periods : NAN);
+    fprintf(fp, ",%ld,%ld,%ld,%ld,%ld", r->steps, r->root_evals, r->events, r->flipflop_events, r->ref_events);
+    csv_num(fp, r->rms_accel_mps2);
+    csv_num(fp, r->mle_per_period);
+    csv_num(fp, r->err_poincare);
+    csv_num(fp, r->err_short);
+    csv_num(fp, r->err_rms);
+    csv_num(fp, r->err_events);
+    csv_num(fp, r->err_mle);
+    fputc('\n', fp);
+}
+
+static const char run_header[] =
+    "label,family,method,order,root_finding,fixed_step,steps_per_period,rtol,atol,status,cpu_s,us_per_period,"
+    "rhs_evals,rhs_evals_per_period,steps,root_evals,events,flipflop_events,reference_events,rms_accel_mps2,mle_per_period,"
+    "err_poincare,err_short_horizon,err_rms_relative,err_event_times_periods,err_mle_per_period\n";
+
+static gd_status write_tables(const char *dir, const gd_wp_result *res, gd_error *err)
+{
+    gd_atomic_file f;
+    gd_status st = gd_atomic_open(&f, dir, "work_precision.csv", err);
+    if (st != GD_OK)
+        return st;
+    fputs(run_header, f.fp);
+    for (int i = 0; i < res->nruns; i++)
+        write_run_row(f.fp, res, &res->runs[i]);
+    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
+        return st;
+    if (res->norders == 0)
+        return GD_OK;
+    if ((st = gd_atomic_open(&f, dir, "order_study.csv", err)) != GD_OK)
+        return st;
+    fputs(run_header, f.fp);
+    for (int i = 0; i < res->norder_runs; i++)
+        write_run_row(f.fp, res, &res->order_runs[i]);
+    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
+        return st;
+    if ((st = gd_atomic_open(&f, dir, "orders.csv", err)) != GD_OK)
+        return st;
+    fputs("family,root_finding,nominal_order,measured_order,fitted_from_steps,fitted_to_steps,order_over_range,"
+          "range_from_steps\n", f.fp);
+    for (int i = 0; i < res->norders; i++) {
+        const gd_wp_order *O = &res->orders[i];
+        const gd_wp_family *F = &res->families[O->family];
+        fprintf(f.fp, "%s,%d,%d", F->name, F->root_finding, O->nominal);
+        csv_num(f.fp, O->order);
+        if (O->fit_from >= 0)
+            fprintf(f.fp, ",%d,%d", O->steps[O->fit_from], O->steps[O->fit_to]);
+        else
+            fputs(",,", f.fp);
+        csv_num(f.fp, O->order_range);
+        if (O->range_from >= 0)
+            fprintf(f.fp, ",%d\n", O->steps[O->range_from]);
+        else
+            fputs(",\n", f.fp);
+    }
+    return gd_atomic_commit(&f, err);
+}
+
+/* A growing script buffer. */
+typedef struct sbuf {
+    char *p;
+    size_t n, cap;
+    int bad;
+} sbuf;
+
+static void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+static void sb_printf(sbuf *b, const char *fmt, ...)
+{
+    if (b->bad)
+        return;
+    for (;;) {
+        va_list ap;
+        va_start(ap, fmt);
+        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
+        va_end(ap);
+        if (k < 0) {
+            b->bad = 1;
+            return;
+        }
+        if (b->p && b->n + (size_t)k < b->cap) {
+            b->n += (size_t)k;
+            return;
+        }
+        size_t cap = b->cap ? 2 * b->cap : 65536;
+        while (cap < b->n + (size_t)k + 1)
+            cap *= 2;
+        char *q = realloc(b->p, cap);
+        if (!q) {
+            b->bad = 1;
+            return;
+        }
+        b->p = q;
+        b->cap = cap;
+    }
+}
+
+static void sb_val(sbuf *b, double v)
+{
+    if (isfinite(v))
+        sb_printf(b, " %.6g", v);
+    else
+        sb_printf(b, " ?");
+}
+
+static double clampe(double v) { return isfinite(v) ? fmax(v, 1e-16) : NAN; }
+
+/* The value of column col (1-based, as in the data blocks of draw) of a run. */
+static double column(const gd_wp_run *r, int col, int chaotic)
+{
+    switch (col) {
+    case 1: return r->cpu_s;
+    case 2: return (double)r->rhs_evals / (double)r->periods;
+    case 3: return clampe(chaotic ? r->err_short : r->err_poincare);
+    case 4: return clampe(r->err_rms);
+    case 5: return clampe(r->err_events);
+    default: return clampe(r->err_mle);
+    }
+}
+
+/* Whether family f has a point that can be drawn on log axes with y <= 10 (gnuplot stops the
+ * whole script on a plot with no valid point). */
+static int drawable(const gd_wp_result *res, int f, int xcol, int ycol)
+{
+    for (int i = 0; i < res->nruns; i++) {
+        const gd_wp_run *r = &res->runs[i];
+        if (r->family != f || r->status != GD_WP_OK)
+            continue;
+        double x = column(r, xcol, res->ref.chaotic), y = column(r, ycol, res->ref.chaotic);
+        if (isfinite(x) && x > 0 && isfinite(y) && y > 0 && y <= 10)
+            return 1;
+    }
+    return 0;
+}
+
+/* A string for a gnuplot single-quoted enhanced-text label: '_' and '^' literal, ' doubled. */
+static void gp_escape(const char *s, char *out, size_t len)
+{
+    size_t k = 0;
+    for (; *s && k + 3 < len; s++) {
+        if (*s == '_' || *s == '^' || *s == '{' || *s == '}' || *s == '@' || *s == '&' || *s == '~')
+            out[k++] = '\\';
+        else if (*s == '\'')
+            out[k++] = '\'';
+        out[k++] = *s;
+    }
+    out[k] = '\0';
+}
+
+/* The diagrams: error against CPU time (and RHS evaluations), one line per family (root
+ * finding off dashed), and the order study. */
+static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res, gd_error *err)
+{
+    sbuf b = {0};
+    int chaotic = res->ref.chaotic;
+    int pairs = c->wp_root_finding_off;
+    for (int f = 0; f < res->nfamilies; f++) {
+        sb_printf(&b, "$F%d << EOD\n", f);
+        for (int i = 0; i < res->nruns; i++) {
+            const gd_wp_run *r = &res->runs[i];
+            if (r->family != f || r->status != GD_WP_OK)
+                continue;
+            sb_val(&b, r->cpu_s);
+            sb_val(&b, (double)r->rhs_evals / (double)r->periods);
+            sb_val(&b, clampe(chaotic ? r->err_short : r->err_poincare));
+            sb_val(&b, clampe(r->err_rms));
+            sb_val(&b, clampe(r->err_events));
+            sb_val(&b, clampe(r->err_mle));
+            sb_printf(&b, "\n");
+        }
+        sb_printf(&b, "EOD\n");
+    }
+    for (int k = 0; k < res->norders; k++) {
+        sb_printf(&b, "$O%d << EOD\n", k);
+        const gd_wp_order *O = &res->orders[k];
+        for (int l = 0; l < O->nlevels; l++)
+            if (isfinite(O->err[l]))
+                sb_printf(&b, "%d %.6g\n", O->steps[l], clampe(O->err[l]));
+        sb_printf(&b, "EOD\n");
+    }
+    static const char *fmt[2][3] = {{"pngcairo size 1500,1400 font ',10'", "png", ".png"},
+                                    {"svg size 1500,1400 dynamic font 'sans,10'", "svg", ".svg"}};
+    char title[600], refm[200];
+    gp_escape(c->title[0] ? c->title : c->path, title, sizeof title);
+    gp_escape(res->ref.method, refm, sizeof refm);
+    char primary[128];
+    if (chaotic)
+        snprintf(primary, sizeof primary, "trajectory error, first %ld periods", res->horizon_periods);
+    else
+        snprintf(primary, sizeof primary, "Poincare points error, %ld periods", res->window_periods);
+    for (int fm = 0; fm < 2; fm++) {
+        sb_printf(&b, "set terminal %s\nset output '%s/.work_precision%s.tmp'\n", fmt[fm][0], dir, fmt[fm][2]);
+        sb_printf(&b, "set datafile missing '?'\nset grid\nset logscale xy\nset format y '10^{%%L}'\n"
+                      "set key outside right top vertical font ',8'\n"
+                      "set multiplot layout 3,2 title '%s: %s (%s), reference %s, floor %.1e'\n",
+                  title, res->ref.motion, chaotic ? "chaotic" : "periodic", refm, res->ref.floor);
+        struct {
+            int xcol, ycol;
+            const char *xl, *yl;
+        } panels[] = {
+            {1, 3, "CPU time (s)", primary},
+            {2, 3, "RHS evaluations per mesh period", primary},
+            {1, 4, "CPU time (s)", "RMS acceleration, relative error"},
+            {1, 5, "CPU time (s)", chaotic ? "event time error (periods), horizon" : "event time error (periods)"},
+            {1, 6, "CPU time (s)", "largest Lyapunov exponent error (per period)"},
+        };
+        int np = chaotic && c->wp_lyapunov ? 5 : 4;
+        for (int p = 0; p < np; p++) {
+            /* a run that went unstable has errors of 1e20: keep the axes on the accurate ones */
+            sb_printf(&b, "set xlabel '%s'\nset ylabel '%s'\nset title '%s'\nset yrange [*:10]\n", panels[p].xl,
+                      panels[p].yl, panels[p].yl);
+            sb_printf(&b, "plot ");
+            int drawn = 0;
+            for (int f = 0; f < res->nfamilies; f++) {
+                const gd_wp_family *F = &res->families[f];
+                if (!drawable(res, f, panels[p].xcol, panels[p].ycol))
+                    continue;
+                int color = pairs ? f / 2 + 1 : f + 1;
+                sb_printf(&b, "%s$F%d using %d:%d with linespoints lc %d dt %d pt %d ps 0.8 title '%s'",
+                          drawn++ ? ", " : "", f, panels[p].xcol, panels[p].ycol, color, F->root_finding ? 1 : 2,
+                          F->root_finding ? 7 : 6, F->name);
+            }
+            if (!drawn)
+                sb_printf(&b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne\n");
+            else if (panels[p].ycol == 3)
+                sb_printf(&b, ", %.6g with lines lc rgb '#888888' dt 3 title 'reference floor'\n", res->ref.floor);
+            else
+                sb_printf(&b, "\n");
+        }
+        if (res->norders > 0) {
+            sb_printf(&b, "set xlabel 'steps per mesh period (fixed step)'\nset ylabel 'error, first %ld periods'\n"
+                          "set title 'Order study: events located (solid) or not (dashed)'\nplot ",
+                      res->horizon_periods);
+            int drawn = 0;
+            for (int k = 0; k < res->norders; k++) {
+                const gd_wp_order *O = &res->orders[k];
+                const gd_wp_family *F = &res->families[O->family];
+                int ok = 0;
+                for (int l = 0; l < O->nlevels; l++)
+                    ok |= isfinite(O->err[l]) && O->err[l] <= 10;
+                if (!ok)
+                    continue;
+                int color = pairs ? O->family / 2 + 1 : O->family + 1;
+                char ord[32];
+                if (isfinite(O->order))
+                    snprintf(ord, sizeof ord, "%.2f", O->order);
+                else
+                    snprintf(ord, sizeof ord, "-");
+                sb_printf(&b, "%s$O%d using 1:2 with linespoints lc %d dt %d pt %d ps 0.8 title '%s: %s'",
+                          drawn++ ? ", " : "", k, color, F->root_finding ? 1 : 2, F->root_finding ? 7 : 6, F->name,
+                          ord);
+            }
+            if (!drawn)
+                sb_printf(&b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne");
+            sb_printf(&b, "\n");
+        }
+        sb_printf(&b, "unset multiplot\nunset output\n");
+    }
+    if (b.bad) {
+        free(b.p);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
+    }
+    gd_status st = gd_gnuplot_run(dir, b.p, err);
+    free(b.p);
+    for (int fm = 0; fm < 2; fm++) {
+        char tmp[1400], fin[1400];
+        snprintf(tmp, sizeof tmp, "%s/.work_precision%s.tmp", dir, fmt[fm][2]);
+        snprintf(fin, sizeof fin, "%s/work_precision%s", dir, fmt[fm][2]);
+        if (st == GD_OK && rename(tmp, fin) != 0)
+            st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
+        unlink(tmp);
+    }
+    return st;
+}
+
+int run_work_precision(const cli_case_args *a, gd_case *cp, const char *dir)
+{
+    gd_case c = *cp;
+    gd_error err = {0};
+    gd_model m;
+    if (gd_model_build(&c, &m, &err) != GD_OK)
+        return cli_fail(&err);
+    if (gd_mkdir_p(dir, &err) != GD_OK)
+        return cli_fail(&err);
+    wp_out o = {a->quiet, !a->quiet && isatty(2)};
+    if (!a->quiet)
+        printf("%s: work-precision of %s, %d transient + %d recorded mesh periods\n", dir,
+               c.title[0] ? c.title : c.path, c.transient_periods, c.record_periods);
+    gd_wp_hooks hooks = {on_start, on_done};
+    gd_wp_result res;
+    gd_status st = gd_workprec_run(&c, &m, &hooks, &o, &res, &err);
+    if (o.tty)
+        fprintf(stderr, "\r%80s\r", "");
+    if (st != GD_OK)
+        return cli_fail(&err);
+    const char *files[8];
+    int nfiles = 0;
+    st = write_tables(dir, &res, &err);
+    if (st != GD_OK)
+        goto fail;
+    files[nfiles++] = "work_precision.csv";
+    if (res.norders > 0) {
+        files[nfiles++] = "order_study.csv";
+        files[nfiles++] = "orders.csv";
+    }
+    const char *note = NULL;
+    if (c.plots) {
+        if (!gd_gnuplot_available()) {
+            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
+        } else {
+            gd_error perr = {0};
+            if (draw(dir, &c, &res, &perr) == GD_OK) {
+                files[nfiles++] = "work_precision.png";
+                files[nfiles++] = "work_precision.svg";
+            } else {
+                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
+            }
+        }
+    }
+    files[nfiles++] = "summary.json";
+    st = gd_summary_write_workprec(dir, &c, &m, &res, files, nfiles, &err);
+    if (st != GD_OK)
+        goto fail;
+    if (note && !a->quiet)
+        fprintf(stderr, "geardyn: note: %s\n", note);
+    if (!res.ref.converged)
+        fprintf(stderr, "geardyn: warning: the reference has not converged: it differs from its check (%s) by %.3g, "
+                "above workprecision.reference_max_error = %g; errors below that are not resolved\n",
+                res.ref.check_method, res.ref.chaotic ? res.ref.check_short : res.ref.check_poincare,
+                c.wp_reference_max_error);
+    if (!a->quiet) {
+        printf("reference %s: %s (%s), RMS %.6g m/s^2, %ld events; check %s differs by %.3g (Poincare), %.3g "
+               "(short horizon), %.3g (RMS)\n",
+               res.ref.method, res.ref.motion, res.ref.chaotic ? "chaotic" : "periodic", res.ref.rms_accel_mps2,
+               res.ref.events, res.ref.check_method, res.ref.check_poincare, res.ref.check_short, res.ref.check_rms);
+        if (res.norders > 0) {
+            printf("convergence order of the Poincare points (fixed steps, first %ld periods):\n", res.horizon_periods);
+            for (int i = 0; i < res.norders; i++) {
+                const gd_wp_order *O = &res.orders[i];
+                printf("  %-14s nominal %d, measured %s", res.families[O->family].name, O->nominal,
+                       isfinite(O->order) ? "" : "-");
+                if (isfinite(O->order))
+                    printf("%.2f (steps %d to %d); %.2f over steps %d to %d", O->order, O->steps[O->fit_from],
+                           O->steps[O->fit_to], O->order_range, O->steps[O->range_from], O->steps[O->fit_to]);
+                printf("\n");
+            }
+        }
+        static const double targets[] = {1e-3, 1e-6, 1e-8};
+        for (int ev = 0; ev < 2; ev++)
+            for (int k = 0; k < 3; k++) {
+                int i = gd_workprec_cheapest(&res, targets[k], ev);
+                printf("cheapest at error %.0e%s: ", targets[k], ev ? " with the event times too" : "");
+                if (i >= 0)
+                    printf("%s, %.1f us per mesh period\n", res.runs[i].label,
+                           1e6 * res.runs[i].cpu_s / (double)res.runs[i].periods);
+                else
+                    printf("none reached it\n");
+            }
+        printf("  %.1f s in all\n", res.wall_s);
+    }
+    gd_workprec_free(&res);
+    return 0;
+fail:
+    gd_workprec_free(&res);
+    return cli_fail(&err);
+}

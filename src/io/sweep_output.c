@@ -1,0 +1,776 @@
+/* Sweep records (journal lines, MPI messages), the journal read back for --resume, and the
+ * final tables and summary.json, written in slot order. */
+#include "geardyn/gd_output.h"
+#include "geardyn/gd_sweep.h"
+#include "geardyn/gd_version.h"
+
+#include <errno.h>
+#include <jansson.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* ---- records ---- */
+
+static uint32_t crc32_of(const char *s, size_t n)
+{
+    uint32_t c = 0xFFFFFFFFu;
+    for (size_t i = 0; i < n; i++) {
+        c ^= (unsigned char)s[i];
+        for (int k = 0; k < 8; k++)
+            c = (c >> 1) ^ (0xEDB88320u & (0u - (c & 1u)));
+    }
+    return ~c;
+}
+
+/* body + " *crc32\n", malloc'd */
+static char *seal(const char *body, size_t n, size_t *len)
+{
+    char *out = malloc(n + 12);
+    if (!out)
+        return NULL;
+    memcpy(out, body, n);
+    snprintf(out + n, 12, " *%08x\n", (unsigned)crc32_of(body, n));
+    *len = n + 11;
+    return out;
+}
+
+/* The body of a sealed line (without its '\n'), or 0 when the seal is missing or wrong. */
+static size_t unseal(const char *line, size_t len)
+{
+    if (len > 0 && line[len - 1] == '\n')
+        len--;
+    if (len < 11)
+        return 0;
+    const char *star = line + len - 10;
+    if (star[0] != ' ' || star[1] != '*')
+        return 0;
+    uint32_t v = 0;
+    for (int i = 2; i < 10; i++) {
+        char ch = star[i];
+        int d = ch >= '0' && ch <= '9' ? ch - '0' : ch >= 'a' && ch <= 'f' ? ch - 'a' + 10 : -1;
+        if (d < 0)
+            return 0;
+        v = v * 16u + (uint32_t)d;
+    }
+    size_t body = (size_t)(star - line);
+    return crc32_of(line, body) == v ? body : 0;
+}
+
+GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t len)
+{
+    char body[256];
+    int n = snprintf(body, sizeof body, "GDSWEEP 1 %s %016llx %d %d %ld", GD_VERSION_STRING,
+                     (unsigned long long)p->fingerprint, p->nslots, p->nresp, p->npoincare);
+    snprintf(buf, len, "%s *%08x\n", body, (unsigned)crc32_of(body, (size_t)n));
+}
+
+GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_point *pt, char **line, size_t *len,
+                                        gd_error *err)
+{
+    char *buf = NULL;
+    size_t sz = 0;
+    FILE *f = open_memstream(&buf, &sz);
+    if (!f)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory formatting a sweep record");
+    fprintf(f, "P %d %d %d %d %d %s %d %d %d %d %d", pt->slot, pt->chain, pt->pos, pt->branch, pt->status,
+            pt->motion[0] ? pt->motion : "-", pt->period_n, pt->poincare_distinct, pt->impact_regime[0],
+            pt->impact_regime[1], pt->impact_regime[2]);
+    for (int i = 0; i < 3; i++)
+        fprintf(f, " %.17g", pt->rms_accel_mps2[i]);
+    fprintf(f, " %.17g %.17g %ld %ld %ld %.17g", pt->mle_per_period, pt->mle_per_s, pt->steps, pt->rhs_evals,
+            pt->events, pt->wall_s);
+    fprintf(f, " %d", p->n);
+    for (int i = 0; i < p->n; i++)
+        fprintf(f, " %.17g", pt->y_final[i]);
+    fprintf(f, " %d", p->nclear);
+    for (int i = 0; i < p->nclear; i++)
+        fprintf(f, " %d", pt->md_final.mode[i]);
+    fprintf(f, " %d", p->nmesh);
+    for (int i = 0; i < p->nmesh; i++)
+        fprintf(f, " %d", pt->md_final.rect_level[i]);
+    fprintf(f, " %d %ld %d", pt->md_final.from_state, pt->npoincare, p->nresp);
+    for (long i = 0; i < pt->npoincare * p->nresp; i++)
+        fprintf(f, " %.17g", pt->poincare[i]);
+    char msg[sizeof pt->error];
+    snprintf(msg, sizeof msg, "%s", pt->error[0] ? pt->error : "-");
+    for (char *q = msg; *q; q++)
+        if (*q == '\n' || *q == '\r')
+            *q = ' ';
+    fprintf(f, " %d %s", pt->error_code, msg);
+    if (fclose(f) != 0 || !buf) {
+        free(buf);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory formatting a sweep record");
+    }
+    *line = seal(buf, sz, len);
+    free(buf);
+    if (!*line)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory formatting a sweep record");
+    return GD_OK;
+}
+
+typedef struct tok {
+    char *q;
+    int bad;
+} tok;
+
+static long t_long(tok *t)
+{
+    if (t->bad)
+        return 0;
+    char *end;
+    errno = 0;
+    long v = strtol(t->q, &end, 10);
+    if (end == t->q || errno || (*end != ' ' && *end != '\0')) {
+        t->bad = 1;
+        return 0;
+    }
+    t->q = *end ? end + 1 : end;
+    return v;
+}
+
+static double t_double(tok *t)
+{
+    if (t->bad)
+        return 0;
+    char *end;
+    double v = strtod(t->q, &end);
+    if (end == t->q || (*end != ' ' && *end != '\0')) {
+        t->bad = 1;
+        return 0;
+    }
+    t->q = *end ? end + 1 : end;
+    return v;
+}
+
+static void t_word(tok *t, char *out, size_t cap)
+{
+    if (t->bad)
+        return;
+    size_t l = strcspn(t->q, " ");
+    if (l == 0 || l >= cap) {
+        t->bad = 1;
+        return;
+    }
+    memcpy(out, t->q, l);
+    out[l] = '\0';
+    t->q += l + (t->q[l] ? 1 : 0);
+}
+
+GD_API gd_status gd_sweep_record_parse(const gd_sweep_plan *p, const char *line, size_t len, gd_sweep_point *pts,
+                                       int *slot, gd_error *err)
+{
+    size_t body = unseal(line, len);
+    if (!body)
+        return gd_error_set(err, GD_ERR_INPUT, "sweep record: torn or corrupt (checksum)");
+    char *b = malloc(body + 1);
+    double *pc = NULL;
+    if (!b)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading a sweep record");
+    memcpy(b, line, body);
+    b[body] = '\0';
+    gd_sweep_point pt;
+    memset(&pt, 0, sizeof pt);
+    tok t = {b, 0};
+    char w[64];
+    t_word(&t, w, sizeof w);
+    if (t.bad || strcmp(w, "P") != 0)
+        goto bad;
+    pt.slot = (int)t_long(&t);
+    if (t.bad || pt.slot < 0 || pt.slot >= p->nslots)
+        goto bad;
+    const int *si = &p->slot_info[4 * pt.slot];
+    pt.chain = (int)t_long(&t);
+    pt.pos = (int)t_long(&t);
+    pt.branch = (int)t_long(&t);
+    pt.status = (int)t_long(&t);
+    if (t.bad || pt.chain != si[0] || pt.pos != si[1] || pt.branch != p->chains[si[0]].branch ||
+        (pt.status != GD_POINT_DONE && pt.status != GD_POINT_FAILED))
+        goto bad;
+    t_word(&t, pt.motion, sizeof pt.motion);
+    if (strcmp(pt.motion, "-") == 0)
+        pt.motion[0] = '\0';
+    pt.period_n = (int)t_long(&t);
+    pt.poincare_distinct = (int)t_long(&t);
+    for (int i = 0; i < 3; i++)
+        pt.impact_regime[i] = (int)t_long(&t);
+    for (int i = 0; i < 3; i++)
+        pt.rms_accel_mps2[i] = t_double(&t);
+    pt.mle_per_period = t_double(&t);
+    pt.mle_per_s = t_double(&t);
+    pt.steps = t_long(&t);
+    pt.rhs_evals = t_long(&t);
+    pt.events = t_long(&t);
+    pt.wall_s = t_double(&t);
+    if (t_long(&t) != p->n || t.bad)
+        goto bad;
+    for (int i = 0; i < p->n; i++)
+        pt.y_final[i] = t_double(&t);
+    if (t_long(&t) != p->nclear || t.bad)
+        goto bad;
+    for (int i = 0; i < p->nclear; i++) {
+        pt.md_final.mode[i] = (int)t_long(&t);
+        if (pt.md_final.mode[i] < -1 || pt.md_final.mode[i] > 1)
+            goto bad;
+    }
+    if (t_long(&t) != p->nmesh || t.bad)
+        goto bad;
+    for (int i = 0; i < p->nmesh; i++)
+        pt.md_final.rect_level[i] = (int)t_long(&t);
+    pt.md_final.from_state = (int)t_long(&t);
+    pt.npoincare = t_long(&t);
+    if (t.bad || pt.npoincare != (pt.status == GD_POINT_DONE ? p->npoincare : 0) || t_long(&t) != p->nresp)
+        goto bad;
+    if (pt.npoincare > 0) {
+        pc = malloc(sizeof(double) * (size_t)pt.npoincare * (size_t)p->nresp);
+        if (!pc) {
+            free(b);
+            return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading a sweep record");
+        }
+        for (long i = 0; i < pt.npoincare * p->nresp; i++)
+            pc[i] = t_double(&t);
+    }
+    pt.error_code = (int)t_long(&t);
+    if (t.bad || !*t.q)
+        goto bad;
+    snprintf(pt.error, sizeof pt.error, "%s", strcmp(t.q, "-") == 0 ? "" : t.q);
+    /* the plan's fields */
+    gd_sweep_point *dst = &pts[pt.slot];
+    pt.idx[0] = dst->idx[0];
+    pt.idx[1] = dst->idx[1];
+    pt.value[0] = dst->value[0];
+    pt.value[1] = dst->value[1];
+    pt.poincare = pc;
+    gd_sweep_point_clear(dst);
+    *dst = pt;
+    *slot = pt.slot;
+    free(b);
+    return GD_OK;
+bad:
+    free(b);
+    free(pc);
+    return gd_error_set(err, GD_ERR_INPUT, "sweep record: malformed or of another sweep");
+}
+
+/* ---- the journal ---- */
+
+static gd_status read_all(const char *path, char **data, size_t *len, int *missing, gd_error *err)
+{
+    *data = NULL;
+    *len = 0;
+    *missing = 0;
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        if (errno == ENOENT) {
+            *missing = 1;
+            return GD_OK;
+        }
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
+    }
+    size_t cap = 1 << 16, n = 0;
+    char *buf = malloc(cap + 1);
+    while (buf) {
+        if (n == cap) {
+            char *nb = realloc(buf, 2 * cap + 1);
+            if (!nb) {
+                free(buf);
+                buf = NULL;
+                break;
+            }
+            buf = nb;
+            cap *= 2;
+        }
+        size_t r = fread(buf + n, 1, cap - n, f);
+        n += r;
+        if (r == 0)
+            break;
+    }
+    int bad = ferror(f);
+    fclose(f);
+    if (!buf)
+        return gd_error_set(err, GD_ERR_NOMEM, "%s: out of memory reading the journal", path);
+    if (bad) {
+        free(buf);
+        return gd_error_set(err, GD_ERR_IO, "%s: read error", path);
+    }
+    buf[n] = '\0';
+    *data = buf;
+    *len = n;
+    return GD_OK;
+}
+
+GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
+                                       size_t *text_len, int *loaded, int *ignored, gd_error *err)
+{
+    char header[300];
+    gd_sweep_journal_header(p, header, sizeof header);
+    size_t hl = strlen(header);
+    *loaded = *ignored = 0;
+    *text = NULL;
+    *text_len = 0;
+    char *data;
+    size_t len;
+    int missing;
+    gd_status st = read_all(path, &data, &len, &missing, err);
+    if (st != GD_OK)
+        return st;
+    long *off = calloc((size_t)p->nslots, sizeof(long)); /* offset + 1 of the kept line of each slot */
+    if (!off) {
+        free(data);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading the journal");
+    }
+    size_t pos = 0;
+    if (!missing && len > 0) {
+        char *nl = memchr(data, '\n', len);
+        if (!nl) { /* torn header: nothing was recorded */
+            *ignored = 1;
+            pos = len;
+        } else {
+            size_t l0 = (size_t)(nl - data) + 1;
+            if (l0 != hl || memcmp(data, header, hl) != 0) {
+                int ours = unseal(data, l0) != 0 && strncmp(data, "GDSWEEP ", 8) == 0;
+                free(data);
+                free(off);
+                return gd_error_set(err, GD_ERR_INPUT, "%s: %s; run without --resume to start the sweep over", path,
+                                    ours ? "written for another sweep (the case, the sweep or geardyn changed)"
+                                         : "not a sweep journal, or its header is corrupt");
+            }
+            pos = l0;
+        }
+    }
+    while (pos < len) {
+        char *nl = memchr(data + pos, '\n', len - pos);
+        if (!nl) { /* the last line, torn by a kill */
+            (*ignored)++;
+            break;
+        }
+        size_t l = (size_t)(nl - (data + pos)) + 1;
+        int slot = -1;
+        gd_error e2 = {0};
+        if (l > 1 && data[pos] == 'P') {
+            /* a second record of a slot (never written twice; keep the first) */
+            long sl = -1;
+            if (sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots && off[sl]) {
+                (*ignored)++;
+                pos += l;
+                continue;
+            }
+            st = gd_sweep_record_parse(p, data + pos, l, pts, &slot, &e2);
+            if (st == GD_ERR_NOMEM) {
+                free(data);
+                free(off);
+                *err = e2;
+                return st;
+            }
+        }
+        if (slot >= 0)
+            off[slot] = (long)pos + 1;
+        else
+            (*ignored)++;
+        pos += l;
+    }
+    /* a continuation chain needs every point before the ones it keeps */
+    if (p->mode == GD_SWEEP_CONTINUATION)
+        for (int c = 0; c < p->nchains; c++) {
+            int gap = 0;
+            for (int k = 0; k < p->chains[c].count; k++) {
+                int s = p->chains[c].first + k;
+                if (!off[s])
+                    gap = 1;
+                else if (gap) {
+                    gd_sweep_point_clear(&pts[s]);
+                    off[s] = 0;
+                    (*ignored)++;
+                }
+            }
+        }
+    /* the journal as it should be: the header and the kept lines, in their order */
+    char *out = malloc(hl + len + 1);
+    if (!out) {
+        free(data);
+        free(off);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading the journal");
+    }
+    memcpy(out, header, hl);
+    size_t ol = hl;
+    for (int s = 0; s < p->nslots; s++)
+        if (off[s])
+            (*loaded)++;
+    /* walk the file again to keep the original order */
+    pos = 0;
+    while (pos < len) {
+        char *nl = memchr(data + pos, '\n', len - pos);
+        if (!nl)
+            break;
+        size_t l = (size_t)(nl - (data + pos)) + 1;
+        long sl = -1;
+        if (data[pos] == 'P' && sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots &&
+            off[sl] == (long)pos + 1) {
+            memcpy(out + ol, data + pos, l);
+            ol += l;
+        }
+        pos += l;
+    }
+    out[ol] = '\0';
+    free(data);
+    free(off);
+    *text = out;
+    *text_len = ol;
+    return GD_OK;
+}
+
+/* ---- tables ---- */
+
+static void fmt_num(FILE *f, const char *fmt, double v)
+{
+    if (isfinite(v))
+        fprintf(f, fmt, v);
+    else
+        fputs("nan", f);
+}
+
+static void csv_text(FILE *f, const char *s)
+{
+    if (!strpbrk(s, ",\"\n")) {
+        fputs(s, f);
+        return;
+    }
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"')
+            fputc('"', f);
+        fputc(*s == '\n' ? ' ' : *s, f);
+    }
+    fputc('"', f);
+}
+
+GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
+                                       gd_error *err)
+{
+    gd_atomic_file sw, bf;
+    gd_status st = gd_atomic_open(&sw, dir, "sweep.csv", err);
+    if (st != GD_OK)
+        return st;
+    if ((st = gd_atomic_open(&bf, dir, "bifurcation.csv", err)) != GD_OK) {
+        gd_atomic_abort(&sw);
+        return st;
+    }
+    int map = p->naxes > 1;
+    fprintf(sw.fp, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
+                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,status,error\n",
+            map ? ",parameter2" : "");
+    fprintf(bf.fp, "parameter,direction%s", map ? ",parameter2" : "");
+    for (int r = 0; r < p->nresp; r++)
+        fprintf(bf.fp, ",%s", p->resp[r].name);
+    fputc('\n', bf.fp);
+    for (int s = 0; s < p->nslots; s++) {
+        const gd_sweep_point *pt = &pts[s];
+        const char *dirn = gd_sweep_branch_name(pt->branch);
+        char v1[40], v2[40] = "";
+        snprintf(v1, sizeof v1, "%.12g", pt->value[0]);
+        if (map)
+            snprintf(v2, sizeof v2, ",%.12g", pt->value[1]);
+        int done = pt->status == GD_POINT_DONE;
+        fprintf(sw.fp, "%s,%s,", v1, dirn);
+        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[2] : NAN);
+        fputc(',', sw.fp);
+        fmt_num(sw.fp, "%.9g", done ? pt->mle_per_period : NAN);
+        fprintf(sw.fp, ",%s,%s%s,%d,%d,", pt->status == GD_POINT_PENDING ? "pending" : pt->motion,
+                done ? gd_impact_regime_name(pt->impact_regime[2]) : "", v2, pt->period_n, pt->poincare_distinct);
+        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[0] : NAN);
+        fputc(',', sw.fp);
+        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[1] : NAN);
+        fprintf(sw.fp, ",%s,%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "",
+                done ? gd_impact_regime_name(pt->impact_regime[1]) : "");
+        fmt_num(sw.fp, "%.9g", done ? pt->mle_per_s : NAN);
+        fprintf(sw.fp, ",%s,", done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
+        csv_text(sw.fp, pt->error);
+        fputc('\n', sw.fp);
+        for (long k = 0; k < pt->npoincare; k++) {
+            fprintf(bf.fp, "%s,%s%s", v1, dirn, v2);
+            for (int r = 0; r < p->nresp; r++) {
+                fputc(',', bf.fp);
+                fmt_num(bf.fp, "%.10g", pt->poincare[k * p->nresp + r]);
+            }
+            fputc('\n', bf.fp);
+        }
+    }
+    st = gd_atomic_commit(&sw, err);
+    if (st == GD_OK)
+        st = gd_atomic_commit(&bf, err);
+    else
+        gd_atomic_abort(&bf);
+    return st;
+}
+
+/* ---- summary.json ---- */
+
+static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
+static json_t *case_json(const gd_case *c)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    json_t *root = json_object();
+    for (size_t i = 0; i < n; i++) {
+        json_t *sec = json_object_get(root, s[i].section);
+        if (!sec) {
+            sec = json_object();
+            json_object_set_new(root, s[i].section, sec);
+        }
+        json_t *e = json_object();
+        const void *fp = (const char *)c + s[i].offset;
+        switch (s[i].type) {
+        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
+        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
+        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
+        case GD_KEY_DLIST: {
+            json_t *a = json_array();
+            int cnt = *(const int *)((const char *)c + s[i].count_offset);
+            for (int j = 0; j < cnt; j++)
+                json_array_append_new(a, json_real(((const double *)fp)[j]));
+            json_object_set_new(e, "value", a);
+            break;
+        }
+        default: {
+            char buf[1200];
+            gd_case_format_value(c, i, buf, sizeof buf);
+            json_object_set_new(e, "value", json_string(buf));
+        }
+        }
+        json_object_set_new(e, "unit", json_string(s[i].unit));
+        int line;
+        gd_source src = gd_case_source(c, i, &line);
+        char where[64];
+        if (src == GD_SRC_FILE)
+            snprintf(where, sizeof where, "file:%d", line);
+        else if (src == GD_SRC_SET)
+            snprintf(where, sizeof where, "--set #%d", line);
+        else
+            snprintf(where, sizeof where, "%s", gd_source_name(src));
+        json_object_set_new(e, "source", json_string(where));
+        json_object_set_new(sec, s[i].key, e);
+    }
+    return root;
+}
+
+static json_t *axis_json(const gd_case *c, const gd_sweep_plan *p, int a)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "name", json_string(p->parameter[a]));
+    json_object_set_new(o, "unit", json_string(p->unit[a]));
+    json_object_set_new(o, "from", num(a ? c->sweep_from2 : c->sweep_from));
+    json_object_set_new(o, "to", num(a ? c->sweep_to2 : c->sweep_to));
+    json_object_set_new(o, "points", json_integer(p->npoints[a]));
+    json_object_set_new(o, "spacing", json_string(p->spacing[a] == GD_SWEEP_LOG ? "log" : "linear"));
+    json_t *v = json_array();
+    for (int i = 0; i < p->npoints[a]; i++)
+        json_array_append_new(v, num(p->values[a][i]));
+    json_object_set_new(o, "values", v);
+    return o;
+}
+
+static int differ(const gd_sweep_point *u, const gd_sweep_point *d)
+{
+    if (u->status != GD_POINT_DONE || d->status != GD_POINT_DONE)
+        return 0;
+    if (strcmp(u->motion, d->motion) != 0)
+        return 1;
+    double a = u->rms_accel_mps2[2], b = d->rms_accel_mps2[2];
+    return fabs(a - b) > 0.05 * fmax(fabs(a), fabs(b));
+}
+
+static void count_in(json_t *obj, const char *key)
+{
+    json_t *v = json_object_get(obj, key);
+    json_object_set_new(obj, key, json_integer(v ? json_integer_value(v) + 1 : 1));
+}
+
+GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
+                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
+                                        gd_error *err)
+{
+    static const char *models[] = {"torsional", "torsional-lr", "bta"};
+    json_t *root = json_object();
+    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
+    json_object_set_new(root, "analysis", json_string("sweep"));
+    json_object_set_new(root, "model", json_string(c->model >= 0 && c->model <= 2 ? models[c->model] : "?"));
+    json_t *cs = json_object();
+    json_object_set_new(cs, "path", json_string(c->path));
+    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(root, "case", cs);
+
+    json_t *sw = json_object();
+    json_object_set_new(sw, "parameter", axis_json(c, p, 0));
+    json_object_set_new(sw, "parameter2", p->naxes > 1 ? axis_json(c, p, 1) : json_null());
+    json_object_set_new(sw, "mode", json_string(p->mode == GD_SWEEP_CONTINUATION ? "continuation" : "independent"));
+    static const char *dirs[] = {"up", "down", "both"};
+    json_object_set_new(sw, "direction", p->mode == GD_SWEEP_CONTINUATION ? json_string(dirs[p->direction])
+                                                                           : json_null());
+    json_t *rs = json_array();
+    for (int r = 0; r < p->nresp; r++)
+        json_array_append_new(rs, json_string(p->resp[r].name));
+    json_object_set_new(sw, "responses", rs);
+    json_object_set_new(sw, "responses_unit", json_string("dimensionless: lengths over solver.characteristic_length_um, "
+                                                          "rates over that length times the natural frequency"));
+    json_object_set_new(sw, "poincare_samples_per_point", json_integer(p->npoincare));
+    json_object_set_new(sw, "points", json_integer(p->nslots));
+    json_object_set_new(sw, "mle_unit", json_string("per mesh period"));
+    json_object_set_new(root, "sweep", sw);
+
+    /* results */
+    json_t *res = json_object();
+    json_t *motion = json_object(), *impact = json_object(), *failed = json_array();
+    long ndone = 0, nfail = 0, npend = 0, steps = 0, rhs = 0, events = 0;
+    double rmin = INFINITY, rmax = -INFINITY, rmax_at = NAN, rmax_at2 = NAN, lmin = INFINITY, lmax = -INFINITY;
+    double lmax_at = NAN, lmax_at2 = NAN;
+    long positive = 0;
+    for (int s = 0; s < p->nslots; s++) {
+        const gd_sweep_point *pt = &pts[s];
+        steps += pt->steps;
+        rhs += pt->rhs_evals;
+        events += pt->events;
+        if (pt->status == GD_POINT_PENDING) {
+            npend++;
+            continue;
+        }
+        if (pt->status == GD_POINT_FAILED) {
+            nfail++;
+            count_in(motion, "failed");
+            json_t *f = json_object();
+            json_object_set_new(f, "parameter", num(pt->value[0]));
+            if (p->naxes > 1)
+                json_object_set_new(f, "parameter2", num(pt->value[1]));
+            json_object_set_new(f, "direction", json_string(gd_sweep_branch_name(pt->branch)));
+            json_object_set_new(f, "error", json_string(gd_status_name(pt->error_code)));
+            json_object_set_new(f, "message", json_string(pt->error));
+            json_array_append_new(failed, f);
+            continue;
+        }
+        ndone++;
+        count_in(motion, pt->motion);
+        count_in(impact, gd_impact_regime_name(pt->impact_regime[2]));
+        double r = pt->rms_accel_mps2[2], l = pt->mle_per_period;
+        if (r < rmin)
+            rmin = r;
+        if (r > rmax) {
+            rmax = r;
+            rmax_at = pt->value[0];
+            rmax_at2 = pt->value[1];
+        }
+        if (isfinite(l)) {
+            if (l < lmin)
+                lmin = l;
+            if (l > lmax) {
+                lmax = l;
+                lmax_at = pt->value[0];
+                lmax_at2 = pt->value[1];
+            }
+            positive += l > 0;
+        }
+    }
+    json_object_set_new(res, "points_done", json_integer(ndone));
+    json_object_set_new(res, "points_failed", json_integer(nfail));
+    json_object_set_new(res, "points_pending", json_integer(npend));
+    json_object_set_new(res, "motion_counts", motion);
+    json_object_set_new(res, "impact_regime_counts", impact);
+    json_t *ra = json_object();
+    json_object_set_new(ra, "min", num(rmin));
+    json_object_set_new(ra, "max", num(rmax));
+    json_object_set_new(ra, "max_at", num(rmax_at));
+    if (p->naxes > 1)
+        json_object_set_new(ra, "max_at_parameter2", num(rmax_at2));
+    json_object_set_new(res, "rms_accel_mps2", ra);
+    json_t *la = json_object();
+    json_object_set_new(la, "min", num(lmin));
+    json_object_set_new(la, "max", num(lmax));
+    json_object_set_new(la, "max_at", num(lmax_at));
+    if (p->naxes > 1)
+        json_object_set_new(la, "max_at_parameter2", num(lmax_at2));
+    json_object_set_new(la, "positive_points", json_integer(positive));
+    json_object_set_new(res, "mle_per_period", la);
+    json_object_set_new(res, "failed", failed);
+
+    /* per branch (one-parameter sweeps): where the motion class changes, in chain order */
+    if (p->naxes == 1 && p->mode == GD_SWEEP_CONTINUATION) {
+        json_t *brs = json_array();
+        for (int ch = 0; ch < p->nchains; ch++) {
+            const gd_sweep_chain *cc = &p->chains[ch];
+            json_t *b = json_object(), *tr = json_array();
+            json_object_set_new(b, "direction", json_string(gd_sweep_branch_name(cc->branch)));
+            for (int k = 1; k < cc->count; k++) {
+                const gd_sweep_point *a = &pts[cc->first + k - 1], *q = &pts[cc->first + k];
+                if (a->status == GD_POINT_PENDING || q->status == GD_POINT_PENDING || strcmp(a->motion, q->motion) == 0)
+                    continue;
+                json_t *t = json_object();
+                json_object_set_new(t, "between", json_pack("[o,o]", num(a->value[0]), num(q->value[0])));
+                json_object_set_new(t, "from", json_string(a->motion));
+                json_object_set_new(t, "to", json_string(q->motion));
+                json_array_append_new(tr, t);
+            }
+            json_object_set_new(b, "motion_changes", tr);
+            json_array_append_new(brs, b);
+        }
+        json_object_set_new(res, "branches", brs);
+    }
+    /* hysteresis: where the up and down branches differ (motion class, or RMS by more than 5 %) */
+    if (p->mode == GD_SWEEP_CONTINUATION && p->direction == GD_SWEEP_BOTH) {
+        json_t *hy = json_array();
+        int n1 = p->npoints[0];
+        int *su = malloc(sizeof(int) * (size_t)n1), *sd = malloc(sizeof(int) * (size_t)n1);
+        int ascending = p->values[0][0] <= p->values[0][n1 - 1];
+        for (int ch = 0; su && sd && ch + 1 < p->nchains; ch += 2) {
+            const gd_sweep_chain *cu = &p->chains[ch], *cd = &p->chains[ch + 1];
+            for (int k = 0; k < n1; k++) {
+                su[pts[cu->first + k].idx[0]] = cu->first + k;
+                sd[pts[cd->first + k].idx[0]] = cd->first + k;
+            }
+            int start = -1;
+            for (int q = 0; q <= n1; q++) {
+                int i = q < n1 ? (ascending ? q : n1 - 1 - q) : -1;
+                int d = q < n1 && differ(&pts[su[i]], &pts[sd[i]]);
+                if (d && start < 0)
+                    start = q;
+                if (!d && start >= 0) {
+                    int i0 = ascending ? start : n1 - 1 - start, i1 = ascending ? q - 1 : n1 - q;
+                    json_t *h = json_object();
+                    json_object_set_new(h, "from", num(p->values[0][i0]));
+                    json_object_set_new(h, "to", num(p->values[0][i1]));
+                    json_object_set_new(h, "points", json_integer(q - start));
+                    if (p->naxes > 1)
+                        json_object_set_new(h, "parameter2", num(p->values[1][cu->row]));
+                    json_array_append_new(hy, h);
+                    start = -1;
+                }
+            }
+        }
+        free(su);
+        free(sd);
+        json_object_set_new(res, "hysteresis", hy);
+    }
+    json_object_set_new(root, "results", res);
+    json_t *sol = json_object();
+    json_object_set_new(sol, "steps", json_integer(steps));
+    json_object_set_new(sol, "rhs_evals", json_integer(rhs));
+    json_object_set_new(sol, "events", json_integer(events));
+    json_object_set_new(root, "solver", sol);
+    json_t *fl = json_array();
+    for (int i = 0; i < nfiles; i++)
+        json_array_append_new(fl, json_string(files[i]));
+    json_object_set_new(root, "files", fl);
+
+    gd_atomic_file f;
+    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
+    if (st == GD_OK) {
+        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
+            gd_atomic_abort(&f);
+            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
+        } else {
+            fputc('\n', f.fp);
+            st = gd_atomic_commit(&f, err);
+        }
+    }
+    json_decref(root);
+    return st;
+}

@@ -1,0 +1,87 @@
+#!/usr/bin/env bash
+# analysis = work-precision on the command line (docs/accuracy.md): a small grid on the torsional
+# model writes every table, the diagrams (when gnuplot is there), summary.json, atomically and
+# complete; bad [workprecision] input is refused with the key and the valid values. TAP output.
+set -u
+G=${GEARDYN:?}
+SRC=${GEARDYN_SOURCE:?}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+n=0; bad=0
+ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+
+cat > "$work/wp.ini" <<'INI'
+[scene]
+analysis = work-precision
+model = torsional
+title = test grid
+[run]
+transient_periods = 300
+record_periods = 20
+[workprecision]
+families = rk4,erk5,erk8
+rk4_steps_min = 32
+rk4_steps_max = 128
+rtol_loosest = 1e-4
+rtol_tightest = 1e-8
+rtols_per_decade = 1
+horizon_periods = 5
+order_steps_min = 16
+order_steps_max = 256
+INI
+"$G" check "$work/wp.ini" > /dev/null 2>&1; ok $? "geardyn check accepts a work-precision case"
+"$G" run "$work/wp.ini" --out "$work/out" > "$work/out.txt" 2>&1; rc=$?
+ok $rc "the small grid runs (exit status $rc)"
+for f in work_precision.csv order_study.csv orders.csv summary.json; do
+    [ -s "$work/out/$f" ]; ok $? "writes $f"
+done
+if command -v gnuplot > /dev/null; then
+    [ -s "$work/out/work_precision.png" ] && [ -s "$work/out/work_precision.svg" ]; ok $? "draws work_precision.png and .svg"
+else
+    grep -q "gnuplot is not installed" "$work/out.txt"; ok $? "says that gnuplot is missing"
+fi
+[ -z "$(ls -A "$work/out" | grep -E '^\.|tmp')" ]; ok $? "no temporary file left behind"
+# 3 families x 2 (root finding on and off): rk4 3 step counts, erk5 and erk8 5 tolerances each
+rows=$(($(wc -l < "$work/out/work_precision.csv") - 1))
+[ "$rows" -eq 26 ]; ok $? "work_precision.csv: 26 runs ($rows)"
+python3 - "$work/out" <<'PY'; ok $? "summary.json complete: reference converged, every run finished with its errors, orders measured"
+import json, sys, math
+d = json.load(open(sys.argv[1] + "/summary.json"))
+assert d["analysis"] == "work-precision"
+r = d["reference"]
+assert r["converged"] and r["check_difference"]["poincare"] < 1e-9, r
+assert r["motion"] == "period-1" and r["scene_class"] == "periodic", r
+assert len(d["runs"]) == 26
+for u in d["runs"]:
+    assert u["status"] == "ok", u
+    for k in ("poincare", "rms_accel_relative", "event_times_periods", "short_horizon"):
+        assert u["errors"][k] is not None and math.isfinite(u["errors"][k]), (u["label"], k)
+    assert u["cpu_s"] > 0 and u["rhs_evals"] > 0 and u["steps"] > 0 and u["events"] >= 0
+orders = {o["family"]: o["measured_order"] for o in d["orders"]}
+assert abs(orders["rk4"] - 4) < 0.4, orders
+assert orders["rk4-noroot"] < orders["rk4"] - 0.5, orders
+assert len(d["cheapest_at_target"]) == 12
+assert "work_precision.csv" in d["files"] and "summary.json" in d["files"]
+PY
+grep -q "convergence order of the Poincare points" "$work/out.txt"; ok $? "prints the measured orders"
+grep -q "cheapest at error 1e-06" "$work/out.txt"; ok $? "prints the cheapest setting per accuracy"
+
+# bad input: the key and the valid values
+"$G" check "$work/wp.ini" --set workprecision.families=rk4,erk7 > "$work/e1.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "workprecision.families: 'erk7'" "$work/e1.txt" && grep -q "valid orders of erk" "$work/e1.txt"
+ok $? "erk7 refused (exit $rc): $(head -c 200 "$work/e1.txt")"
+"$G" check "$work/wp.ini" --set workprecision.families=rk5 > "$work/e2.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "unknown family 'rk5'" "$work/e2.txt"; ok $? "unknown family refused (exit $rc)"
+"$G" check "$work/wp.ini" --set workprecision.check_order=8 --set workprecision.reference_order=8 > "$work/e3.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "check_order" "$work/e3.txt"; ok $? "a check by the reference's own method refused (exit $rc)"
+"$G" check "$work/wp.ini" --set workprecision.horizon_periods=50 > "$work/e4.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "horizon_periods: 50 longer than run.record_periods 20" "$work/e4.txt"
+ok $? "a horizon longer than the window refused (exit $rc)"
+"$G" check "$work/wp.ini" --set workprecision.rtol_tightest=1e-2 > "$work/e5.txt" 2>&1; rc=$?
+[ $rc -eq 2 ] && grep -q "rtol_tightest" "$work/e5.txt"; ok $? "tolerances in the wrong order refused (exit $rc)"
+# an interrupted or failed run leaves no partial files: a run whose reference cannot be computed
+"$G" run "$work/wp.ini" --out "$work/fail" --set solver.max_events_per_period=1 --quiet > "$work/e6.txt" 2>&1; rc=$?
+[ $rc -eq 1 ] && [ -z "$(ls -A "$work/fail" 2>/dev/null)" ]; ok $? "a failing transient stops with status 1 and no files (exit $rc)"
+
+echo "1..$n"
+[ $bad -eq 0 ]
