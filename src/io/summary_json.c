@@ -2,64 +2,17 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_version.h"
 
+#include "json_util.h"
+
 #include <jansson.h>
 #include <math.h>
 #include <string.h>
 
-static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
-
-static json_t *case_json(const gd_case *c)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    json_t *root = json_object();
-    for (size_t i = 0; i < n; i++) {
-        json_t *sec = json_object_get(root, s[i].section);
-        if (!sec) {
-            sec = json_object();
-            json_object_set_new(root, s[i].section, sec);
-        }
-        json_t *e = json_object();
-        const void *fp = (const char *)c + s[i].offset;
-        switch (s[i].type) {
-        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
-        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
-        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
-        case GD_KEY_DLIST: {
-            json_t *a = json_array();
-            int cnt = *(const int *)((const char *)c + s[i].count_offset);
-            for (int j = 0; j < cnt; j++)
-                json_array_append_new(a, json_real(((const double *)fp)[j]));
-            json_object_set_new(e, "value", a);
-            break;
-        }
-        default: {
-            char buf[1200];
-            gd_case_format_value(c, i, buf, sizeof buf);
-            json_object_set_new(e, "value", json_string(buf));
-        }
-        }
-        json_object_set_new(e, "unit", json_string(s[i].unit));
-        int line;
-        gd_source src = gd_case_source(c, i, &line);
-        char where[64];
-        if (src == GD_SRC_FILE)
-            snprintf(where, sizeof where, "file:%d", line);
-        else if (src == GD_SRC_SET)
-            snprintf(where, sizeof where, "--set #%d", line);
-        else
-            snprintf(where, sizeof where, "%s", gd_source_name(src));
-        json_object_set_new(e, "source", json_string(where));
-        json_object_set_new(sec, s[i].key, e);
-    }
-    return root;
-}
-
 static json_t *lr(double l, double r)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "left", num(l));
-    json_object_set_new(o, "right", num(r));
+    json_object_set_new(o, "left", gd_json_num(l));
+    json_object_set_new(o, "right", gd_json_num(r));
     return o;
 }
 
@@ -75,7 +28,7 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(root, "model", json_string(models[c->model]));
     json_t *cs = json_object();
     json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
     json_object_set_new(root, "case", cs);
 
     gd_geometry g;
@@ -83,28 +36,28 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_t *der = json_object();
     if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
-        json_object_set_new(geo, "transverse_module_mm", num(g.mt * 1e3));
-        json_object_set_new(geo, "transverse_pressure_angle_deg", num(g.alpha_t * 180 / M_PI));
-        json_object_set_new(geo, "working_pressure_angle_deg", num(g.alpha_wt * 180 / M_PI));
-        json_object_set_new(geo, "base_helix_angle_deg", num(g.beta_b * 180 / M_PI));
+        json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
+        json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * 180 / M_PI));
+        json_object_set_new(geo, "working_pressure_angle_deg", gd_json_num(g.alpha_wt * 180 / M_PI));
+        json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * 180 / M_PI));
         json_object_set_new(geo, "reference_radius_mm", lr(g.r[0] * 1e3, g.r[1] * 1e3));
         json_object_set_new(geo, "base_radius_mm", lr(g.rb[0] * 1e3, g.rb[1] * 1e3));
         json_object_set_new(geo, "tip_radius_mm", lr(g.ra[0] * 1e3, g.ra[1] * 1e3));
         json_object_set_new(geo, "root_radius_mm", lr(g.rf[0] * 1e3, g.rf[1] * 1e3));
-        json_object_set_new(geo, "centre_distance_mm", num(g.a * 1e3));
-        json_object_set_new(geo, "contact_ratio_transverse", num(g.eps_alpha));
-        json_object_set_new(geo, "contact_ratio_overlap", num(g.eps_beta));
+        json_object_set_new(geo, "centre_distance_mm", gd_json_num(g.a * 1e3));
+        json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
+        json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
         json_object_set_new(der, "geometry", geo);
     }
     json_t *mod = json_object();
     json_object_set_new(mod, "degrees_of_freedom", json_integer(m->ndof));
-    json_object_set_new(mod, "natural_frequency_hz", num(m->omega_n / (2 * M_PI)));
-    json_object_set_new(mod, "mesh_frequency_hz", num(m->mesh_freq_hz));
-    json_object_set_new(mod, "frequency_ratio", num(m->Omega));
-    json_object_set_new(mod, "normal_equivalent_mass_kg", num(m->m_ref));
-    json_object_set_new(mod, "mesh_stiffness_n_per_m", num(m->k_ref));
-    json_object_set_new(mod, "static_mesh_force_n", num(m->static_load_n));
-    json_object_set_new(mod, "static_deflection_um", num(m->static_load_n / m->k_ref * 1e6));
+    json_object_set_new(mod, "natural_frequency_hz", gd_json_num(m->omega_n / (2 * M_PI)));
+    json_object_set_new(mod, "mesh_frequency_hz", gd_json_num(m->mesh_freq_hz));
+    json_object_set_new(mod, "frequency_ratio", gd_json_num(m->Omega));
+    json_object_set_new(mod, "normal_equivalent_mass_kg", gd_json_num(m->m_ref));
+    json_object_set_new(mod, "mesh_stiffness_n_per_m", gd_json_num(m->k_ref));
+    json_object_set_new(mod, "static_mesh_force_n", gd_json_num(m->static_load_n));
+    json_object_set_new(mod, "static_deflection_um", gd_json_num(m->static_load_n / m->k_ref * 1e6));
     json_object_set_new(der, "model", mod);
     json_object_set_new(root, "derived", der);
 
@@ -112,8 +65,8 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(sol, "method", json_string(methods[c->method]));
     json_object_set_new(sol, "order", json_integer(c->method == GD_METHOD_RK4 ? 4 : c->order));
     json_object_set_new(sol, "table", json_string(c->table));
-    json_object_set_new(sol, "rtol", num(c->rtol));
-    json_object_set_new(sol, "atol", num(c->atol));
+    json_object_set_new(sol, "rtol", gd_json_num(c->rtol));
+    json_object_set_new(sol, "atol", gd_json_num(c->atol));
     json_object_set_new(sol, "root_finding", json_boolean(c->root_finding));
     json_object_set_new(sol, "steps", json_integer(r->stats.steps));
     json_object_set_new(sol, "step_attempts", json_integer(r->stats.step_attempts));
@@ -132,14 +85,14 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     for (int k = 0; k < m->nclear; k++)
         json_object_set_new(bc, m->clear[k].name, json_integer(r->stats.events_by_clearance[k]));
     json_object_set_new(sol, "events_by_clearance", bc);
-    json_object_set_new(sol, "wall_s", num(r->wall_s));
+    json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
     long periods = (long)c->transient_periods + c->record_periods;
-    json_object_set_new(sol, "rhs_evals_per_period", num((double)r->stats.rhs_evals / (double)periods));
+    json_object_set_new(sol, "rhs_evals_per_period", gd_json_num((double)r->stats.rhs_evals / (double)periods));
     json_object_set_new(root, "solver", sol);
 
     json_t *res = json_object();
     json_t *acc = lr(r->rms_accel_mps2[0], r->rms_accel_mps2[1]);
-    json_object_set_new(acc, "combined", num(r->rms_accel_mps2[2]));
+    json_object_set_new(acc, "combined", gd_json_num(r->rms_accel_mps2[2]));
     json_object_set_new(res, "rms_accel_mps2", acc);
     json_object_set_new(res, "dte_mean_um", lr(r->dte_mean_um[0], r->dte_mean_um[1]));
     json_object_set_new(res, "dte_rms_um", lr(r->dte_rms_um[0], r->dte_rms_um[1]));
@@ -158,11 +111,11 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(res, "recorded_events", json_integer(r->record_events));
     static const char *lm[] = {"tangent", "two-trajectory"};
     json_object_set_new(res, "lyapunov_method", r->n_lyapunov ? json_string(lm[c->lyapunov_method]) : json_null());
-    json_object_set_new(res, "mle_per_period", num(r->n_lyapunov ? r->mle_per_period : NAN));
-    json_object_set_new(res, "mle_per_s", num(r->n_lyapunov ? r->mle_per_s : NAN));
+    json_object_set_new(res, "mle_per_period", gd_json_num(r->n_lyapunov ? r->mle_per_period : NAN));
+    json_object_set_new(res, "mle_per_s", gd_json_num(r->n_lyapunov ? r->mle_per_s : NAN));
     json_t *spec = json_array();
     for (int i = 0; i < r->n_lyapunov; i++)
-        json_array_append_new(spec, num(r->lyapunov[i] * m->period));
+        json_array_append_new(spec, gd_json_num(r->lyapunov[i] * m->period));
     json_object_set_new(res, "lyapunov_spectrum_per_period", spec);
     json_object_set_new(root, "results", res);
 
@@ -171,17 +124,5 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
         json_array_append_new(fl, json_string(files[i]));
     json_object_set_new(root, "files", fl);
 
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
-    }
-    json_decref(root);
-    return st;
+    return gd_json_write(dir, "summary.json", root, err);
 }

@@ -4,66 +4,18 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_version.h"
 
+#include "json_util.h"
+
 #include <jansson.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
-static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
-
-/* The case parameters: value, unit and source of every key (the layout of the other summaries). */
-static json_t *case_json(const gd_case *c)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    json_t *root = json_object();
-    for (size_t i = 0; i < n; i++) {
-        json_t *sec = json_object_get(root, s[i].section);
-        if (!sec) {
-            sec = json_object();
-            json_object_set_new(root, s[i].section, sec);
-        }
-        json_t *e = json_object();
-        const void *fp = (const char *)c + s[i].offset;
-        switch (s[i].type) {
-        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
-        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
-        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
-        case GD_KEY_DLIST: {
-            json_t *a = json_array();
-            int cnt = *(const int *)((const char *)c + s[i].count_offset);
-            for (int j = 0; j < cnt; j++)
-                json_array_append_new(a, json_real(((const double *)fp)[j]));
-            json_object_set_new(e, "value", a);
-            break;
-        }
-        default: {
-            char buf[1200];
-            gd_case_format_value(c, i, buf, sizeof buf);
-            json_object_set_new(e, "value", json_string(buf));
-        }
-        }
-        json_object_set_new(e, "unit", json_string(s[i].unit));
-        int line;
-        gd_source src = gd_case_source(c, i, &line);
-        char where[64];
-        if (src == GD_SRC_FILE)
-            snprintf(where, sizeof where, "file:%d", line);
-        else if (src == GD_SRC_SET)
-            snprintf(where, sizeof where, "--set #%d", line);
-        else
-            snprintf(where, sizeof where, "%s", gd_source_name(src));
-        json_object_set_new(e, "source", json_string(where));
-        json_object_set_new(sec, s[i].key, e);
-    }
-    return root;
-}
-
 static json_t *lr_num(const gd_ltca_result *r, const double v[2], double scale)
 {
     json_t *o = json_object();
-    json_object_set_new(o, "left", num(v[0] * scale));
-    json_object_set_new(o, "right", r->halves > 1 ? num(v[1] * scale) : json_null());
+    json_object_set_new(o, "left", gd_json_num(v[0] * scale));
+    json_object_set_new(o, "right", r->halves > 1 ? gd_json_num(v[1] * scale) : json_null());
     return o;
 }
 
@@ -89,19 +41,19 @@ static json_t *impact_json(const gd_ltca_impact *im)
     if (!im->found)
         return json_null();
     json_t *o = json_object();
-    json_object_set_new(o, "pinion_angle_deg", num(im->phi1 * 180 / M_PI));
-    json_object_set_new(o, "phase", num(im->phase));
+    json_object_set_new(o, "pinion_angle_deg", gd_json_num(im->phi1 * 180 / M_PI));
+    json_object_set_new(o, "phase", gd_json_num(im->phase));
     json_object_set_new(o, "pair", json_integer(im->pair));
-    json_object_set_new(o, "pinion_roll_mm", num(im->rho1 * 1e3));
-    json_object_set_new(o, "pinion_face_mm", num(im->z1 * 1e3));
-    json_object_set_new(o, "start_of_contact_roll_mm", num(im->rho_sap * 1e3));
-    json_object_set_new(o, "offset_from_plane_of_action_um", num(im->offset_loa * 1e6));
+    json_object_set_new(o, "pinion_roll_mm", gd_json_num(im->rho1 * 1e3));
+    json_object_set_new(o, "pinion_face_mm", gd_json_num(im->z1 * 1e3));
+    json_object_set_new(o, "start_of_contact_roll_mm", gd_json_num(im->rho_sap * 1e3));
+    json_object_set_new(o, "offset_from_plane_of_action_um", gd_json_num(im->offset_loa * 1e6));
     json_object_set_new(o, "edge", edge_names(im->edge));
-    json_object_set_new(o, "relative_normal_velocity_per_pinion_speed_m", num(im->vs_per_omega));
-    json_object_set_new(o, "loaded_deflection_um", num(im->delta_m * 1e6));
-    json_object_set_new(o, "stiffness_n_per_m", num(im->ks));
-    json_object_set_new(o, "power_law_c", num(im->fit_c));
-    json_object_set_new(o, "power_law_n", num(im->fit_n));
+    json_object_set_new(o, "relative_normal_velocity_per_pinion_speed_m", gd_json_num(im->vs_per_omega));
+    json_object_set_new(o, "loaded_deflection_um", gd_json_num(im->delta_m * 1e6));
+    json_object_set_new(o, "stiffness_n_per_m", gd_json_num(im->ks));
+    json_object_set_new(o, "power_law_c", gd_json_num(im->fit_c));
+    json_object_set_new(o, "power_law_n", gd_json_num(im->fit_n));
     return o;
 }
 
@@ -116,7 +68,7 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     json_object_set_new(root, "arrangement", json_string(arrs[c->arrangement]));
     json_t *cs = json_object();
     json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
     json_object_set_new(root, "case", cs);
 
     gd_geometry g;
@@ -124,16 +76,16 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     json_t *der = json_object();
     if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
-        json_object_set_new(geo, "base_helix_angle_deg", num(g.beta_b * deg));
-        json_object_set_new(geo, "contact_ratio_transverse", num(g.eps_alpha));
-        json_object_set_new(geo, "contact_ratio_overlap", num(g.eps_beta));
-        json_object_set_new(geo, "iso6336_mesh_stiffness_n_per_m", num(gd_iso6336_mesh_stiffness(c, &g)));
+        json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * deg));
+        json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
+        json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
+        json_object_set_new(geo, "iso6336_mesh_stiffness_n_per_m", gd_json_num(gd_iso6336_mesh_stiffness(c, &g)));
         json_object_set_new(der, "geometry", geo);
     }
-    json_object_set_new(der, "normal_force_n", num(r->normal_force_n));
-    json_object_set_new(der, "pinion_torque_nm", num(r->torque_nm));
+    json_object_set_new(der, "normal_force_n", gd_json_num(r->normal_force_n));
+    json_object_set_new(der, "pinion_torque_nm", gd_json_num(r->torque_nm));
     json_object_set_new(der, "axis_misalignment_resultant_arcmin",
-                        num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
+                        gd_json_num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
     json_object_set_new(root, "derived", der);
 
     json_t *sol = json_object();
@@ -143,20 +95,20 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     json_object_set_new(sol, "positions", json_integer(r->npos));
     json_object_set_new(sol, "face_slices", json_integer(r->nslices));
     json_object_set_new(sol, "active_set_iterations", json_integer(r->iterations));
-    json_object_set_new(sol, "max_residual_m", num(r->max_residual));
-    json_object_set_new(sol, "max_load_balance_error", num(r->max_balance));
-    json_object_set_new(sol, "max_penetration_m", num(r->max_penetration));
-    json_object_set_new(sol, "min_load_n", num(r->min_load));
-    json_object_set_new(sol, "gap_window_um", num(r->window_max * 1e6));
-    json_object_set_new(sol, "wall_s", num(r->wall_s));
+    json_object_set_new(sol, "max_residual_m", gd_json_num(r->max_residual));
+    json_object_set_new(sol, "max_load_balance_error", gd_json_num(r->max_balance));
+    json_object_set_new(sol, "max_penetration_m", gd_json_num(r->max_penetration));
+    json_object_set_new(sol, "min_load_n", gd_json_num(r->min_load));
+    json_object_set_new(sol, "gap_window_um", gd_json_num(r->window_max * 1e6));
+    json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
     char key[32];
     snprintf(key, sizeof key, "%016llx", (unsigned long long)r->cache_key);
     json_object_set_new(sol, "cache_key", json_string(key));
     json_object_set_new(root, "solver", sol);
 
     json_t *res = json_object();
-    json_object_set_new(res, "lte_pp_arcsec", num(r->lte_pp_arcsec));
-    json_object_set_new(res, "lte_mean_arcsec", num(r->lte_mean_arcsec));
+    json_object_set_new(res, "lte_pp_arcsec", gd_json_num(r->lte_pp_arcsec));
+    json_object_set_new(res, "lte_mean_arcsec", gd_json_num(r->lte_mean_arcsec));
     json_object_set_new(res, "gte_pp_arcsec", lr_num(r, r->gte_pp_arcsec, 1));
     json_object_set_new(res, "mean_mesh_stiffness_n_per_m", lr_num(r, r->stiffness_mean, 1));
     json_object_set_new(res, "min_mesh_stiffness_n_per_m", lr_num(r, r->stiffness_min, 1));
@@ -164,7 +116,7 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     json_object_set_new(res, "load_share", lr_num(r, r->load_share, 1));
     json_object_set_new(res, "load_share_min", lr_num(r, r->load_share_min, 1));
     json_object_set_new(res, "load_share_max", lr_num(r, r->load_share_max, 1));
-    json_object_set_new(res, "load_share_difference", num(r->halves > 1 ? r->load_share[0] - r->load_share[1] : NAN));
+    json_object_set_new(res, "load_share_difference", gd_json_num(r->halves > 1 ? r->load_share[0] - r->load_share[1] : NAN));
     json_object_set_new(res, "loaded_pairs_mean", lr_num(r, r->pairs_mean, 1));
     json_object_set_new(res, "max_contact_pressure_mpa", lr_num(r, r->pressure_max, 1e-6));
     json_t *el = json_object(), *ek = json_object();
@@ -184,9 +136,9 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
             m += r->axial_shift[k] / r->npos;
         }
         json_t *ax = json_object();
-        json_object_set_new(ax, "mean", num(m * 1e6));
-        json_object_set_new(ax, "min", num(lo * 1e6));
-        json_object_set_new(ax, "max", num(hi * 1e6));
+        json_object_set_new(ax, "mean", gd_json_num(m * 1e6));
+        json_object_set_new(ax, "min", gd_json_num(lo * 1e6));
+        json_object_set_new(ax, "max", gd_json_num(hi * 1e6));
         json_object_set_new(res, "pinion_axial_shift_um", ax);
     }
     /* the loaded contact pattern: extent of the loaded points on the pinion flank */
@@ -207,10 +159,10 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
             zh = fmax(zh, P->z1);
         }
         json_t *o = json_object();
-        json_object_set_new(o, "roll_min_mm", num(rl * 1e3));
-        json_object_set_new(o, "roll_max_mm", num(rh * 1e3));
-        json_object_set_new(o, "face_min_mm", num(zl * 1e3));
-        json_object_set_new(o, "face_max_mm", num(zh * 1e3));
+        json_object_set_new(o, "roll_min_mm", gd_json_num(rl * 1e3));
+        json_object_set_new(o, "roll_max_mm", gd_json_num(rh * 1e3));
+        json_object_set_new(o, "face_min_mm", gd_json_num(zl * 1e3));
+        json_object_set_new(o, "face_max_mm", gd_json_num(zh * 1e3));
         json_object_set_new(pat, h ? "right" : "left", o);
     }
     json_object_set_new(res, "loaded_contact_pattern", pat);
@@ -225,17 +177,5 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
         json_array_append_new(fl, json_string(files[i]));
     json_object_set_new(root, "files", fl);
 
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
-    }
-    json_decref(root);
-    return st;
+    return gd_json_write(dir, "summary.json", root, err);
 }

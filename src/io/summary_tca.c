@@ -4,65 +4,17 @@
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_version.h"
 
+#include "json_util.h"
+
 #include <jansson.h>
 #include <math.h>
 #include <string.h>
 
-static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
-
-/* The case parameters: value, unit and source of every key (same layout as the response summary). */
-static json_t *case_json(const gd_case *c)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    json_t *root = json_object();
-    for (size_t i = 0; i < n; i++) {
-        json_t *sec = json_object_get(root, s[i].section);
-        if (!sec) {
-            sec = json_object();
-            json_object_set_new(root, s[i].section, sec);
-        }
-        json_t *e = json_object();
-        const void *fp = (const char *)c + s[i].offset;
-        switch (s[i].type) {
-        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
-        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
-        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
-        case GD_KEY_DLIST: {
-            json_t *a = json_array();
-            int cnt = *(const int *)((const char *)c + s[i].count_offset);
-            for (int j = 0; j < cnt; j++)
-                json_array_append_new(a, json_real(((const double *)fp)[j]));
-            json_object_set_new(e, "value", a);
-            break;
-        }
-        default: {
-            char buf[1200];
-            gd_case_format_value(c, i, buf, sizeof buf);
-            json_object_set_new(e, "value", json_string(buf));
-        }
-        }
-        json_object_set_new(e, "unit", json_string(s[i].unit));
-        int line;
-        gd_source src = gd_case_source(c, i, &line);
-        char where[64];
-        if (src == GD_SRC_FILE)
-            snprintf(where, sizeof where, "file:%d", line);
-        else if (src == GD_SRC_SET)
-            snprintf(where, sizeof where, "--set #%d", line);
-        else
-            snprintf(where, sizeof where, "%s", gd_source_name(src));
-        json_object_set_new(e, "source", json_string(where));
-        json_object_set_new(sec, s[i].key, e);
-    }
-    return root;
-}
-
 static json_t *lr_num(const gd_tca_result *r, const double v[2])
 {
     json_t *o = json_object();
-    json_object_set_new(o, "left", num(v[0]));
-    json_object_set_new(o, "right", r->halves > 1 ? num(v[1]) : json_null());
+    json_object_set_new(o, "left", gd_json_num(v[0]));
+    json_object_set_new(o, "right", r->halves > 1 ? gd_json_num(v[1]) : json_null());
     return o;
 }
 
@@ -95,7 +47,7 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     json_object_set_new(root, "arrangement", json_string(arrs[c->arrangement]));
     json_t *cs = json_object();
     json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
     json_object_set_new(root, "case", cs);
 
     gd_geometry g;
@@ -103,15 +55,15 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     json_t *der = json_object();
     if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
-        json_object_set_new(geo, "transverse_module_mm", num(g.mt * 1e3));
-        json_object_set_new(geo, "transverse_pressure_angle_deg", num(g.alpha_t * deg));
-        json_object_set_new(geo, "working_pressure_angle_deg", num(g.alpha_wt * deg));
-        json_object_set_new(geo, "base_helix_angle_deg", num(g.beta_b * deg));
+        json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
+        json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * deg));
+        json_object_set_new(geo, "working_pressure_angle_deg", gd_json_num(g.alpha_wt * deg));
+        json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * deg));
 #define PG(key, a, b)                                                                                              \
     do {                                                                                                           \
         json_t *o = json_object();                                                                                 \
-        json_object_set_new(o, "pinion", num(a));                                                                  \
-        json_object_set_new(o, "gear", num(b));                                                                    \
+        json_object_set_new(o, "pinion", gd_json_num(a));                                                                  \
+        json_object_set_new(o, "gear", gd_json_num(b));                                                                    \
         json_object_set_new(geo, key, o);                                                                          \
     } while (0)
         PG("reference_radius_mm", g.r[0] * 1e3, g.r[1] * 1e3);
@@ -121,14 +73,14 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
         PG("form_radius_mm", g.r_form[0] * 1e3, g.r_form[1] * 1e3);
         PG("start_of_active_profile_radius_mm", g.r_sap[0] * 1e3, g.r_sap[1] * 1e3);
 #undef PG
-        json_object_set_new(geo, "centre_distance_mm", num(g.a * 1e3));
-        json_object_set_new(geo, "operating_centre_distance_mm", num(g.a * 1e3 + c->centre_distance_error_mm));
-        json_object_set_new(geo, "contact_ratio_transverse", num(g.eps_alpha));
-        json_object_set_new(geo, "contact_ratio_overlap", num(g.eps_beta));
+        json_object_set_new(geo, "centre_distance_mm", gd_json_num(g.a * 1e3));
+        json_object_set_new(geo, "operating_centre_distance_mm", gd_json_num(g.a * 1e3 + c->centre_distance_error_mm));
+        json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
+        json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
         json_object_set_new(der, "geometry", geo);
     }
     json_object_set_new(der, "axis_misalignment_resultant_arcmin",
-                        num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
+                        gd_json_num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
     json_object_set_new(root, "derived", der);
 
     json_t *sol = json_object();
@@ -141,7 +93,7 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     json_object_set_new(sol, "cycles", json_integer(c->tca_cycles));
     json_object_set_new(sol, "refine", json_boolean(c->tca_refine));
     json_object_set_new(sol, "newton_iterations", json_integer(r->iterations));
-    json_object_set_new(sol, "wall_s", num(r->wall_s));
+    json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
     json_object_set_new(root, "solver", sol);
 
     json_t *res = json_object();
@@ -155,16 +107,16 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     json_object_set_new(ek, "right", r->halves > 1 ? edge_names(r->edge_kinds[1]) : json_null());
     json_object_set_new(res, "edge_kinds", ek);
     json_object_set_new(res, "edge_positions", lr_int(r, r->edge_positions));
-    json_object_set_new(res, "contact_ratio_transverse", num(r->contact_ratio_transverse));
-    json_object_set_new(res, "contact_ratio_overlap", num(r->contact_ratio_overlap));
-    json_object_set_new(res, "operating_pressure_angle_deg", num(r->alpha_op_mean * deg));
+    json_object_set_new(res, "contact_ratio_transverse", gd_json_num(r->contact_ratio_transverse));
+    json_object_set_new(res, "contact_ratio_overlap", gd_json_num(r->contact_ratio_overlap));
+    json_object_set_new(res, "operating_pressure_angle_deg", gd_json_num(r->alpha_op_mean * deg));
     json_object_set_new(res, "te_mean_arcsec", lr_num(r, r->te_mean_arcsec));
     json_object_set_new(res, "pairs_in_contact_mean", lr_num(r, r->pairs_mean));
     json_object_set_new(res, "pairs_in_contact_min", lr_int(r, r->pairs_min));
     json_object_set_new(res, "pairs_in_contact_max", lr_int(r, r->pairs_max));
     /* contact pattern: share of the flank grid within the paint thickness, and its extent */
     json_t *pat = json_object();
-    json_object_set_new(pat, "paint_thickness_um", num(c->paint_thickness_um));
+    json_object_set_new(pat, "paint_thickness_um", gd_json_num(c->paint_thickness_um));
     double frac[2] = {NAN, NAN}, rmin[2], rmax[2], zmin[2], zmax[2];
     for (int h = 0; h < r->halves; h++) {
         int nn = r->nprof * r->nface, in = 0;
@@ -189,10 +141,10 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
             continue;
         }
         json_t *o = json_object();
-        json_object_set_new(o, "roll_min_mm", num(rmin[h]));
-        json_object_set_new(o, "roll_max_mm", num(rmax[h]));
-        json_object_set_new(o, "face_min_mm", num(zmin[h]));
-        json_object_set_new(o, "face_max_mm", num(zmax[h]));
+        json_object_set_new(o, "roll_min_mm", gd_json_num(rmin[h]));
+        json_object_set_new(o, "roll_max_mm", gd_json_num(rmax[h]));
+        json_object_set_new(o, "face_min_mm", gd_json_num(zmin[h]));
+        json_object_set_new(o, "face_max_mm", gd_json_num(zmax[h]));
         json_object_set_new(ext, h ? "right" : "left", o);
     }
     json_object_set_new(pat, "extent", ext);
@@ -201,7 +153,7 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
         json_t *cmp = json_object();
         json_object_set_new(cmp, "positions_compared", json_integer(r->compared));
         json_object_set_new(cmp, "positions", json_integer((json_int_t)r->npos * r->halves));
-        json_object_set_new(cmp, "max_difference_arcsec", num(r->max_diff_arcsec));
+        json_object_set_new(cmp, "max_difference_arcsec", gd_json_num(r->max_diff_arcsec));
         json_object_set_new(res, "formulation_comparison", cmp);
     }
     json_object_set_new(root, "results", res);
@@ -211,17 +163,5 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
         json_array_append_new(fl, json_string(files[i]));
     json_object_set_new(root, "files", fl);
 
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
-    }
-    json_decref(root);
-    return st;
+    return gd_json_write(dir, "summary.json", root, err);
 }
