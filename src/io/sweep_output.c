@@ -3,6 +3,7 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_version.h"
+#include "json_util.h"
 
 #include <errno.h>
 #include <jansson.h>
@@ -506,67 +507,18 @@ GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, 
 
 /* ---- summary.json ---- */
 
-static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
-
-static json_t *case_json(const gd_case *c)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    json_t *root = json_object();
-    for (size_t i = 0; i < n; i++) {
-        json_t *sec = json_object_get(root, s[i].section);
-        if (!sec) {
-            sec = json_object();
-            json_object_set_new(root, s[i].section, sec);
-        }
-        json_t *e = json_object();
-        const void *fp = (const char *)c + s[i].offset;
-        switch (s[i].type) {
-        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
-        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
-        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
-        case GD_KEY_DLIST: {
-            json_t *a = json_array();
-            int cnt = *(const int *)((const char *)c + s[i].count_offset);
-            for (int j = 0; j < cnt; j++)
-                json_array_append_new(a, json_real(((const double *)fp)[j]));
-            json_object_set_new(e, "value", a);
-            break;
-        }
-        default: {
-            char buf[1200];
-            gd_case_format_value(c, i, buf, sizeof buf);
-            json_object_set_new(e, "value", json_string(buf));
-        }
-        }
-        json_object_set_new(e, "unit", json_string(s[i].unit));
-        int line;
-        gd_source src = gd_case_source(c, i, &line);
-        char where[64];
-        if (src == GD_SRC_FILE)
-            snprintf(where, sizeof where, "file:%d", line);
-        else if (src == GD_SRC_SET)
-            snprintf(where, sizeof where, "--set #%d", line);
-        else
-            snprintf(where, sizeof where, "%s", gd_source_name(src));
-        json_object_set_new(e, "source", json_string(where));
-        json_object_set_new(sec, s[i].key, e);
-    }
-    return root;
-}
-
 static json_t *axis_json(const gd_case *c, const gd_sweep_plan *p, int a)
 {
     json_t *o = json_object();
     json_object_set_new(o, "name", json_string(p->parameter[a]));
     json_object_set_new(o, "unit", json_string(p->unit[a]));
-    json_object_set_new(o, "from", num(a ? c->sweep_from2 : c->sweep_from));
-    json_object_set_new(o, "to", num(a ? c->sweep_to2 : c->sweep_to));
+    json_object_set_new(o, "from", gd_json_num(a ? c->sweep_from2 : c->sweep_from));
+    json_object_set_new(o, "to", gd_json_num(a ? c->sweep_to2 : c->sweep_to));
     json_object_set_new(o, "points", json_integer(p->npoints[a]));
     json_object_set_new(o, "spacing", json_string(p->spacing[a] == GD_SWEEP_LOG ? "log" : "linear"));
     json_t *v = json_array();
     for (int i = 0; i < p->npoints[a]; i++)
-        json_array_append_new(v, num(p->values[a][i]));
+        json_array_append_new(v, gd_json_num(p->values[a][i]));
     json_object_set_new(o, "values", v);
     return o;
 }
@@ -598,7 +550,7 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
     json_object_set_new(root, "model", json_string(c->model >= 0 && c->model <= 2 ? models[c->model] : "?"));
     json_t *cs = json_object();
     json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
     json_object_set_new(root, "case", cs);
 
     json_t *sw = json_object();
@@ -639,9 +591,9 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
             nfail++;
             count_in(motion, "failed");
             json_t *f = json_object();
-            json_object_set_new(f, "parameter", num(pt->value[0]));
+            json_object_set_new(f, "parameter", gd_json_num(pt->value[0]));
             if (p->naxes > 1)
-                json_object_set_new(f, "parameter2", num(pt->value[1]));
+                json_object_set_new(f, "parameter2", gd_json_num(pt->value[1]));
             json_object_set_new(f, "direction", json_string(gd_sweep_branch_name(pt->branch)));
             json_object_set_new(f, "error", json_string(gd_status_name(pt->error_code)));
             json_object_set_new(f, "message", json_string(pt->error));
@@ -676,18 +628,18 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
     json_object_set_new(res, "motion_counts", motion);
     json_object_set_new(res, "impact_regime_counts", impact);
     json_t *ra = json_object();
-    json_object_set_new(ra, "min", num(rmin));
-    json_object_set_new(ra, "max", num(rmax));
-    json_object_set_new(ra, "max_at", num(rmax_at));
+    json_object_set_new(ra, "min", gd_json_num(rmin));
+    json_object_set_new(ra, "max", gd_json_num(rmax));
+    json_object_set_new(ra, "max_at", gd_json_num(rmax_at));
     if (p->naxes > 1)
-        json_object_set_new(ra, "max_at_parameter2", num(rmax_at2));
+        json_object_set_new(ra, "max_at_parameter2", gd_json_num(rmax_at2));
     json_object_set_new(res, "rms_accel_mps2", ra);
     json_t *la = json_object();
-    json_object_set_new(la, "min", num(lmin));
-    json_object_set_new(la, "max", num(lmax));
-    json_object_set_new(la, "max_at", num(lmax_at));
+    json_object_set_new(la, "min", gd_json_num(lmin));
+    json_object_set_new(la, "max", gd_json_num(lmax));
+    json_object_set_new(la, "max_at", gd_json_num(lmax_at));
     if (p->naxes > 1)
-        json_object_set_new(la, "max_at_parameter2", num(lmax_at2));
+        json_object_set_new(la, "max_at_parameter2", gd_json_num(lmax_at2));
     json_object_set_new(la, "positive_points", json_integer(positive));
     json_object_set_new(res, "mle_per_period", la);
     json_object_set_new(res, "failed", failed);
@@ -704,7 +656,7 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
                 if (a->status == GD_POINT_PENDING || q->status == GD_POINT_PENDING || strcmp(a->motion, q->motion) == 0)
                     continue;
                 json_t *t = json_object();
-                json_object_set_new(t, "between", json_pack("[o,o]", num(a->value[0]), num(q->value[0])));
+                json_object_set_new(t, "between", json_pack("[o,o]", gd_json_num(a->value[0]), gd_json_num(q->value[0])));
                 json_object_set_new(t, "from", json_string(a->motion));
                 json_object_set_new(t, "to", json_string(q->motion));
                 json_array_append_new(tr, t);
@@ -735,11 +687,11 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
                 if (!d && start >= 0) {
                     int i0 = ascending ? start : n1 - 1 - start, i1 = ascending ? q - 1 : n1 - q;
                     json_t *h = json_object();
-                    json_object_set_new(h, "from", num(p->values[0][i0]));
-                    json_object_set_new(h, "to", num(p->values[0][i1]));
+                    json_object_set_new(h, "from", gd_json_num(p->values[0][i0]));
+                    json_object_set_new(h, "to", gd_json_num(p->values[0][i1]));
                     json_object_set_new(h, "points", json_integer(q - start));
                     if (p->naxes > 1)
-                        json_object_set_new(h, "parameter2", num(p->values[1][cu->row]));
+                        json_object_set_new(h, "parameter2", gd_json_num(p->values[1][cu->row]));
                     json_array_append_new(hy, h);
                     start = -1;
                 }
@@ -760,17 +712,5 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
         json_array_append_new(fl, json_string(files[i]));
     json_object_set_new(root, "files", fl);
 
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
-    }
-    json_decref(root);
-    return st;
+    return gd_json_write(dir, "summary.json", root, err);
 }
