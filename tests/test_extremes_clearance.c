@@ -2,8 +2,8 @@
  * clearance, backlash and bearing clearance at 100 um, and an orbit that grazes the backlash
  * boundary. The paper's pair and bta model at 4000 rpm (quickstart data) unless stated; each
  * scene at rtol 1e-7 and 1e-9 (extremes_util.h): completes, no NaN/inf, events bounded, and the
- * two runs agree within the stated tolerances. Measured agreement (2026, this build): zero
- * backlash 7e-8 (Poincare) and 2e-10 (RMS), zero clearance 3e-7 and 9e-10; both at 100 um the
+ * two runs agree within the stated tolerances. Measured agreement (docs/accuracy.md, section 7):
+ * zero backlash 7e-8 (Poincare) and 2e-10 (RMS), zero clearance 3e-7 and 1e-9; both at 100 um the
  * motion is chaotic (largest exponent +0.45 per period): agreement 1e-7 over 10 periods, RMS
  * of the tail within 3 %. */
 #include "extremes_util.h"

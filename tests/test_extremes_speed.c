@@ -26,7 +26,7 @@ static void stiff(void)
 {
     const char *const dirk[] = {STIFF, "scene.bearing_clearance=off", "solver.method=dirk", NULL};
     const char *const erk[] = {STIFF, "scene.bearing_clearance=off", NULL};
-    ex_spec sp = {"bta, supports x100, linear bearings, DIRK", 30, 10, 1e-3, 10, 1e-3, 1e-5, 30, 1e-6, 1e-8};
+    ex_spec sp = {"bta, supports x100, linear bearings, DIRK", 30, 10, 1e-5, 10, 1e-5, 1e-6, 30, 1e-6, 1e-8};
     ex_check(&sp, dirk, NULL);
     ex_run d, x;
     ex_run_case(dirk, NULL, 1e-8, 30, 10, &d);
@@ -34,12 +34,12 @@ static void stiff(void)
     cost_line("DIRK order 4, rtol 1e-8", &d);
     cost_line("ERK order 5, rtol 1e-9", &x);
     double e = gd_workprec_poincare_error(d.pts, x.pts, 31, d.n);
-    tap_ok(d.st == GD_OK && x.st == GD_OK && e <= 1e-4,
-           "supports x100: DIRK (rtol 1e-8) agrees with ERK (rtol 1e-9) over 30 periods: %.3g (tol 1e-4); DIRK "
+    tap_ok(d.st == GD_OK && x.st == GD_OK && e <= 1e-7,
+           "supports x100: DIRK (rtol 1e-8) agrees with ERK (rtol 1e-9) over 30 periods: %.3g (tol 1e-7); DIRK "
            "%.3f s, ERK %.3f s (ratio %.1f)", e, d.wall_s, x.wall_s, d.wall_s / x.wall_s);
     ex_free(&d);
     ex_free(&x);
-    ex_spec sc = {"bta, supports x100, bearing clearance, DIRK (chaotic)", 40, 2, 1e-2, 30, 0, 0.15, 60, 1e-6, 1e-8};
+    ex_spec sc = {"bta, supports x100, bearing clearance, DIRK (chaotic)", 40, 2, 1e-5, 30, 0, 0.15, 60, 1e-6, 1e-8};
     ex_check(&sc, S(STIFF, "solver.method=dirk"), NULL);
 }
 

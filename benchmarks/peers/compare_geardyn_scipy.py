@@ -15,6 +15,10 @@ The benchmark fails (exit status 1) when SciPy and geardyn disagree on the scene
 DOP853 run with events must match the geardyn reference to 1e-7 in the Poincare points and
 1e-7 in the RMS acceleration.
 
+Needs Debian's SciPy and NumPy (apt-get install -y python3-scipy python3-numpy; not needed by the
+build or the tests, so not in scripts/deps.sh); run it with /usr/bin/python3 where another python3
+comes first on the PATH.
+
 Usage: /usr/bin/python3 compare_geardyn_scipy.py GEARDYN [--quick] [--out results.json]
   GEARDYN: the geardyn executable (e.g. build/src/cli/geardyn). Run from anywhere; the case
   files are found next to this script (../../cases). --quick: fewer tolerances and periods.

@@ -492,7 +492,7 @@ static gd_status lyapunov_run(const gd_case *c, const gd_model *m, const wp_sett
 }
 
 static void fill_run(gd_wp_run *r, const wp_trace *tr, const wp_trace *ref, long periods, long horizon, int chaotic,
-                     double period, int n, const gd_case *c, gd_error *err, gd_status *st)
+                     double period, int n, gd_error *err, gd_status *st)
 {
     *st = GD_OK;
     r->status = tr->status;
@@ -520,7 +520,6 @@ static void fill_run(gd_wp_run *r, const wp_trace *tr, const wp_trace *ref, long
         r->err_rms = fabs(tr->rms - ref->rms) / fmax(fabs(ref->rms), 1e-300);
     double t_end = (chaotic ? (double)h : (double)periods) * period;
     r->err_events = event_error(ref, tr, t_end, period, err, st);
-    (void)c;
 }
 
 static int hook_start(const gd_wp_hooks *h, void *user, const char *what, const char *label, int i, int n)
@@ -740,7 +739,7 @@ GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_w
     {
         gd_wp_run tmp;
         memset(&tmp, 0, sizeof tmp);
-        fill_run(&tmp, &chk, &ref, W, H, R->chaotic, m->period, n, c, err, &st);
+        fill_run(&tmp, &chk, &ref, W, H, R->chaotic, m->period, n, err, &st);
         if (st != GD_OK)
             goto done;
         R->check_poincare = tmp.err_poincare;
@@ -827,7 +826,7 @@ GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_w
                 best = fmin(best, again.cpu);
                 trace_free(&again);
             }
-            fill_run(r, &tr, &ref, W, H, R->chaotic, m->period, n, c, err, &st);
+            fill_run(r, &tr, &ref, W, H, R->chaotic, m->period, n, err, &st);
             if (st != GD_OK)
                 goto done;
             r->cpu_s = best;
@@ -892,7 +891,7 @@ GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_w
                 }
                 if ((st = run_one(c, m, &w, y0, &md0, H, 0, c->wp_max_steps_per_period, &tr, err)) != GD_OK)
                     goto done;
-                fill_run(r, &tr, &ref, H, H, 1, m->period, n, c, err, &st);
+                fill_run(r, &tr, &ref, H, H, 1, m->period, n, err, &st);
                 if (st != GD_OK)
                     goto done;
                 r->cpu_s = tr.cpu;

@@ -230,6 +230,10 @@ static void gp_escape(const char *s, char *out, size_t len)
     out[k] = '\0';
 }
 
+/* Twelve colours that stay apart (a family and its root-finding-off twin share one). */
+static const char *const palette[12] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#f0e442", "#0072b2",
+                                         "#e51e10", "#000000", "#a0522d", "#ff69b4", "#808000", "#00ced1"};
+
 /* The diagrams: error against CPU time (and RHS evaluations), one line per family (root
  * finding off dashed), and the order study. */
 static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res, gd_error *err)
@@ -298,8 +302,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
                 const gd_wp_family *F = &res->families[f];
                 if (!drawable(res, f, panels[p].xcol, panels[p].ycol))
                     continue;
-                int color = pairs ? f / 2 + 1 : f + 1;
-                sb_printf(&b, "%s$F%d using %d:%d with linespoints lc %d dt %d pt %d ps 0.8 title '%s'",
+                const char *color = palette[(pairs ? f / 2 : f) % 12];
+                sb_printf(&b, "%s$F%d using %d:%d with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s'",
                           drawn++ ? ", " : "", f, panels[p].xcol, panels[p].ycol, color, F->root_finding ? 1 : 2,
                           F->root_finding ? 7 : 6, F->name);
             }
@@ -323,13 +327,13 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
                     ok |= isfinite(O->err[l]) && O->err[l] <= 10;
                 if (!ok)
                     continue;
-                int color = pairs ? O->family / 2 + 1 : O->family + 1;
+                const char *color = palette[(pairs ? O->family / 2 : O->family) % 12];
                 char ord[32];
                 if (isfinite(O->order))
                     snprintf(ord, sizeof ord, "%.2f", O->order);
                 else
                     snprintf(ord, sizeof ord, "-");
-                sb_printf(&b, "%s$O%d using 1:2 with linespoints lc %d dt %d pt %d ps 0.8 title '%s: %s'",
+                sb_printf(&b, "%s$O%d using 1:2 with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s: %s'",
                           drawn++ ? ", " : "", k, color, F->root_finding ? 1 : 2, F->root_finding ? 7 : 6, F->name,
                           ord);
             }

@@ -266,6 +266,8 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         }
         CHECK(ARKStepSetLinearSolver(s->mem, s->LS, s->A));
         CHECK(ARKStepSetJacFn(s->mem, jac_fn));
+        CHECK(ARKStepSetLSetupFrequency(s->mem, 1));
+        CHECK(ARKStepSetJacEvalFrequency(s->mem, 1));
         if (o->fixed_step)
             CHECK(s->ops->set_fixed_step(s->mem, m->period / o->steps_per_period));
     }

@@ -4,60 +4,11 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_version.h"
 #include "geardyn/gd_workprec.h"
+#include "json_util.h"
 
 #include <jansson.h>
 #include <math.h>
 #include <string.h>
-
-static json_t *num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
-
-/* The case parameters: value, unit and source of every key (same layout as the response summary). */
-static json_t *case_json(const gd_case *c)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    json_t *root = json_object();
-    for (size_t i = 0; i < n; i++) {
-        json_t *sec = json_object_get(root, s[i].section);
-        if (!sec) {
-            sec = json_object();
-            json_object_set_new(root, s[i].section, sec);
-        }
-        json_t *e = json_object();
-        const void *fp = (const char *)c + s[i].offset;
-        switch (s[i].type) {
-        case GD_KEY_DOUBLE: json_object_set_new(e, "value", num(*(const double *)fp)); break;
-        case GD_KEY_INT: json_object_set_new(e, "value", json_integer(*(const int *)fp)); break;
-        case GD_KEY_BOOL: json_object_set_new(e, "value", json_boolean(*(const int *)fp)); break;
-        case GD_KEY_DLIST: {
-            json_t *a = json_array();
-            int cnt = *(const int *)((const char *)c + s[i].count_offset);
-            for (int j = 0; j < cnt; j++)
-                json_array_append_new(a, json_real(((const double *)fp)[j]));
-            json_object_set_new(e, "value", a);
-            break;
-        }
-        default: {
-            char buf[1200];
-            gd_case_format_value(c, i, buf, sizeof buf);
-            json_object_set_new(e, "value", json_string(buf));
-        }
-        }
-        json_object_set_new(e, "unit", json_string(s[i].unit));
-        int line;
-        gd_source src = gd_case_source(c, i, &line);
-        char where[64];
-        if (src == GD_SRC_FILE)
-            snprintf(where, sizeof where, "file:%d", line);
-        else if (src == GD_SRC_SET)
-            snprintf(where, sizeof where, "--set #%d", line);
-        else
-            snprintf(where, sizeof where, "%s", gd_source_name(src));
-        json_object_set_new(e, "source", json_string(where));
-        json_object_set_new(sec, s[i].key, e);
-    }
-    return root;
-}
 
 static json_t *run_json(const gd_wp_result *res, const gd_wp_run *r)
 {
@@ -71,14 +22,14 @@ static json_t *run_json(const gd_wp_result *res, const gd_wp_run *r)
     json_object_set_new(o, "root_finding", json_boolean(F->root_finding));
     json_object_set_new(o, "fixed_step", json_boolean(r->fixed_step));
     json_object_set_new(o, "steps_per_period", r->fixed_step ? json_integer(r->steps_per_period) : json_null());
-    json_object_set_new(o, "rtol", num(r->rtol));
-    json_object_set_new(o, "atol", num(r->atol));
+    json_object_set_new(o, "rtol", gd_json_num(r->rtol));
+    json_object_set_new(o, "atol", gd_json_num(r->atol));
     json_object_set_new(o, "status", json_string(gd_wp_status_name(r->status)));
     if (r->message[0])
         json_object_set_new(o, "message", json_string(r->message));
-    json_object_set_new(o, "cpu_s", num(r->cpu_s));
+    json_object_set_new(o, "cpu_s", gd_json_num(r->cpu_s));
     json_object_set_new(o, "periods", json_integer(r->periods));
-    json_object_set_new(o, "us_per_period", num(r->periods > 0 ? 1e6 * r->cpu_s / (double)r->periods : NAN));
+    json_object_set_new(o, "us_per_period", gd_json_num(r->periods > 0 ? 1e6 * r->cpu_s / (double)r->periods : NAN));
     json_object_set_new(o, "rhs_evals", json_integer(r->rhs_evals));
     json_object_set_new(o, "steps", json_integer(r->steps));
     json_object_set_new(o, "step_attempts", json_integer(r->step_attempts));
@@ -87,14 +38,14 @@ static json_t *run_json(const gd_wp_result *res, const gd_wp_run *r)
     json_object_set_new(o, "events", json_integer(r->events));
     json_object_set_new(o, "flipflop_events", json_integer(r->flipflop_events));
     json_object_set_new(o, "reference_events", json_integer(r->ref_events));
-    json_object_set_new(o, "rms_accel_mps2", num(r->rms_accel_mps2));
-    json_object_set_new(o, "mle_per_period", num(r->mle_per_period));
+    json_object_set_new(o, "rms_accel_mps2", gd_json_num(r->rms_accel_mps2));
+    json_object_set_new(o, "mle_per_period", gd_json_num(r->mle_per_period));
     json_t *e = json_object();
-    json_object_set_new(e, "poincare", num(r->err_poincare));
-    json_object_set_new(e, "short_horizon", num(r->err_short));
-    json_object_set_new(e, "rms_accel_relative", num(r->err_rms));
-    json_object_set_new(e, "event_times_periods", num(r->err_events));
-    json_object_set_new(e, "mle_per_period", num(r->err_mle));
+    json_object_set_new(e, "poincare", gd_json_num(r->err_poincare));
+    json_object_set_new(e, "short_horizon", gd_json_num(r->err_short));
+    json_object_set_new(e, "rms_accel_relative", gd_json_num(r->err_rms));
+    json_object_set_new(e, "event_times_periods", gd_json_num(r->err_events));
+    json_object_set_new(e, "mle_per_period", gd_json_num(r->err_mle));
     json_object_set_new(o, "errors", e);
     return o;
 }
@@ -110,43 +61,43 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
     json_object_set_new(root, "model", json_string(models[c->model]));
     json_t *cs = json_object();
     json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", case_json(c));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
     json_object_set_new(root, "case", cs);
 
     json_t *mod = json_object();
     json_object_set_new(mod, "degrees_of_freedom", json_integer(m->ndof));
     json_object_set_new(mod, "clearances", json_integer(m->nclear));
-    json_object_set_new(mod, "natural_frequency_hz", num(m->omega_n / (2 * M_PI)));
-    json_object_set_new(mod, "mesh_frequency_hz", num(m->mesh_freq_hz));
-    json_object_set_new(mod, "frequency_ratio", num(m->Omega));
-    json_object_set_new(mod, "mesh_period_s", num(res->mesh_period_s));
+    json_object_set_new(mod, "natural_frequency_hz", gd_json_num(m->omega_n / (2 * M_PI)));
+    json_object_set_new(mod, "mesh_frequency_hz", gd_json_num(m->mesh_freq_hz));
+    json_object_set_new(mod, "frequency_ratio", gd_json_num(m->Omega));
+    json_object_set_new(mod, "mesh_period_s", gd_json_num(res->mesh_period_s));
     json_object_set_new(root, "model_scales", mod);
 
     const gd_wp_reference *R = &res->ref;
     json_t *ref = json_object();
     json_object_set_new(ref, "method", json_string(R->method));
     json_object_set_new(ref, "check_method", json_string(R->check_method));
-    json_object_set_new(ref, "rtol", num(R->rtol));
+    json_object_set_new(ref, "rtol", gd_json_num(R->rtol));
     json_object_set_new(ref, "window_periods", json_integer(res->window_periods));
     json_object_set_new(ref, "horizon_periods", json_integer(res->horizon_periods));
     json_object_set_new(ref, "motion", json_string(R->motion));
     json_object_set_new(ref, "scene_class", json_string(R->chaotic ? "chaotic" : "periodic"));
-    json_object_set_new(ref, "rms_accel_mps2", num(R->rms_accel_mps2));
-    json_object_set_new(ref, "mle_per_period", num(R->mle_per_period));
+    json_object_set_new(ref, "rms_accel_mps2", gd_json_num(R->rms_accel_mps2));
+    json_object_set_new(ref, "mle_per_period", gd_json_num(R->mle_per_period));
     json_object_set_new(ref, "events", json_integer(R->events));
     json_object_set_new(ref, "flipflop_events", json_integer(R->flipflop_events));
-    json_object_set_new(ref, "cpu_s", num(R->cpu_s));
+    json_object_set_new(ref, "cpu_s", gd_json_num(R->cpu_s));
     json_object_set_new(ref, "rhs_evals", json_integer(R->rhs_evals));
     json_object_set_new(ref, "steps", json_integer(R->steps));
     json_t *chk = json_object();
-    json_object_set_new(chk, "poincare", num(R->check_poincare));
-    json_object_set_new(chk, "short_horizon", num(R->check_short));
-    json_object_set_new(chk, "rms_accel_relative", num(R->check_rms));
-    json_object_set_new(chk, "event_times_periods", num(R->check_events));
+    json_object_set_new(chk, "poincare", gd_json_num(R->check_poincare));
+    json_object_set_new(chk, "short_horizon", gd_json_num(R->check_short));
+    json_object_set_new(chk, "rms_accel_relative", gd_json_num(R->check_rms));
+    json_object_set_new(chk, "event_times_periods", gd_json_num(R->check_events));
     json_object_set_new(ref, "check_difference", chk);
-    json_object_set_new(ref, "floor", num(R->floor));
+    json_object_set_new(ref, "floor", gd_json_num(R->floor));
     json_object_set_new(ref, "converged", json_boolean(R->converged));
-    json_object_set_new(ref, "converged_below", num(c->wp_reference_max_error));
+    json_object_set_new(ref, "converged_below", gd_json_num(c->wp_reference_max_error));
     json_object_set_new(root, "reference", ref);
 
     json_t *runs = json_array();
@@ -162,15 +113,15 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
         json_object_set_new(o, "family", json_string(F->name));
         json_object_set_new(o, "root_finding", json_boolean(F->root_finding));
         json_object_set_new(o, "nominal_order", json_integer(O->nominal));
-        json_object_set_new(o, "measured_order", num(O->order));
-        json_object_set_new(o, "measured_order_over_range", num(O->order_range));
+        json_object_set_new(o, "measured_order", gd_json_num(O->order));
+        json_object_set_new(o, "measured_order_over_range", gd_json_num(O->order_range));
         json_object_set_new(o, "range_steps", O->range_from >= 0 ? json_pack("[ii]", O->steps[O->range_from],
                                                                               O->steps[O->fit_to])
                                                                 : json_null());
         json_t *st = json_array(), *er = json_array();
         for (int l = 0; l < O->nlevels; l++) {
             json_array_append_new(st, json_integer(O->steps[l]));
-            json_array_append_new(er, num(O->err[l]));
+            json_array_append_new(er, gd_json_num(O->err[l]));
         }
         json_object_set_new(o, "steps_per_period", st);
         json_object_set_new(o, "poincare_error", er);
@@ -188,33 +139,21 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
         double target = targets[k % (sizeof targets / sizeof targets[0])];
         int i = gd_workprec_cheapest(res, target, ev);
         json_t *o = json_object();
-        json_object_set_new(o, "target", num(target));
+        json_object_set_new(o, "target", gd_json_num(target));
         json_object_set_new(o, "event_times_too", json_boolean(ev));
         json_object_set_new(o, "cheapest", i >= 0 ? json_string(res->runs[i].label) : json_null());
-        json_object_set_new(o, "cpu_s", num(i >= 0 ? res->runs[i].cpu_s : NAN));
-        json_object_set_new(o, "us_per_period", num(i >= 0 ? 1e6 * res->runs[i].cpu_s / (double)res->runs[i].periods
+        json_object_set_new(o, "cpu_s", gd_json_num(i >= 0 ? res->runs[i].cpu_s : NAN));
+        json_object_set_new(o, "us_per_period", gd_json_num(i >= 0 ? 1e6 * res->runs[i].cpu_s / (double)res->runs[i].periods
                                                           : NAN));
         json_array_append_new(rec, o);
     }
     json_object_set_new(root, "cheapest_at_target", rec);
-    json_object_set_new(root, "wall_s", num(res->wall_s));
+    json_object_set_new(root, "wall_s", gd_json_num(res->wall_s));
 
     json_t *fl = json_array();
     for (int i = 0; i < nfiles; i++)
         json_array_append_new(fl, json_string(files[i]));
     json_object_set_new(root, "files", fl);
 
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "summary.json", err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
-    }
-    json_decref(root);
-    return st;
+    return gd_json_write(dir, "summary.json", root, err);
 }
