@@ -5,13 +5,16 @@
  * run.transient_periods, integrated with the case's own [solver]), and from that state:
  *
  *  - a reference over run.record_periods mesh periods: the explicit method of order
- *    workprecision.reference_order at workprecision.reference_rtol, events located, and a check
- *    of it by a second, independent method (order workprecision.check_order at the same
- *    tolerance); their difference is the accuracy floor of every error reported;
+ *    workprecision.reference_order at workprecision.reference_rtol, events located, steps of at
+ *    most reference_max_step_fraction of a period (event times come from ARKODE's interpolant),
+ *    and a check of it by a second, independent method (order workprecision.check_order at the
+ *    same tolerance); their difference is the accuracy floor of every error reported;
  *  - a grid of runs over the same window: classical RK4 at fixed steps (rk4_steps_min to
  *    rk4_steps_max per mesh period, doubling), ARKODE explicit tables by order and ARKODE
  *    DIRK tables over rtol (rtol_loosest to rtol_tightest), each with root finding on and,
- *    when root_finding_off is on, off;
+ *    when root_finding_off is on, off; a run over max_steps_per_period stops (over-budget, and
+ *    the tighter settings of its family are skipped), a run whose state grows past 1e6 times its
+ *    start stops (failed: an unstable step);
  *  - an order study: every explicit family at fixed steps over the short horizon
  *    (horizon_periods), with and without event location, and the convergence order of the
  *    Poincare points fitted from it.
