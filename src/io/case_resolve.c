@@ -201,6 +201,18 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.helix_angle_deg: %g with arrangement = spur (valid: 0)", w,
                             c->helix_angle_deg);
     }
+    if (!c->modification_apply) { /* the unmodified pair: amounts and lengths resolve to 0, marked derived */
+        static const char *const mk[] = { "root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
+                                          "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
+                                          "lead_unmodified_length_mm" };
+        double *mf[] = { &c->root_relief_amount_um, &c->root_relief_length_mm, &c->tip_relief_amount_um,
+                         &c->tip_relief_length_mm, &c->lead_relief_inner_um, &c->lead_relief_outer_um,
+                         &c->lead_unmodified_length_mm };
+        for (size_t k = 0; k < sizeof mk / sizeof mk[0]; k++) {
+            *mf[k] = 0.0;
+            c->src[key_index("modification", mk[k])] = GD_SRC_DERIVED;
+        }
+    }
     const char *mkey = NULL;
     if (gd_modification_check(c, &g, &mkey, err) != GD_OK) {
         where(c, "modification", mkey, w, sizeof w);

@@ -76,6 +76,9 @@ static const gd_keyspec schema[] = {
       "y6: lead relief at the other face end (same measure as y5)"),
     D("modification", "lead_unmodified_length_mm", "mm", lead_unmodified_length_mm, 0, 5000, 0, 0, 0,
       "y7: axial length without lead relief, centred on the face of each half (0: crowned over the whole face)"),
+    B("modification", "apply", modification_apply, 1,
+      "off: grind nothing (every amount and length above resolves to 0), so one key switches a case between the "
+      "modified and the unmodified pair"),
 
     /* [misalignment] */
     D("misalignment", "axis_in_plane_arcmin", "arcmin", axis_in_plane_arcmin, -600, 600, 0, 0, 0,

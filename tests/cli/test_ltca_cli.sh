@@ -53,6 +53,24 @@ PY
     head -1 "$out/pair_loads.csv" | grep -q "^position,phi1_deg,half,pair,load_n,share_of_half"; ok $? "$case: pair_loads.csv header"
 done
 
+# one key switches a case to the unmodified pair: modification.apply = off must give exactly the
+# LTCA of the case without a [modification] section (every amount resolves to 0)
+out="$work/apply-off"
+"$G" run "$SRC/cases/paper/ltca-modified.ini" --out "$out" --quiet --set solver.ltca_positions_per_cycle=16 \
+    --set modification.apply=off --set output.plots=off > "$work/run.txt" 2>&1
+ok $? "ltca-modified with modification.apply=off exits 0"
+python3 - "$out/summary.json" "$work/ltca-unmodified/summary.json" "$work/ltca-modified/summary.json" <<'PY'
+import json, sys
+off, unmod, mod = (json.load(open(f)) for f in sys.argv[1:4])
+keys = lambda d: (d["results"]["lte_pp_arcsec"], d["results"]["mean_mesh_stiffness_n_per_m"]["left"],
+                  d["results"]["mean_mesh_stiffness_n_per_m"]["right"])
+assert keys(off) == keys(unmod), (keys(off), keys(unmod))
+assert keys(off) != keys(mod), (keys(off), keys(mod))
+p = off["case"]["parameters"]["modification"]
+assert p["tip_relief_amount_um"]["value"] == 0 and p["tip_relief_amount_um"]["source"] == "derived", p
+PY
+ok $? "modification.apply=off reproduces the unmodified pair exactly"
+
 # a fixed pinion with the paper's errors: the tilt leaves one half open; the summary says so
 out="$work/fixed"
 "$G" run "$SRC/cases/paper/ltca-unmodified.ini" --out "$out" --quiet --set support.pinion_axial=fixed \
