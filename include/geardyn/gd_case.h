@@ -114,6 +114,7 @@ typedef struct gd_case {
     int ltca_positions_per_cycle, ltca_face_slices; /* LTCA discretisation */
     /* [run] */
     int transient_periods, record_periods;
+    int transient_max_periods; /* 0: the transient is transient_periods; else extended until the section settles */
     int initial_condition;   /* gd_initial */
     int lyapunov_exponents;  /* 0 off, 1 the largest, k the first k */
     int lyapunov_method;     /* gd_lyapunov_method */

@@ -47,6 +47,8 @@ typedef struct gd_response_result {
     double mle_per_period, mle_per_s;
     double y_final[GD_MAX_STATE]; /* state and modes at the end (continuation of sweeps) */
     gd_modes md_final;
+    long transient_periods;      /* mesh periods run before the window (more than run.transient_periods when
+                                  * run.transient_max_periods extended it) */
     double wall_s;
     gd_sim_stats stats;
 } gd_response_result;

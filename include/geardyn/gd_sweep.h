@@ -87,6 +87,7 @@ typedef struct gd_sweep_point {
     int period_n, poincare_distinct;
     int impact_regime[3];        /* left, right, combined */
     long steps, rhs_evals, events;
+    long transient_periods;      /* run before the window (run.transient_max_periods may extend it) */
     double wall_s;               /* not written to any output file */
     long npoincare;              /* 0 for a failed point */
     double *poincare;            /* npoincare x nresp (row-major) */

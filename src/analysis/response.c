@@ -145,6 +145,76 @@ static int on_event(gd_sim *s, const gd_event *ev, void *user)
     return 0;
 }
 
+/* The adaptive transient (run.transient_max_periods): after run.transient_periods, keep
+ * integrating while the stroboscopic points are still converging to a period-n orbit
+ * (n <= SETTLE_PMAX) and have not yet settled within the periodicity tolerance.
+ * D_p is the largest distance between points p periods apart in the last SETTLE_W points
+ * (the measure gd_poincare_period uses). Converging to a period-n orbit, D_p decays
+ * geometrically for every multiple p of n and for no other p; so the period is the
+ * smallest p whose D_p decays (or is already within the tolerance), judged from D_p now,
+ * SETTLE_L/2 and SETTLE_L periods ago. (Taking the smallest D_p instead would stop a
+ * slow spiral of a weakly damped mode near 1/p of the mesh frequency at a false period p.)
+ * The transient is extended only while that decay reaches the tolerance within the
+ * allowed periods; chaotic and quasi-periodic motion does not decay and costs nothing
+ * beyond the fixed transient. */
+#define SETTLE_PMAX 8
+#define SETTLE_W (2 * SETTLE_PMAX + 1)
+#define SETTLE_L 32
+
+typedef struct settle_ctx {
+    double pts[SETTLE_W][GD_MAX_STATE];
+    double dist[SETTLE_L + 1][SETTLE_PMAX + 1];
+    long npts, ndist;
+    int n;
+} settle_ctx;
+
+static void settle_distances(const settle_ctx *sc, double *d)
+{
+    double scale[GD_MAX_STATE];
+    for (int i = 0; i < sc->n; i++) {
+        scale[i] = 0.0;
+        for (int k = 0; k < SETTLE_W; k++)
+            scale[i] = fmax(scale[i], fabs(sc->pts[k][i]));
+        scale[i] += 1.0;
+    }
+    for (int p = 1; p <= SETTLE_PMAX; p++) {
+        d[p] = 0.0;
+        for (int k = 0; k < SETTLE_W; k++) /* ring order does not matter for a max over all pairs p apart */
+            for (int i = 0; i < sc->n; i++) {
+                int kk = (int)((sc->npts - SETTLE_W + k) % SETTLE_W), kp = (int)((sc->npts - SETTLE_W + k + p) % SETTLE_W);
+                if (k + p < SETTLE_W)
+                    d[p] = fmax(d[p], fabs(sc->pts[kk][i] - sc->pts[kp][i]) / scale[i]);
+            }
+    }
+}
+
+/* Record the state at the end of a transient period; return whether the transient should
+ * go on given that `left` more periods are allowed. */
+static int settle_extend(settle_ctx *sc, const double *y, double tol, long left)
+{
+    memcpy(sc->pts[sc->npts % SETTLE_W], y, sizeof(double) * (size_t)sc->n);
+    sc->npts++;
+    if (sc->npts < SETTLE_W)
+        return left > 0;
+    double *d = sc->dist[sc->ndist % (SETTLE_L + 1)];
+    settle_distances(sc, d);
+    sc->ndist++;
+    if (left <= 0)
+        return 0;
+    if (sc->ndist <= SETTLE_L)
+        return 1; /* not yet enough history to judge the decay */
+    const double *dh = sc->dist[(sc->ndist - 1 - SETTLE_L / 2) % (SETTLE_L + 1)];
+    const double *d0 = sc->dist[(sc->ndist - 1 - SETTLE_L) % (SETTLE_L + 1)];
+    for (int p = 1; p <= SETTLE_PMAX; p++) {
+        if (d[p] <= tol)
+            return 0; /* settled on period p */
+        double r1 = log(dh[p] / d0[p]) / (SETTLE_L / 2), r2 = log(d[p] / dh[p]) / (SETTLE_L / 2);
+        if (r1 < -1e-4 && r2 < -1e-4) /* decaying: converging to a period dividing p */
+            return log(tol / d[p]) / fmax(r1, r2) <= (double)left;
+    }
+    return 0; /* nothing converges: chaotic, quasi-periodic, or a period above SETTLE_PMAX */
+}
+
 GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
                                  const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err)
 {
@@ -193,21 +263,34 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
     r.m = m;
     r.hooks = hooks;
     r.user = user;
-    r.t_record = (double)c->transient_periods * m->period;
+    long ntrans = c->transient_periods;
+    long max_trans = c->transient_max_periods > ntrans ? c->transient_max_periods : ntrans;
+    double ptol = opts->periodicity_tol > 0 ? opts->periodicity_tol : c->periodicity_tol;
+    settle_ctx *sc = NULL;
+    if (max_trans > ntrans && !(sc = calloc(1, sizeof *sc))) {
+        gd_sim_free(s);
+        gd_sim_free(s2);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the adaptive transient");
+    }
+    if (sc)
+        sc->n = m->n;
+    r.t_record = (double)ntrans * m->period;
     r.dt_sample = m->period / c->samples_per_period;
     r.nsamples = (long)c->record_periods * c->samples_per_period;
     r.sec = 1.0 / m->omega_n;
     r.len_um = m->bc_m * 1e6;
     gd_sim_set_hooks(s, on_step, on_event, &r);
-    long total = (long)c->transient_periods + c->record_periods;
+    long total = ntrans + c->record_periods;
     double *pts = malloc(sizeof(double) * (size_t)m->n * (size_t)(c->record_periods + 1));
     if (!pts) {
+        free(sc);
         gd_sim_free(s);
+        gd_sim_free(s2);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for %d Poincare points", c->record_periods);
     }
     long npts = 0;
     for (long k = 0; k < total; k++) {
-        if (k == c->transient_periods) {
+        if (k == ntrans) {
             if (so.n_tangent > 0)
                 gd_sim_lyapunov_start(s);
             lsum = 0.0;
@@ -250,14 +333,20 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
                                   d > 0 ? "diverged" : "coincide");
                 goto done;
             }
-            if (k >= c->transient_periods)
+            if (k >= ntrans)
                 lsum += log(d / d0);
             for (int i = 0; i < m->n; i++)
                 y2[i] = ya[i] + (yb[i] - ya[i]) * d0 / d;
             if ((st = gd_sim_set_state(s2, y2, err)) != GD_OK)
                 goto done;
         }
-        if (k >= c->transient_periods) {
+        if (k < ntrans && sc && settle_extend(sc, gd_sim_state(s), ptol, k + 1 < ntrans ? 1 : max_trans - ntrans) &&
+            k + 1 == ntrans) {
+            ntrans++; /* one more transient period: the section is still converging */
+            total++;
+            r.t_record = (double)ntrans * m->period;
+        }
+        if (k >= ntrans) {
             const double *y = gd_sim_state(s);
             memcpy(pts + npts * m->n, y, sizeof(double) * (size_t)m->n);
             npts++;
@@ -286,7 +375,7 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         }
         /* the last point closes the window; periodicity is judged over all of them */
         res->poincare_count = npts;
-        double ptol = opts->periodicity_tol > 0 ? opts->periodicity_tol : c->periodicity_tol;
+        res->transient_periods = ntrans;
         res->period_n = gd_poincare_period(pts, npts, m->n, ptol, opts->max_period);
         res->poincare_distinct = res->period_n > 0 ? res->period_n : gd_poincare_distinct(pts, npts, m->n, ptol);
         int worst = 0;
@@ -322,6 +411,7 @@ done:
     gd_sim_free(s);
     gd_sim_free(s2);
     free(pts);
+    free(sc);
     clock_gettime(CLOCK_MONOTONIC, &w1);
     res->wall_s = (double)(w1.tv_sec - w0.tv_sec) + 1e-9 * (double)(w1.tv_nsec - w0.tv_nsec);
     return st;

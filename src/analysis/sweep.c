@@ -678,6 +678,7 @@ static gd_status run_point(const gd_case *base, const gd_sweep_plan *p, gd_sweep
     pt->steps = res->stats.steps;
     pt->rhs_evals = res->stats.rhs_evals;
     pt->events = res->stats.events;
+    pt->transient_periods = res->transient_periods;
     pt->wall_s = res->wall_s;
     pt->npoincare = p->npoincare;
     pt->poincare = pc;

@@ -91,6 +91,12 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: scene.analysis: '%s' is not available in this version of geardyn "
                             "(valid: %s)", w, name, avail);
     }
+    if (c->transient_max_periods > 0 && c->transient_max_periods < c->transient_periods) {
+        where(c, "run", "transient_max_periods", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.transient_max_periods: %d is below run.transient_periods = %d "
+                            "(valid: 0, or at least transient_periods)", w, c->transient_max_periods,
+                            c->transient_periods);
+    }
     /* torque or power */
     if (given(c, "operating", "torque_nm") && given(c, "operating", "power_kw")) {
         where(c, "operating", "power_kw", w, sizeof w);

@@ -171,6 +171,10 @@ static const gd_keyspec schema[] = {
 
     /* [run] */
     I("run", "transient_periods", transient_periods, 0, 100000000, 300, "mesh periods discarded before recording"),
+    I("run", "transient_max_periods", transient_max_periods, 0, 100000000, 0,
+      "0: the transient is exactly transient_periods; N: extend it, period by period up to N, while the Poincare "
+      "section is still converging to a period-n orbit (n <= 8) and has not settled within periodicity_tol "
+      "(docs/sweeps.md)"),
     I("run", "record_periods", record_periods, 1, 100000000, 200, "mesh periods recorded"),
     E("run", "initial_condition", initial_condition, 0, "static|zero", "start at the static deflection under the mean load, or at rest undeflected"),
     I("run", "lyapunov_exponents", lyapunov_exponents, 0, 20, 1,

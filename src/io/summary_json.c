@@ -86,7 +86,7 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
         json_object_set_new(bc, m->clear[k].name, json_integer(r->stats.events_by_clearance[k]));
     json_object_set_new(sol, "events_by_clearance", bc);
     json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
-    long periods = (long)c->transient_periods + c->record_periods;
+    long periods = r->transient_periods + c->record_periods;
     json_object_set_new(sol, "rhs_evals_per_period", gd_json_num((double)r->stats.rhs_evals / (double)periods));
     json_object_set_new(root, "solver", sol);
 
@@ -103,6 +103,7 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(res, "period_n", json_integer(r->period_n));
     json_object_set_new(res, "poincare_distinct", json_integer(r->poincare_distinct));
     json_object_set_new(res, "poincare_points", json_integer(r->poincare_count));
+    json_object_set_new(res, "transient_periods", json_integer(r->transient_periods));
     json_object_set_new(res, "impact_regime", json_string(gd_impact_regime_name(r->impact_regime[2])));
     json_t *ir = json_object();
     json_object_set_new(ir, "left", json_string(gd_impact_regime_name(r->impact_regime[0])));

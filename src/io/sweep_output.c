@@ -62,7 +62,7 @@ static size_t unseal(const char *line, size_t len)
 GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t len)
 {
     char body[256];
-    int n = snprintf(body, sizeof body, "GDSWEEP 1 %s %016llx %d %d %ld", GD_VERSION_STRING,
+    int n = snprintf(body, sizeof body, "GDSWEEP 2 %s %016llx %d %d %ld", GD_VERSION_STRING,
                      (unsigned long long)p->fingerprint, p->nslots, p->nresp, p->npoincare);
     snprintf(buf, len, "%s *%08x\n", body, (unsigned)crc32_of(body, (size_t)n));
 }
@@ -80,8 +80,8 @@ GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_p
             pt->impact_regime[1], pt->impact_regime[2]);
     for (int i = 0; i < 3; i++)
         fprintf(f, " %.17g", pt->rms_accel_mps2[i]);
-    fprintf(f, " %.17g %.17g %ld %ld %ld %.17g", pt->mle_per_period, pt->mle_per_s, pt->steps, pt->rhs_evals,
-            pt->events, pt->wall_s);
+    fprintf(f, " %.17g %.17g %ld %ld %ld %ld %.17g", pt->mle_per_period, pt->mle_per_s, pt->steps, pt->rhs_evals,
+            pt->events, pt->transient_periods, pt->wall_s);
     fprintf(f, " %d", p->n);
     for (int i = 0; i < p->n; i++)
         fprintf(f, " %.17g", pt->y_final[i]);
@@ -203,6 +203,7 @@ GD_API gd_status gd_sweep_record_parse(const gd_sweep_plan *p, const char *line,
     pt.steps = t_long(&t);
     pt.rhs_evals = t_long(&t);
     pt.events = t_long(&t);
+    pt.transient_periods = t_long(&t);
     pt.wall_s = t_double(&t);
     if (t_long(&t) != p->n || t.bad)
         goto bad;
@@ -459,7 +460,7 @@ GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, 
     }
     int map = p->naxes > 1;
     fprintf(sw.fp, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
-                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,status,error\n",
+                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,transient_periods,status,error\n",
             map ? ",parameter2" : "");
     fprintf(bf.fp, "parameter,direction%s", map ? ",parameter2" : "");
     for (int r = 0; r < p->nresp; r++)
@@ -485,6 +486,10 @@ GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, 
         fprintf(sw.fp, ",%s,%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "",
                 done ? gd_impact_regime_name(pt->impact_regime[1]) : "");
         fmt_num(sw.fp, "%.9g", done ? pt->mle_per_s : NAN);
+        if (done)
+            fprintf(sw.fp, ",%ld", pt->transient_periods);
+        else
+            fputc(',', sw.fp);
         fprintf(sw.fp, ",%s,", done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
         csv_text(sw.fp, pt->error);
         fputc('\n', sw.fp);
