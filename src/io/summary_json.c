@@ -58,6 +58,21 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(mod, "mesh_stiffness_n_per_m", gd_json_num(m->k_ref));
     json_object_set_new(mod, "static_mesh_force_n", gd_json_num(m->static_load_n));
     json_object_set_new(mod, "static_deflection_um", gd_json_num(m->static_load_n / m->k_ref * 1e6));
+    if (c->impact) { /* the mesh-in impact pulse of each mesh (excitation.impact = on, from LTCA) */
+        json_t *imp = json_object();
+        static const char *const mesh_name[] = {"left", "right"};
+        for (int j = 0; j < m->nmesh && j < 2; j++) {
+            const gd_mesh_excitation *x = &m->mesh[j];
+            json_t *o = json_object();
+            double fn = x->imp_force * m->k_ref * m->bc_m / (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
+            json_object_set_new(o, "force_n", gd_json_num(fn));
+            json_object_set_new(o, "duration_s", gd_json_num(x->imp_width / (m->omega_n * m->Omega)));
+            json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase / (2.0 * M_PI)));
+            json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
+            json_object_set_new(imp, m->nmesh == 1 ? "mesh" : mesh_name[j], o);
+        }
+        json_object_set_new(mod, "impact", imp);
+    }
     json_object_set_new(der, "model", mod);
     json_object_set_new(root, "derived", der);
 
