@@ -6,8 +6,10 @@
 GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g)
 {
     static const double C[9] = {0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182};
-    double cb3 = pow(cos(g->beta), 3);
-    double zn1 = g->z[0] / cb3, zn2 = g->z[1] / cb3, x1 = g->x[0], x2 = g->x[1];
+    /* ISO 6336-1 virtual numbers of teeth z_n = z / (cos^2 beta_b cos beta) (as ISO/TR 6336-30's
+     * worked example gives them; z / cos^3 beta, the usual approximation, is 0.5 % stiffer here) */
+    double cbn = cos(g->beta_b) * cos(g->beta_b) * cos(g->beta);
+    double zn1 = g->z[0] / cbn, zn2 = g->z[1] / cbn, x1 = g->x[0], x2 = g->x[1];
     double q = C[0] + C[1] / zn1 + C[2] / zn2 + C[3] * x1 + C[4] * x1 / zn1 + C[5] * x2 + C[6] * x2 / zn2 +
                C[7] * x1 * x1 + C[8] * x2 * x2;                     /* mm um / N */
     double cth = 1.0 / q;                                          /* N / (mm um) */

@@ -59,7 +59,10 @@ for u in d["runs"]:
     assert u["cpu_s"] > 0 and u["rhs_evals"] > 0 and u["steps"] > 0 and u["events"] >= 0
 orders = {o["family"]: o["measured_order"] for o in d["orders"]}
 assert abs(orders["rk4"] - 4) < 0.4, orders
-assert orders["rk4-noroot"] < orders["rk4"] - 0.5, orders
+# without event location the error jumps with where each contact falls in the grid: judge its
+# order over the whole range of steps (the fit over the finest steps can land on a lucky pair)
+span = {o["family"]: o["measured_order_over_range"] for o in d["orders"]}
+assert span["rk4-noroot"] < orders["rk4"] - 0.5, (orders, span)
 assert len(d["cheapest_at_target"]) == 12
 assert "work_precision.csv" in d["files"] and "summary.json" in d["files"]
 PY
