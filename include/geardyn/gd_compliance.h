@@ -6,9 +6,10 @@
  * fillet foundation of Sainsot, Velex & Duverger 2004), and a linear Hertzian contact compliance
  * (Yang & Sun 1985). Influence coefficients between two load points of one tooth follow from
  * Maxwell-Betti reciprocity (virtual work with unit loads along each point's contact normal), and
- * the face-width coupling is an exponential kernel of decay length 2h/pi (h the tooth depth: the
- * first decaying mode of a clamped-free plate strip), mirrored at the faces so that the end
- * slices are softer. Transverse slice compliances become normal ones by cos^2(beta_b). */
+ * the face-width coupling is an exponential kernel, mirrored at the faces so that the end slices
+ * are softer, whose decay length grows with the height of the load above the clamped root
+ * section, as the spread of a point load on a thick (Mindlin) cantilever plate strip does
+ * (docs/ltca.md section 2). Transverse slice compliances become normal ones by cos^2(beta_b). */
 #ifndef GD_COMPLIANCE_H
 #define GD_COMPLIANCE_H
 
@@ -36,6 +37,7 @@ typedef struct gd_tooth {
     double h_fi;              /* r_f / r_int (rim ratio of Sainsot's fit) */
     double r0, r1;            /* radius range of the tables */
     void *spline[5], *acc[5]; /* gsl_spline, gsl_interp_accel of F0, F1, F2, S, N */
+    double height;            /* length of the cantilever: centre-line coordinate of the tip less x_root (m) */
 } gd_tooth;
 
 /* A load point on the flank: its radius and the quantities of the unit load there. */
@@ -65,6 +67,23 @@ GD_API double gd_hertz_compliance(double E, double nu);
 /* Face coupling kernel (1/m) between axial positions za, zb on a face [z0, z1] with decay length
  * ell: exp(-|za - zb|/ell)/(2 ell) plus its mirror images in both faces. */
 GD_API double gd_face_kernel(double za, double zb, double z0, double z1, double ell);
+/* The same for two points with their own decay lengths ell_a, ell_b: gd_face_kernel with the
+ * root mean square of the two, sqrt((ell_a^2 + ell_b^2)/2) -- the nonstationary exponential
+ * covariance of Paciorek & Schervish (2006) scaled to unit weight, positive definite for any
+ * lengths; equal lengths give gd_face_kernel. */
+GD_API double gd_face_kernel_pair(double za, double zb, double z0, double z1, double ell_a, double ell_b);
+/* gd_face_kernel_pair averaged over two cells of the face, [alo, ahi] and [blo, bhi] (disjoint or
+ * the same cell): 1 / ((ahi - alo)(bhi - blo)) times the double integral, in closed form. A load
+ * spread uniformly over cell b, the deflection averaged over cell a: LTCA's slices. A uniform
+ * line load over cells that tile the face gives unit weight at any ratio of the decay length to
+ * the cell width (to e^{-(z1 - z0)/ell}: the images are the first ones only). */
+GD_API double gd_face_kernel_cells(double alo, double ahi, double blo, double bhi, double z0, double z1, double ell_a,
+                                   double ell_b);
+/* Decay length of the face kernel along the tooth (m) for a load at p, at the height a of the load
+ * above the clamped root section: ell = min(0.8 a, 0.4 height), with which the exponential kernel
+ * reproduces the line-load stiffness of a clamped-free Mindlin plate strip of the tooth's own
+ * thickness (docs/ltca.md section 2; tests/test_ltca_kernel.c checks it against the plate). */
+GD_API double gd_tooth_spread(const gd_tooth *t, const gd_load_point *p);
 
 #ifdef __cplusplus
 }

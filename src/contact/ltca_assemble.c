@@ -118,9 +118,6 @@ GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err)
             B->tooth.h_fi = g->rf[b] / rbore; /* the rim ratio of the actual body */
         B->E1 = E / (1.0 - nu * nu);
         B->Sf = 2.0 * B->tooth.rf * sin(B->tooth.theta_f);
-        /* the plate strip's decay length 2h/pi along the tooth; a tooth length ds is an axial
-         * length dz = ds cos(beta) */
-        B->ell = 2.0 * (g->ra[b] - g->rf[b]) / M_PI * w->cbeta;
         foundation_coefficients(B);
     }
     for (int h = 0; h < w->halves; h++)
@@ -251,7 +248,7 @@ static double spline_F(const gd_tooth *t, int k, double r)
     return gsl_spline_eval(sp, r, (gsl_interp_accel *)t->acc[k]);
 }
 
-static void point_body(const gd_ltca *w, int half, int b, double r, double z, ltca_pt_body *q)
+static void point_body(const gd_ltca *w, int half, int b, double r, double z, double lo, double hi, ltca_pt_body *q)
 {
     const ltca_body *B = &w->body[b];
     gd_load_point lp;
@@ -267,11 +264,14 @@ static void point_body(const gd_ltca *w, int half, int b, double r, double z, lt
     q->U = lp.cos_a * uf / B->Sf;
     q->C = lp.cos_a;
     q->T = lp.sin_a;
-    double z0 = w->face[half][b][0], z1 = w->face[half][b][1], zm = 0.5 * (z0 + z1), l = B->ell;
-    q->P = exp((z - zm) / l);
-    q->Q = exp(-(z - zm) / l);
-    q->A = exp(-(z - z0) / l);
-    q->B = exp(-(z1 - z) / l);
+    /* the kernel's decay length along the tooth at this load's height (gd_tooth_spread); a tooth
+     * length ds is an axial length dz = ds cos(beta) */
+    double l = gd_tooth_spread(&B->tooth, &lp) * w->cbeta;
+    q->ell = l;
+    q->lo = z + lo;
+    q->hi = z + hi;
+    q->z0 = w->face[half][b][0];
+    q->z1 = w->face[half][b][1];
 }
 
 /* Bending, shear and compression (the formula of gd_tooth_influence with the integrals at the
@@ -288,11 +288,11 @@ double ltca_influence(const ltca_pt_body *j, const ltca_pt_body *k, const ltca_b
     return c + f / b->E1;
 }
 
-/* gd_face_kernel from the per-point exponentials */
-double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k, double ell)
+/* The face kernel between the slices of two points of one body (gd_face_kernel_cells: a load
+ * spread over its slice, the deflection averaged over the other; docs/ltca.md section 3.2). */
+double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k)
 {
-    double direct = j->P >= k->P ? j->Q * k->P : j->P * k->Q;
-    return (direct + j->A * k->A + j->B * k->B) / (2.0 * ell);
+    return gd_face_kernel_cells(j->lo, j->hi, k->lo, k->hi, j->z0, j->z1, j->ell, k->ell);
 }
 
 gd_status ltca_collect(gd_ltca *w, double phi1, double window, gd_error *err)
@@ -338,8 +338,11 @@ gd_status ltca_collect(gd_ltca *w, double phi1, double window, gd_error *err)
             w->nzlo[h] = fmin(w->nzlo[h], lp[a].normal[2]);
             w->nzhi[h] = fmax(w->nzhi[h], lp[a].normal[2]);
             double r1 = f1->rb * sqrt(1.0 + P->u1 * P->u1), r2 = f2->rb * sqrt(1.0 + P->u2 * P->u2);
-            point_body(w, h, 0, r1, P->z1, &w->pb[0][i]);
-            point_body(w, h, 1, r2, P->z2, &w->pb[1][i]);
+            /* the point's slice: half a spacing either side, the end slices inward only */
+            double lo = lp[a].slice == 0 ? 0.0 : -0.5 * w->dz;
+            double hi = lp[a].slice == w->nslices - 1 ? 0.0 : 0.5 * w->dz;
+            point_body(w, h, 0, r1, P->z1, lo, hi, &w->pb[0][i]);
+            point_body(w, h, 1, r2, P->z2, lo, hi, &w->pb[1][i]);
             /* a new block at every change of half or tooth pair */
             if (i == 0 || w->pts[i - 1].half != h || w->pts[i - 1].pair != P->pair)
                 w->bstart[w->nb++] = i;
@@ -362,8 +365,8 @@ void ltca_assemble(gd_ltca *w)
             for (int k = lo; k <= i; k++) {
                 const ltca_pt_body *pi = &w->pb[0][i], *pk = &w->pb[0][k];
                 const ltca_pt_body *gi = &w->pb[1][i], *gk = &w->pb[1][k];
-                double v = w->cbeta * (ltca_influence(pi, pk, Bp) * ltca_kernel(pi, pk, Bp->ell) +
-                                     ltca_influence(gi, gk, Bg) * ltca_kernel(gi, gk, Bg->ell));
+                double v = w->cbeta * (ltca_influence(pi, pk, Bp) * ltca_kernel(pi, pk) +
+                                     ltca_influence(gi, gk, Bg) * ltca_kernel(gi, gk));
                 row[k] = v;
                 w->L[(size_t)k * (size_t)n + (size_t)i] = v;
             }

@@ -15,7 +15,6 @@ typedef struct ltca_body {
     double E1;               /* plane-strain modulus E' = E / (1 - nu^2) */
     double Sf;               /* root thickness 2 r_f sin(theta_f) */
     double fnd[4];           /* Sainsot's L*, M*, P*, Q* of this tooth (read back from gd_tooth_foundation) */
-    double ell;              /* decay length of the face kernel, 2 h / pi */
     double rshift;           /* radius of the virtual spur tooth minus the actual radius (same height) */
 } ltca_body;
 
@@ -25,7 +24,9 @@ typedef struct ltca_pt_body {
     double F[5];             /* cumulative integrals F0, F1, F2, S, N at the point's radius */
     double a, c, s;          /* bending moment coefficients a = cos x - sin h, cos, sin of the load angle */
     double U, C, T;          /* foundation: cos u_f / S_f, cos, sin */
-    double P, Q, A, B;       /* face kernel factors e^{(z - zm)/l}, e^{-(z - zm)/l}, e^{-(z - z0)/l}, e^{-(z1 - z)/l} */
+    double lo, hi;           /* the point's slice (its cell of the face) in the body's axial coordinate (m) */
+    double z0, z1;           /* the body's face in the same coordinate (m) */
+    double ell;              /* decay length of the face kernel in the axial coordinate (m) */
 } ltca_pt_body;
 
 /* The block active-set solver of the LTCA contact problem (ltca_qp.c). */
@@ -82,7 +83,7 @@ struct gd_ltca {
 gd_status ltca_collect(gd_ltca *w, double phi1, double window, gd_error *err);
 void ltca_assemble(gd_ltca *w);
 double ltca_influence(const ltca_pt_body *j, const ltca_pt_body *k, const ltca_body *b);
-double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k, double ell);
+double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k);
 /* Hertz pressure and semi-width of line contact for a line load q (N/m) at point i. */
 void ltca_hertz(const gd_ltca *w, int i, double q, double *p0, double *b);
 

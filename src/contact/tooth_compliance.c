@@ -127,6 +127,7 @@ GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body,
     t->h_fi = rbore > 0 ? t->rf / rbore : 1.6;
     t->r0 = t->rf;
     t->r1 = t->ra;
+    t->height = t->ra * cos(half_angle(t, t->ra)) - t->x_root;
     return tabulate(t, err);
 }
 
@@ -141,6 +142,7 @@ GD_API gd_status gd_tooth_init_beam(gd_tooth *t, double E, double nu, double x_r
     t->x_root = x_root;
     t->r0 = x_root;
     t->r1 = x_tip;
+    t->height = x_tip - x_root;
     return tabulate(t, err);
 }
 
@@ -215,4 +217,44 @@ GD_API double gd_face_kernel(double za, double zb, double z0, double z1, double 
     g += exp(-fabs(za + zb - 2.0 * z0) / ell); /* images in the faces: free ends are softer */
     g += exp(-fabs(za + zb - 2.0 * z1) / ell);
     return g / (2.0 * ell);
+}
+
+GD_API double gd_face_kernel_pair(double za, double zb, double z0, double z1, double ell_a, double ell_b)
+{
+    return gd_face_kernel(za, zb, z0, z1, sqrt(0.5 * (ell_a * ell_a + ell_b * ell_b)));
+}
+
+GD_API double gd_face_kernel_cells(double alo, double ahi, double blo, double bhi, double z0, double z1, double ell_a,
+                                   double ell_b)
+{
+    double l = sqrt(0.5 * (ell_a * ell_a + ell_b * ell_b)), r = 1.0 / l;
+    double wa = ahi - alo, wb = bhi - blo;
+    /* int_I int_J e^{-|x - y|/l} = l^2 e^{-gap/l} (1 - e^{-|I|/l}) (1 - e^{-|J|/l}) for disjoint
+     * cells, 2 l |I| - 2 l^2 (1 - e^{-|I|/l}) for one cell; the images in the faces factorise */
+    double Ea = -expm1(-wa * r), Eb = wb == wa ? Ea : -expm1(-wb * r);
+    double direct;
+    if (alo == blo && ahi == bhi)
+        direct = 2.0 * l * wa - 2.0 * l * l * Ea;
+    else
+        direct = l * l * exp(-fmax(alo < blo ? blo - ahi : alo - bhi, 0.0) * r) * Ea * Eb;
+    double images = l * l * Ea * Eb * (exp(-(fmax(alo - z0, 0.0) + fmax(blo - z0, 0.0)) * r) +
+                                       exp(-(fmax(z1 - ahi, 0.0) + fmax(z1 - bhi, 0.0)) * r));
+    return (direct + images) * 0.5 * r / (wa * wb);
+}
+
+/* The spread of a load along a thick cantilever plate strip (docs/ltca.md section 2): the
+ * Fourier-transformed Mindlin plate equations of a strip clamped at the root and free at the tip,
+ * with the tooth's own (tapered) thickness, spread a load at height a over a length that grows in
+ * proportion to a and levels off toward the thin tip; with these decay lengths the exponential
+ * kernel reproduces the plate's stiffness under line loads of the kinds a contact line makes
+ * (along the face at one height, across the height, ending inside the face) within 5 % on teeth
+ * of 30 to 117 teeth, where the uniform 2h/pi overestimated it by 10 to 41 %
+ * (tests/test_ltca_kernel.c). */
+#define SPREAD_SLOPE 0.8 /* ell / a up to half the height */
+#define SPREAD_EDGE 0.4  /* ell / height above it */
+
+GD_API double gd_tooth_spread(const gd_tooth *t, const gd_load_point *p)
+{
+    double a = fmax(p->x - t->x_root, 0.0);
+    return fmax(fmin(SPREAD_SLOPE * a, SPREAD_EDGE * t->height), 1e-3 * t->height);
 }
