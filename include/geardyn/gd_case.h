@@ -151,6 +151,18 @@ typedef struct gd_case {
     int wp_lyapunov;
     int wp_scene_class;      /* gd_wp_class */
 
+    /* [optimize] (analysis = optimize, compare-optimizers; gd_optimize.h, docs/optimisation.md) */
+    int opt_algorithm;       /* gd_opt_algorithm (optimize) */
+    char opt_optimizers[256]; /* comma-separated algorithm names (compare-optimizers) */
+    char opt_objective[256]; /* comma-separated objectives: gear-lte or test functions */
+    double opt_dimensions[GD_MAX_HARMONICS]; int n_opt_dimensions; /* test functions */
+    int opt_iterations, opt_population, opt_seed, opt_runs, opt_budget_evals, opt_ecdf_targets;
+    double opt_target, opt_target_loosest, opt_shift;
+    /* bounds of x = [y1, y2, y3, y4, y5, y7] (y6 = y5), Eq. 13 */
+    double opt_root_amount_min_um, opt_root_amount_max_um, opt_root_length_min_mm, opt_root_length_max_mm;
+    double opt_tip_amount_min_um, opt_tip_amount_max_um, opt_tip_length_min_mm, opt_tip_length_max_mm;
+    double opt_lead_amount_min_um, opt_lead_amount_max_um, opt_lead_length_min_mm, opt_lead_length_max_mm;
+
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */
     unsigned char *src;      /* gd_source per schema entry */

@@ -19,5 +19,6 @@
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_excitation.h"
+#include "geardyn/gd_optimize.h"
 
 #endif

@@ -52,6 +52,8 @@ int run_tca(const cli_case_args *a, gd_case *c, const char *dir);
 int run_ltca(const cli_case_args *a, gd_case *c, const char *dir);
 int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
 int run_work_precision(const cli_case_args *a, gd_case *c, const char *dir);
+int run_optimize(const cli_case_args *a, gd_case *c, const char *dir);
+int run_compare(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 

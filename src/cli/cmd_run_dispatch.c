@@ -38,6 +38,8 @@ int cmd_run(int argc, char **argv)
     case GD_ANALYSIS_TCA: rc = run_tca(&a, &c, dir); break;
     case GD_ANALYSIS_LTCA: rc = run_ltca(&a, &c, dir); break;
     case GD_ANALYSIS_WORK_PRECISION: rc = run_work_precision(&a, &c, dir); break;
+    case GD_ANALYSIS_OPTIMIZE: rc = run_optimize(&a, &c, dir); break;
+    case GD_ANALYSIS_COMPARE_OPTIMIZERS: rc = run_compare(&a, &c, dir); break;
     case GD_ANALYSIS_RESPONSE:
     default:
         rc = run_response(&a, &c, dir);

@@ -5,6 +5,7 @@
 #include "geardyn/gd_excitation.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_workprec.h"
+#include "geardyn/gd_optimize.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -295,5 +296,7 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         return gd_sweep_check_case(c, err);
     if (c->analysis == GD_ANALYSIS_WORK_PRECISION && gd_workprec_check_case(c, err) != GD_OK)
         return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
+    if (c->analysis == GD_ANALYSIS_OPTIMIZE || c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS)
+        return gd_opt_resolve_case(c, err);
     return GD_OK;
 }

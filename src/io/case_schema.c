@@ -255,6 +255,50 @@ static const gd_keyspec schema[] = {
     E("workprecision", "scene_class", wp_scene_class, 0, "auto|periodic|chaotic",
       "which errors lead: Poincare points over the window (periodic) or the short horizon and statistics (chaotic); "
       "auto: from the reference's motion class"),
+
+    /* [optimize] (analysis = optimize, compare-optimizers; docs/optimisation.md) */
+    E("optimize", "algorithm", opt_algorithm, 0,
+      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx|random",
+      "optimize: the optimiser (alo: the Ant Lion Optimizer; gn_*/ln_*: NLopt's global and local methods; "
+      "random: uniform random search)"),
+    S("optimize", "optimizers", opt_optimizers, "alo,gn_direct_l,gn_crs2_lm,gn_isres,gn_esch,ln_bobyqa,ln_cobyla,ln_sbplx,random",
+      "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
+    S("optimize", "objective", opt_objective, "gear-lte",
+      "gear-lte (LTE amplitude of the modified pair over y1..y5, y7) or test functions sphere, rosenbrock, "
+      "rastrigin, ackley, griewank; compare-optimizers takes a comma-separated list"),
+    L("optimize", "dimension", "", opt_dimensions, n_opt_dimensions, 1, 1000,
+      "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte has 6)"),
+    I("optimize", "iterations", opt_iterations, 1, 10000000, 100,
+      "ALO iterations after the initial population (the paper: 100); the budget is population (iterations + 1)"),
+    I("optimize", "population", opt_population, 2, 100000, 30, "ALO: number of ants (= antlions); random search: batch size"),
+    I("optimize", "seed", opt_seed, 0, 2147483647, 1, "seed of run 1; run r uses seed + r - 1 (the same seeds for every optimiser)"),
+    I("optimize", "runs", opt_runs, 0, 100000, 0,
+      "independent runs (0: 1 for optimize, which keeps the best; 10 for compare-optimizers)"),
+    I("optimize", "budget_evals", opt_budget_evals, 0, 2000000000, 0,
+      "objective evaluations of every run, strict (0: population (iterations + 1), ALO's count)"),
+    D("optimize", "target", "", opt_target, 0, 1e30, 1, 0, NAN,
+      "success: best - f_ref <= target, in the objective's unit (f_ref: 0 for test functions, the best value "
+      "found in the comparison for gear-lte; default 1e-8, gear-lte 0.005 arcsec)"),
+    D("optimize", "target_loosest", "", opt_target_loosest, 0, 1e30, 1, 0, NAN,
+      "loosest target of the runtime distribution (targets log-spaced down to target; default 100, gear-lte 1 arcsec)"),
+    I("optimize", "ecdf_targets", opt_ecdf_targets, 1, 1000, 51, "number of targets of the runtime distribution"),
+    D("optimize", "shift", "", opt_shift, 0, 0.9, 0, 0, 0,
+      "test functions: the minimiser of run r drawn uniformly from shift times the box (0: at the origin)"),
+    D("optimize", "root_relief_amount_min_um", "um", opt_root_amount_min_um, 0, 1000, 0, 0, 0, "gear-lte: lower bound of y1 (C_min)"),
+    D("optimize", "root_relief_amount_max_um", "um", opt_root_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y1 (C_max)"),
+    D("optimize", "root_relief_length_min_mm", "mm", opt_root_length_min_mm, 0, 1000, 0, 0, 0.5, "gear-lte: lower bound of y2 (D_min)"),
+    D("optimize", "root_relief_length_max_mm", "mm", opt_root_length_max_mm, 0, 1000, 0, 0, 12, "gear-lte: upper bound of y2 (D_max)"),
+    D("optimize", "tip_relief_amount_min_um", "um", opt_tip_amount_min_um, 0, 1000, 0, 0, 0, "gear-lte: lower bound of y3 (C_min)"),
+    D("optimize", "tip_relief_amount_max_um", "um", opt_tip_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y3 (C_max)"),
+    D("optimize", "tip_relief_length_min_mm", "mm", opt_tip_length_min_mm, 0, 1000, 0, 0, 0.5, "gear-lte: lower bound of y4 (D_min)"),
+    D("optimize", "tip_relief_length_max_mm", "mm", opt_tip_length_max_mm, 0, 1000, 0, 0, 12, "gear-lte: upper bound of y4 (D_max)"),
+    D("optimize", "lead_relief_min_um", "um", opt_lead_amount_min_um, 0, 1000, 0, 0, 0,
+      "gear-lte: lower bound of y5 = y6, the lead relief at both face ends (S_min)"),
+    D("optimize", "lead_relief_max_um", "um", opt_lead_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y5 = y6 (S_max)"),
+    D("optimize", "lead_unmodified_length_min_mm", "mm", opt_lead_length_min_mm, 0, 5000, 0, 0, 10,
+      "gear-lte: lower bound of y7 (G_min)"),
+    D("optimize", "lead_unmodified_length_max_mm", "mm", opt_lead_length_max_mm, 0, 5000, 0, 0, 38,
+      "gear-lte: upper bound of y7 (G_max, below the face width of one half)"),
 };
 
 GD_API int gd_analysis_available(int analysis)
@@ -265,6 +309,8 @@ GD_API int gd_analysis_available(int analysis)
     case GD_ANALYSIS_LTCA:
     case GD_ANALYSIS_SWEEP:
     case GD_ANALYSIS_WORK_PRECISION:
+    case GD_ANALYSIS_OPTIMIZE:
+    case GD_ANALYSIS_COMPARE_OPTIMIZERS:
         return 1;
     default:
         return 0;

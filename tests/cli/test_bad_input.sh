@@ -52,7 +52,44 @@ teeth_pinion = 12
 helix_angle_deg = 0
 profile_shift_pinion = 1.2" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
 check_bad "[scene]
-analysis = optimize" "case.ini:2: scene.analysis: 'optimize' is not available in this version of geardyn \\(valid: response(, [a-z-]+)*\\)" "analysis not yet available"
+analysis = optimise" "case.ini:2: scene.analysis: unknown choice 'optimise' \\(valid: one of response,sweep,tca,ltca,optimize,compare-optimizers,work-precision\\)" "unknown analysis"
+# [optimize] (docs/optimisation.md)
+check_bad "[scene]
+analysis = compare-optimizers
+[optimize]
+optimizers = alo, gn_direct, ln_bobyqa" "case.ini:4: optimize.optimizers: unknown optimiser 'gn_direct' \\(valid: alo, gn_direct_l, .*random\\)" "optimize: unknown optimiser"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+objective = sphere, rastrigin" "case.ini:4: optimize.objective: 2 objectives for optimize \\(valid: one of gear-lte, sphere, " "optimize: a list of objectives for optimize"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+objective = sphere
+dimension = 2.5" "case.ini:5: optimize.dimension: 2.5 \\(valid: whole numbers from 1 to 1000\\)" "optimize: fractional dimension"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+tip_relief_length_min_mm = 5
+tip_relief_length_max_mm = 3" "case.ini:5: optimize.tip_relief_length_max_mm: the bounds of tip_relief_length_mm are \\[5, 3\\] \\(valid: the lower bound below the upper\\)" "optimize: bounds in the wrong order"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+lead_unmodified_length_max_mm = 45" "case.ini:4: optimize.lead_unmodified_length_max_mm: the box holds a modification that does not fit on the pinion .*modification.lead_unmodified_length_mm: 45 mm is longer than the pinion face of one half 40 mm" "optimize: a box larger than the flank"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+population = 30
+budget_evals = 50" "case.ini:5: optimize.budget_evals: a budget of 50 evaluations for ALO with 30 ants \\(valid: at least two populations, 60\\)" "optimize: budget below two ALO populations"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+iterations = 10
+budget_evals = 500" "case.ini:5: optimize.budget_evals: give iterations or budget_evals, not both" "optimize: iterations and budget"
+check_bad "[scene]
+analysis = optimize
+[optimize]
+shift = 0.3" "case.ini:4: optimize.shift: 0.3 for gear-lte \\(valid: 0; " "optimize: shift of the gear problem"
 check_bad "[scene]
 model = torsional
 [output]

@@ -1,0 +1,316 @@
+/* Optimisation (`analysis = optimize`, `analysis = compare-optimizers`; docs/optimisation.md).
+ *
+ * A problem is an objective over a box of real variables y (in the problem's own units) with
+ * optional linear constraints A y <= b. Every optimiser works in the box normalised to the
+ * symmetric cube [-1, 1]^d (y = centre + half-width * x) and sees the same objective
+ * F(R(y)): R is the repair of the linear constraints, the point where the segment from a
+ * strictly feasible anchor to y leaves the feasible set (y itself when it is feasible). So the
+ * constraints are handled the same way for every optimiser, no optimiser needs constraint
+ * support of its own, and every point evaluated, recorded or returned is feasible.
+ *
+ * A counting wrapper sits between every optimiser and the objective: it counts every
+ * evaluation exactly, never evaluates beyond the budget (NLopt's maxeval is not strict: the
+ * wrapper stops NLopt with nlopt_force_stop at the budget), keeps the best point it has seen
+ * (an optimiser's own answer is not trusted: COBYLA may return its last point), and records the
+ * value of every evaluation and the best so far against the evaluation number.
+ *
+ * Optimisers: the Ant Lion Optimizer (Mirjalili, Adv. Eng. Softw. 83 (2015) 80-98; the
+ * published algorithm, with the departures from the reference code documented in
+ * docs/optimisation.md), NLopt's GN_DIRECT_L, GN_CRS2_LM, GN_ISRES, GN_ESCH and the local
+ * LN_BOBYQA, LN_COBYLA, LN_SBPLX from seeded random starts (multistart within the budget), and
+ * uniform random search as the floor any method must beat. Random numbers come from GSL's
+ * MT19937 (and NLopt's own generator, seeded with nlopt_srand before every start); the
+ * population of ALO and random search is drawn serially and evaluated in parallel (OpenMP), so
+ * results do not depend on the thread count. */
+#ifndef GD_OPTIMIZE_H
+#define GD_OPTIMIZE_H
+
+#include "geardyn/gd_case.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- optimisers ------------------------------------------------------------------------------ */
+
+typedef enum gd_opt_algorithm {
+    GD_OPT_ALO = 0,
+    GD_OPT_GN_DIRECT_L = 1,
+    GD_OPT_GN_CRS2_LM = 2,
+    GD_OPT_GN_ISRES = 3,
+    GD_OPT_GN_ESCH = 4,
+    GD_OPT_LN_BOBYQA = 5,
+    GD_OPT_LN_COBYLA = 6,
+    GD_OPT_LN_SBPLX = 7,
+    GD_OPT_RANDOM = 8,
+    GD_OPT_NALGORITHMS = 9
+} gd_opt_algorithm;
+
+/* "alo", "gn_direct_l", "gn_crs2_lm", "gn_isres", "gn_esch", "ln_bobyqa", "ln_cobyla", "ln_sbplx",
+ * "random" (the [optimize] algorithm / optimizers names); NULL for an unknown index. */
+GD_API const char *gd_opt_algorithm_name(int algorithm);
+/* Index of a name, or -1. */
+GD_API int gd_opt_algorithm_parse(const char *name);
+/* Local NLopt methods (restarted from seeded random points until the budget is used). */
+GD_API int gd_opt_algorithm_is_local(int algorithm);
+/* Algorithms whose run does not depend on the seed (GN_DIRECT_L). */
+GD_API int gd_opt_algorithm_is_deterministic(int algorithm);
+
+/* ---- problems ---------------------------------------------------------------------------------- */
+
+/* The objective at y (a feasible point in the problem's units). `state` is the caller's own: one
+ * per concurrent caller (see state_alloc), so an objective with a workspace is thread-safe. */
+typedef gd_status (*gd_opt_eval_fn)(void *state, const double *y, double *f, gd_error *err);
+
+typedef struct gd_opt_problem {
+    int dim;
+    const double *lower, *upper;  /* dim each, lower < upper */
+    int ncons;                    /* linear constraints A y <= b (0: none) */
+    const double *A;              /* ncons x dim, row-major */
+    const double *b;              /* ncons */
+    const double *anchor;         /* strictly feasible point of the repair (NULL: the centre of the box if it is
+                                     strictly feasible, else the lower corner) */
+    gd_opt_eval_fn eval;
+    /* one state per concurrent caller (NULL: every caller is given `user`) */
+    gd_status (*state_alloc)(void *user, void **state, gd_error *err);
+    void (*state_free)(void *state);
+    void *user;
+} gd_opt_problem;
+
+/* Check a problem (dimension, bounds, the anchor strictly feasible) and give the anchor used
+ * (anchor may be NULL). GD_ERR_INPUT with the reason otherwise. */
+GD_API gd_status gd_opt_problem_check(const gd_opt_problem *p, double *anchor, gd_error *err);
+/* The repair R(y) of a point of the box: y when A y <= b, else anchor + s (y - anchor) with the
+ * largest s in [0, 1) that satisfies every constraint (times 1 - 1e-12, so strictly inside). */
+GD_API void gd_opt_repair(const gd_opt_problem *p, const double *anchor, const double *y, double *out);
+/* Whether y lies in the box and satisfies A y <= b, both to tol (relative to the half-width of
+ * each variable and to 1 + |b_i|). */
+GD_API int gd_opt_feasible(const gd_opt_problem *p, const double *y, double tol);
+
+/* ---- one run ----------------------------------------------------------------------------------- */
+
+typedef struct gd_opt_settings {
+    int algorithm;           /* gd_opt_algorithm */
+    long budget;             /* objective evaluations, strict (>= 1; ALO needs 2 populations) */
+    unsigned long seed;
+    int population;          /* ALO: ants = antlions (>= 2); random search: batch size. 0: 30 */
+    int threads;             /* threads evaluating a population (ALO, random): 0 the OpenMP default, 1 serial */
+    double local_xtol;       /* local NLopt methods: xtol_abs in the normalised box (0: 1e-8) */
+    double local_step;       /* local NLopt methods: initial step in the normalised box (0: 0.25) */
+    int keep_history;        /* record every evaluation (f_history, best_history) */
+} gd_opt_settings;
+
+GD_API void gd_opt_settings_default(gd_opt_settings *s);
+
+typedef struct gd_opt_result {
+    int dim, algorithm;
+    double *y;               /* the best point evaluated (feasible, problem units) */
+    double f;                /* its value */
+    long evaluations;        /* objective evaluations made, exactly; <= budget */
+    long best_at;            /* the evaluation (1-based) that found y */
+    double *f_history;       /* keep_history: value of evaluation k + 1, k < evaluations */
+    double *best_history;    /* keep_history: best value after evaluation k + 1 */
+    int iterations;          /* ALO: iterations after the initial population (T) */
+    int starts;              /* NLopt: nlopt_optimize calls; random: batches */
+    int nlopt_code;          /* NLopt: the last return code (0 otherwise) */
+    int roundoff_stops;      /* NLopt: starts that ended with NLOPT_ROUNDOFF_LIMITED (a local start ends; not an error) */
+    double wall_s;
+} gd_opt_result;
+
+/* Minimise p's objective with s.algorithm within s.budget evaluations. The result is the best
+ * point the wrapper saw. Errors of the objective and negative NLopt return codes (other than
+ * our own forced stop and ROUNDOFF_LIMITED) stop the run with their message. */
+GD_API gd_status gd_opt_run(const gd_opt_problem *p, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+GD_API void gd_opt_result_free(gd_opt_result *r);
+
+/* ALO: the ratio I(t) that shrinks the random walks at iteration t of T (t = 1 .. T):
+ * 1 while t <= T/10, then 1 + 10^w t / T with w = 2, 3, 4, 5, 6 once t exceeds 10, 50, 75, 90
+ * and 95 % of T (Mirjalili 2015, Eq. 2.10-2.11, as the reference code). */
+GD_API double gd_alo_ratio(int t, int T);
+/* ALO: iterations T for a budget (N + N T <= budget), 0 if the budget is below 2 N. */
+GD_API int gd_alo_iterations(long budget, int population);
+
+/* ---- objectives ------------------------------------------------------------------------------- */
+
+typedef enum gd_opt_objective {
+    GD_OBJ_GEAR_LTE = 0,     /* LTE amplitude of the modified pair (arcsec), six modification parameters */
+    GD_OBJ_SPHERE = 1,
+    GD_OBJ_ROSENBROCK = 2,
+    GD_OBJ_RASTRIGIN = 3,
+    GD_OBJ_ACKLEY = 4,
+    GD_OBJ_GRIEWANK = 5,
+    GD_OBJ_NOBJECTIVES = 6
+} gd_opt_objective;
+
+/* "gear-lte", "sphere", "rosenbrock", "rastrigin", "ackley", "griewank"; NULL for an unknown index. */
+GD_API const char *gd_opt_objective_name(int objective);
+GD_API int gd_opt_objective_parse(const char *name);
+
+/* Test functions (GD_OBJ_SPHERE .. GD_OBJ_GRIEWANK), each with its minimum 0 at x = o (o NULL:
+ * the origin; Rosenbrock is translated so that its minimiser is o rather than (1, ..., 1)):
+ *   sphere      sum z_i^2                                              z = x - o, box [-100, 100]
+ *   rosenbrock  sum_{i<d} 100 (z_{i+1} - z_i^2)^2 + (z_i - 1)^2         z = x - o + 1, box [-30, 30]
+ *   rastrigin   10 d + sum (z_i^2 - 10 cos 2 pi z_i)                   box [-5.12, 5.12]
+ *   ackley      -20 exp(-0.2 sqrt(mean z_i^2)) - exp(mean cos 2 pi z_i) + 20 + e   box [-32, 32]
+ *   griewank    1 + sum z_i^2 / 4000 - prod cos(z_i / sqrt(i))          box [-600, 600]
+ * (the domains of Mirjalili 2015, Table 1-2). */
+GD_API double gd_opt_function_value(int objective, int dim, const double *o, const double *x);
+GD_API void gd_opt_function_domain(int objective, double *lower, double *upper);
+
+/* An instance of a test function in dimension dim: with shift s in [0, 0.9] its minimiser o is
+ * drawn uniformly from s times the box (GSL MT19937 seeded with instance_seed; s = 0: the
+ * origin). */
+typedef struct gd_opt_testfn {
+    int objective, dim;
+    double *lower, *upper, *optimum;
+} gd_opt_testfn;
+
+GD_API gd_status gd_opt_testfn_init(gd_opt_testfn *t, int objective, int dim, double shift,
+                                    unsigned long instance_seed, gd_error *err);
+GD_API void gd_opt_testfn_problem(gd_opt_testfn *t, gd_opt_problem *p);
+GD_API void gd_opt_testfn_free(gd_opt_testfn *t);
+
+/* The gear problem of the paper's section 4 (Eq. 13): minimise the peak-to-peak loaded
+ * transmission error (LTCA, Eq. 12, arcsec over one mesh cycle at the case's positions) of the
+ * case's pair, load and misalignment over x = [y1, y2, y3, y4, y5, y7] (y6 = y5, symmetric lead
+ * relief) in the case's [modification] units (um and mm), within the [optimize] bounds and the
+ * linear constraint y2 + y4 <= the active profile of the pinion (roll length from the start of
+ * active profile to the tip). Every point of the box, once repaired, passes
+ * gd_modification_check (checked on the 64 corners at creation; the checks are monotone in
+ * each variable). One LTCA workspace per evaluation: the workspace holds the modified flank. */
+#define GD_OPT_GEAR_DIM 6
+typedef struct gd_opt_gear gd_opt_gear;
+
+GD_API gd_status gd_opt_gear_create(const gd_case *c, gd_opt_gear **out, gd_error *err);
+GD_API void gd_opt_gear_problem(gd_opt_gear *g, gd_opt_problem *p);
+GD_API void gd_opt_gear_free(gd_opt_gear *g);
+/* Roll length of the pinion's active profile (mm): the right side of y2 + y4 <= it. */
+GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g);
+/* Variable i (0..5): its [modification] key, unit and the paper's symbol (y1 .. y5, y7). */
+GD_API const char *gd_opt_gear_variable(int i, const char **unit, const char **symbol);
+/* x -> the case's [modification] (y6 = y5), and back. */
+GD_API void gd_opt_gear_apply(gd_case *c, const double *x);
+GD_API void gd_opt_gear_from_case(const gd_case *c, double *x);
+/* The objective for the case's own [modification]: LTE peak-to-peak (arcsec). */
+GD_API gd_status gd_opt_gear_lte_pp(const gd_case *c, double *lte_pp_arcsec, gd_error *err);
+/* The paper's optimum (Table 2) in the same variables: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 35 mm. */
+GD_API void gd_opt_gear_table2(double *x);
+
+/* ---- the case's [optimize] section ----------------------------------------------------------- */
+
+/* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
+ * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets. */
+GD_API gd_status gd_opt_resolve_case(gd_case *c, gd_error *err);
+/* The case's optimizers list (compare-optimizers) or its algorithm (optimize): count, <= max. */
+GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
+/* The case's objectives (gd_opt_objective), count <= max. */
+GD_API int gd_opt_case_objectives(const gd_case *c, int *objs, int max);
+/* The evaluation budget of one run: budget_evals, or population (iterations + 1). */
+GD_API long gd_opt_case_budget(const gd_case *c);
+/* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */
+GD_API unsigned long gd_opt_run_seed(const gd_case *c, int r);
+GD_API unsigned long gd_opt_instance_seed(const gd_case *c, int r);
+
+/* ---- comparison -------------------------------------------------------------------------------- */
+
+typedef struct gd_opt_compare_settings {
+    int nalgs;
+    int algs[GD_OPT_NALGORITHMS];
+    int runs;                /* runs per algorithm (run r uses seed + r and problem instance r) */
+    unsigned long seed;
+    long budget;             /* the same for every algorithm */
+    int population;          /* ALO ants (and random search batch) */
+    double local_xtol, local_step;
+    double f_ref;            /* the reference value: the known minimum, or NaN for the best value of the comparison */
+    double target;           /* success: best - f_ref <= target (> 0) */
+    double target_loosest;   /* ECDF targets log-spaced from target_loosest down to target */
+    int ntargets;            /* >= 1 (1: the target only) */
+    int threads;             /* runs in parallel over (algorithm, run); 0 the OpenMP default */
+} gd_opt_compare_settings;
+
+typedef struct gd_opt_compare_run {
+    int alg, run;
+    unsigned long seed;
+    double f;                /* final best value */
+    double *y;               /* its point (dim) */
+    long evaluations;
+    long evals_to_target;    /* first evaluation with best - f_ref <= target; -1 never */
+    long *hits;              /* per ECDF target (loosest first): first evaluation reaching it, -1 never */
+    double *best_history;    /* budget entries: best after evaluation k + 1 (the final best after the run ended) */
+    int starts;
+    double wall_s;
+} gd_opt_compare_run;
+
+typedef struct gd_opt_alg_stats {
+    int alg;
+    double best, q1, median, q3, worst, mean; /* final best values over the runs */
+    int successes;
+    double success_rate;
+    double evals_to_target_median;  /* over the successful runs (NaN: none) */
+    double ert;              /* expected running time: evaluations of all runs (to success or the end) / successes (NaN: none) */
+    double wall_mean_s, wall_total_s;
+} gd_opt_alg_stats;
+
+typedef struct gd_opt_compare_result {
+    int nalgs, runs, dim;
+    long budget;
+    double f_ref;            /* the known minimum, or the best value found by any run */
+    int f_ref_known;
+    double target;
+    int ntargets;
+    double *targets;         /* ntargets precisions, loosest first */
+    gd_opt_compare_run *run; /* nalgs * runs, algorithm-major (in the order of settings.algs) */
+    gd_opt_alg_stats *stats; /* nalgs */
+    double wall_s;
+} gd_opt_compare_result;
+
+/* Run every algorithm `runs` times on problems[r] (the instance of run r; the same instance for
+ * every algorithm) with the same budget and seeds, in parallel over (algorithm, run). Every run
+ * is computed by the same deterministic code whatever the thread, so everything except the wall
+ * times is independent of the thread count. */
+GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
+                                gd_opt_compare_result *r, gd_error *err);
+GD_API void gd_opt_compare_result_free(gd_opt_compare_result *r);
+/* Quartiles (q[0] 25 %, q[1] median, q[2] 75 %) of best - f_ref over the runs of algorithm index
+ * a (into settings.algs) after `evals` evaluations. */
+GD_API void gd_opt_compare_quartiles(const gd_opt_compare_result *r, int a, long evals, double q[3]);
+/* Runtime distribution (COCO/BBOB): the fraction of (run, target) pairs of algorithm index a
+ * reached within `evals` evaluations, pooled over nres comparisons (the same algorithms). */
+GD_API double gd_opt_compare_ecdf(const gd_opt_compare_result *const *r, int nres, int a, long evals);
+
+/* ---- summary.json ------------------------------------------------------------------------------ */
+
+typedef struct gd_opt_optimize_summary {
+    int objective, dim, algorithm, runs, threads;
+    long budget;
+    const char *const *names;     /* dim variable names (with units in the name) */
+    const double *lower, *upper;  /* bounds */
+    const gd_opt_result *best;    /* the best run */
+    int best_run;
+    const double *run_f;          /* runs: final value of each run */
+    const double *true_optimum;   /* test functions: the minimiser (NULL otherwise) */
+    /* gear-lte: LTE amplitudes (arcsec) of the unmodified pair, the paper's Table 2, the optimum */
+    double lte_unmodified, lte_table2, lte_optimum;
+    double active_profile_mm;
+    double wall_s;
+} gd_opt_optimize_summary;
+
+GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, const gd_opt_optimize_summary *s,
+                                           const char *const *files, int nfiles, gd_error *err);
+
+typedef struct gd_opt_compare_problem {
+    int objective, dim;
+    double shift;
+    const gd_opt_compare_result *res;
+} gd_opt_compare_problem;
+
+/* One summary over every problem compared (each with the same optimisers, runs and budget); adds
+ * the runtime distribution pooled over the problems at 1 %, 10 % and 100 % of the budget. */
+GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, const gd_opt_compare_problem *pb,
+                                          int nproblems, const char *const *files, int nfiles, int threads,
+                                          gd_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

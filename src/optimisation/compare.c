@@ -1,0 +1,251 @@
+/* The comparison of optimisers (docs/optimisation.md section 7): every algorithm the same budget,
+ * seeds and problem instances; final values (best, quartiles, median), success rate to a target,
+ * evaluations to reach it and the expected running time, runtime distributions over a ladder of
+ * targets in the manner of COCO/BBOB, and the convergence quartiles against evaluations. */
+#include "opt_internal.h"
+
+#include <gsl/gsl_sort.h>
+#include <gsl/gsl_statistics_double.h>
+#include <math.h>
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+GD_API void gd_opt_compare_result_free(gd_opt_compare_result *r)
+{
+    if (!r)
+        return;
+    if (r->run)
+        for (int i = 0; i < r->nalgs * r->runs; i++) {
+            free(r->run[i].y);
+            free(r->run[i].hits);
+            free(r->run[i].best_history);
+        }
+    free(r->run);
+    free(r->stats);
+    free(r->targets);
+    memset(r, 0, sizeof *r);
+}
+
+static double now_s(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* The first evaluation (1-based) whose best is within prec of f_ref, or -1. */
+static long first_hit(const gd_opt_compare_run *u, long n, double f_ref, double prec)
+{
+    if (!(u->best_history[n - 1] - f_ref <= prec))
+        return -1;
+    long lo = 0, hi = n - 1; /* best_history is non-increasing: bisection */
+    while (lo < hi) {
+        long mid = lo + (hi - lo) / 2;
+        if (u->best_history[mid] - f_ref <= prec)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo + 1;
+}
+
+GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
+                                gd_opt_compare_result *r, gd_error *err)
+{
+    memset(r, 0, sizeof *r);
+    if (s->nalgs < 1 || s->nalgs > GD_OPT_NALGORITHMS || s->runs < 1 || s->budget < 1)
+        return gd_error_set(err, GD_ERR_INPUT, "comparison: %d algorithms, %d runs, budget %ld (valid: >= 1 each)",
+                            s->nalgs, s->runs, s->budget);
+    if (!(s->target > 0) || s->ntargets < 1 || !(s->target_loosest >= s->target) ||
+        (s->ntargets > 1 && !(s->target_loosest > s->target)))
+        return gd_error_set(err, GD_ERR_INPUT, "comparison: targets %g .. %g, %d of them (valid: 0 < target < "
+                            "target_loosest, at least one)", s->target, s->target_loosest, s->ntargets);
+    for (int a = 0; a < s->nalgs; a++)
+        if (!gd_opt_algorithm_name(s->algs[a]))
+            return gd_error_set(err, GD_ERR_INPUT, "comparison: unknown algorithm %d", s->algs[a]);
+    int dim = problems[0]->dim;
+    for (int k = 1; k < s->runs; k++)
+        if (problems[k]->dim != dim)
+            return gd_error_set(err, GD_ERR_INPUT, "comparison: instances of different dimensions");
+    double t0 = now_s();
+    r->nalgs = s->nalgs;
+    r->runs = s->runs;
+    r->dim = dim;
+    r->budget = s->budget;
+    r->target = s->target;
+    r->ntargets = s->ntargets;
+    int ntask = s->nalgs * s->runs;
+    r->run = calloc((size_t)ntask, sizeof *r->run);
+    r->stats = calloc((size_t)s->nalgs, sizeof *r->stats);
+    r->targets = malloc(sizeof(double) * (size_t)s->ntargets);
+    int ok = r->run && r->stats && r->targets;
+    for (int i = 0; i < ntask && ok; i++) {
+        gd_opt_compare_run *u = &r->run[i];
+        u->alg = s->algs[i / s->runs];
+        u->run = i % s->runs;
+        u->seed = s->seed + (unsigned long)u->run;
+        u->y = malloc(sizeof(double) * (size_t)dim);
+        u->hits = malloc(sizeof(long) * (size_t)s->ntargets);
+        u->best_history = malloc(sizeof(double) * (size_t)s->budget);
+        ok = u->y && u->hits && u->best_history;
+    }
+    if (!ok) {
+        gd_opt_compare_result_free(r);
+        return gd_error_set(err, GD_ERR_NOMEM, "comparison: out of memory for %d runs of %ld evaluations", ntask,
+                            s->budget);
+    }
+    int nt = opt_threads(s->threads);
+    if (nt > ntask)
+        nt = ntask;
+    int first_bad = ntask;
+    gd_status bad_st = GD_OK;
+    gd_error bad_err = {0};
+    pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
+    for (int i = 0; i < ntask; i++) {
+        gd_opt_compare_run *u = &r->run[i];
+        gd_opt_settings os;
+        gd_opt_settings_default(&os);
+        os.algorithm = u->alg;
+        os.budget = s->budget;
+        os.seed = u->seed;
+        os.population = s->population;
+        os.threads = 1; /* the runs are the parallel units */
+        if (s->local_xtol > 0)
+            os.local_xtol = s->local_xtol;
+        if (s->local_step > 0)
+            os.local_step = s->local_step;
+        os.keep_history = 1;
+        gd_opt_result res;
+        gd_error e = {0};
+        gd_status st = gd_opt_run(problems[u->run], &os, &res, &e);
+        if (st != GD_OK) {
+            pthread_mutex_lock(&lock);
+            if (i < first_bad) {
+                first_bad = i;
+                bad_st = st;
+                bad_err = e;
+            }
+            pthread_mutex_unlock(&lock);
+            continue;
+        }
+        u->f = res.f;
+        memcpy(u->y, res.y, sizeof(double) * (size_t)dim);
+        u->evaluations = res.evaluations;
+        memcpy(u->best_history, res.best_history, sizeof(double) * (size_t)res.evaluations);
+        for (long k = res.evaluations; k < s->budget; k++)
+            u->best_history[k] = res.f;
+        u->starts = res.starts;
+        u->wall_s = res.wall_s;
+        gd_opt_result_free(&res);
+    }
+    pthread_mutex_destroy(&lock);
+    if (bad_st != GD_OK) {
+        const gd_opt_compare_run *u = &r->run[first_bad];
+        if (err)
+            *err = bad_err;
+        gd_opt_compare_result_free(r);
+        return gd_error_prefix(err, "comparison, %s run %d", gd_opt_algorithm_name(u->alg), u->run + 1);
+    }
+    /* the reference value and the targets */
+    r->f_ref_known = isfinite(s->f_ref);
+    r->f_ref = s->f_ref;
+    if (!r->f_ref_known) {
+        r->f_ref = INFINITY;
+        for (int i = 0; i < ntask; i++)
+            r->f_ref = fmin(r->f_ref, r->run[i].f);
+    }
+    for (int k = 0; k < s->ntargets; k++)
+        r->targets[k] = s->ntargets == 1 ? s->target
+                        : s->target_loosest * pow(s->target / s->target_loosest, (double)k / (s->ntargets - 1));
+    r->targets[s->ntargets - 1] = s->target;
+    for (int i = 0; i < ntask; i++) {
+        gd_opt_compare_run *u = &r->run[i];
+        u->evals_to_target = first_hit(u, s->budget, r->f_ref, s->target);
+        for (int k = 0; k < s->ntargets; k++)
+            u->hits[k] = first_hit(u, s->budget, r->f_ref, r->targets[k]);
+    }
+    /* statistics per algorithm */
+    double *v = malloc(sizeof(double) * (size_t)s->runs * 2);
+    if (!v) {
+        gd_opt_compare_result_free(r);
+        return gd_error_set(err, GD_ERR_NOMEM, "comparison: out of memory");
+    }
+    double *w = v + s->runs;
+    for (int a = 0; a < s->nalgs; a++) {
+        gd_opt_alg_stats *S = &r->stats[a];
+        const gd_opt_compare_run *U = r->run + (size_t)a * (size_t)s->runs;
+        S->alg = s->algs[a];
+        int ns = 0;
+        double spent = 0;
+        for (int k = 0; k < s->runs; k++) {
+            v[k] = U[k].f;
+            S->wall_total_s += U[k].wall_s;
+            if (U[k].evals_to_target > 0) {
+                w[ns++] = (double)U[k].evals_to_target;
+                spent += (double)U[k].evals_to_target;
+            } else {
+                spent += (double)U[k].evaluations;
+            }
+        }
+        gsl_sort(v, 1, (size_t)s->runs);
+        S->best = v[0];
+        S->worst = v[s->runs - 1];
+        S->q1 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.25);
+        S->median = gsl_stats_median_from_sorted_data(v, 1, (size_t)s->runs);
+        S->q3 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.75);
+        S->mean = gsl_stats_mean(v, 1, (size_t)s->runs);
+        S->successes = ns;
+        S->success_rate = (double)ns / s->runs;
+        if (ns) {
+            gsl_sort(w, 1, (size_t)ns);
+            S->evals_to_target_median = gsl_stats_median_from_sorted_data(w, 1, (size_t)ns);
+            S->ert = spent / ns;
+        } else {
+            S->evals_to_target_median = NAN;
+            S->ert = NAN;
+        }
+        S->wall_mean_s = S->wall_total_s / s->runs;
+    }
+    free(v);
+    r->wall_s = now_s() - t0;
+    return GD_OK;
+}
+
+GD_API void gd_opt_compare_quartiles(const gd_opt_compare_result *r, int a, long evals, double q[3])
+{
+    q[0] = q[1] = q[2] = NAN;
+    if (a < 0 || a >= r->nalgs || evals < 1 || r->runs < 1)
+        return;
+    if (evals > r->budget)
+        evals = r->budget;
+    double *v = malloc(sizeof(double) * (size_t)r->runs);
+    if (!v)
+        return;
+    for (int k = 0; k < r->runs; k++)
+        v[k] = r->run[(size_t)a * (size_t)r->runs + (size_t)k].best_history[evals - 1] - r->f_ref;
+    gsl_sort(v, 1, (size_t)r->runs);
+    q[0] = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)r->runs, 0.25);
+    q[1] = gsl_stats_median_from_sorted_data(v, 1, (size_t)r->runs);
+    q[2] = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)r->runs, 0.75);
+    free(v);
+}
+
+GD_API double gd_opt_compare_ecdf(const gd_opt_compare_result *const *rs, int nres, int a, long evals)
+{
+    long hit = 0, all = 0;
+    for (int j = 0; j < nres; j++) {
+        const gd_opt_compare_result *r = rs[j];
+        if (a < 0 || a >= r->nalgs)
+            continue;
+        for (int k = 0; k < r->runs; k++) {
+            const gd_opt_compare_run *u = &r->run[(size_t)a * (size_t)r->runs + (size_t)k];
+            for (int t = 0; t < r->ntargets; t++)
+                hit += u->hits[t] > 0 && u->hits[t] <= evals;
+            all += r->ntargets;
+        }
+    }
+    return all ? (double)hit / (double)all : NAN;
+}

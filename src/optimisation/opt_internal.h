@@ -1,0 +1,54 @@
+/* Internals of the optimisers (src/optimisation/, not installed): the normalised box and the
+ * counting wrapper every optimiser goes through (problem.c). */
+#ifndef GD_OPT_INTERNAL_H
+#define GD_OPT_INTERNAL_H
+
+#include "geardyn/gd_optimize.h"
+
+/* The wrapper of one run. Optimisers see x in [-1, 1]^dim; the wrapper maps x to the box, repairs
+ * the linear constraints, evaluates, counts, records. */
+typedef struct opt_ctx {
+    const gd_opt_problem *p;
+    int dim;
+    double *centre, *half, *anchor; /* dim each */
+    long budget, count;
+    double best_f;
+    double *best_y;                 /* dim: physical, repaired */
+    long best_at;
+    int keep;
+    double *f_hist, *best_hist;     /* budget each when keep */
+    int nstates;
+    void **states;                  /* one per thread */
+    double *ybuf;                   /* nstates x dim scratch */
+    gd_status st;                   /* first failure of the objective */
+    gd_error err;
+} opt_ctx;
+
+gd_status opt_ctx_init(opt_ctx *c, const gd_opt_problem *p, long budget, int nstates, int keep, gd_error *err);
+void opt_ctx_free(opt_ctx *c);
+/* Normalised x (clamped to [-1, 1]) -> the repaired physical point. */
+void opt_to_physical(const opt_ctx *c, const double *x, double *y);
+/* Evaluate the n normalised points X (n x dim) with `threads` threads, as many as the budget
+ * allows (*m of them, in index order); f[i] = +inf for the rest. Records every evaluation in
+ * index order, so the history does not depend on the thread count. */
+gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int threads, int *m, gd_error *err);
+/* Evaluate one normalised point on state 0 (serial callers: NLopt). Returns 1 in *done when the
+ * budget was already used (nothing evaluated). */
+gd_status opt_eval_one(opt_ctx *c, const double *x, double *f, int *done, gd_error *err);
+
+/* the optimisers (alo.c, nlopt_runner.c, random_search.c): run to the budget on c */
+gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+gd_status opt_nlopt(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+
+/* The gear box of the case (gear_objective.c): its bounds and the constraint's right side, and the
+ * first corner of the box (bit i: variable i at its upper bound) that fails gd_modification_check
+ * once repaired, with the failing [modification] key and the repaired corner; -1 if every corner
+ * fits, -2 / -3 if the geometry or the problem is bad (err set). */
+int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *active_mm, const char **bad_key,
+                     double *xbad, gd_error *err);
+
+/* threads to use for a request (0: the OpenMP default), at least 1 */
+int opt_threads(int requested);
+
+#endif

@@ -1,0 +1,141 @@
+/* Standard test functions (sphere, Rosenbrock, Rastrigin, Ackley, Griewank) with their minimiser
+ * moved to a point o, and seeded instances with a shifted minimiser (docs/optimisation.md
+ * section 6). Domains as Mirjalili 2015, Tables 1-2. */
+#include "geardyn/gd_optimize.h"
+
+#include <gsl/gsl_rng.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+static const char *const obj_names[GD_OBJ_NOBJECTIVES] = {"gear-lte", "sphere", "rosenbrock", "rastrigin", "ackley",
+                                                           "griewank"};
+
+GD_API const char *gd_opt_objective_name(int o) { return o >= 0 && o < GD_OBJ_NOBJECTIVES ? obj_names[o] : NULL; }
+
+GD_API int gd_opt_objective_parse(const char *name)
+{
+    for (int o = 0; o < GD_OBJ_NOBJECTIVES; o++)
+        if (strcmp(name, obj_names[o]) == 0)
+            return o;
+    return -1;
+}
+
+GD_API void gd_opt_function_domain(int fn, double *lo, double *hi)
+{
+    double h;
+    switch (fn) {
+    case GD_OBJ_SPHERE: h = 100; break;
+    case GD_OBJ_ROSENBROCK: h = 30; break;
+    case GD_OBJ_RASTRIGIN: h = 5.12; break;
+    case GD_OBJ_ACKLEY: h = 32; break;
+    case GD_OBJ_GRIEWANK: h = 600; break;
+    default: h = NAN; break;
+    }
+    *lo = -h;
+    *hi = h;
+}
+
+GD_API double gd_opt_function_value(int fn, int d, const double *o, const double *x)
+{
+    double s = 0;
+#define Z(i) (x[i] - (o ? o[i] : 0.0))
+    switch (fn) {
+    case GD_OBJ_SPHERE:
+        for (int i = 0; i < d; i++)
+            s += Z(i) * Z(i);
+        return s;
+    case GD_OBJ_ROSENBROCK:
+        for (int i = 0; i + 1 < d; i++) {
+            double zi = Z(i) + 1.0, zn = Z(i + 1) + 1.0;
+            s += 100.0 * (zn - zi * zi) * (zn - zi * zi) + (zi - 1.0) * (zi - 1.0);
+        }
+        return s;
+    case GD_OBJ_RASTRIGIN:
+        for (int i = 0; i < d; i++)
+            s += Z(i) * Z(i) - 10.0 * cos(2.0 * M_PI * Z(i));
+        return 10.0 * d + s;
+    case GD_OBJ_ACKLEY: {
+        double c = 0;
+        for (int i = 0; i < d; i++) {
+            s += Z(i) * Z(i);
+            c += cos(2.0 * M_PI * Z(i));
+        }
+        double v = -20.0 * exp(-0.2 * sqrt(s / d)) - exp(c / d) + 20.0 + M_E;
+        return v > 0 ? v : 0.0; /* the exact minimum rounds to about -4e-16 */
+    }
+    case GD_OBJ_GRIEWANK: {
+        double p = 1;
+        for (int i = 0; i < d; i++) {
+            s += Z(i) * Z(i);
+            p *= cos(Z(i) / sqrt((double)(i + 1)));
+        }
+        return 1.0 + s / 4000.0 - p;
+    }
+    default: return NAN;
+    }
+#undef Z
+}
+
+GD_API void gd_opt_testfn_free(gd_opt_testfn *t)
+{
+    if (!t)
+        return;
+    free(t->lower);
+    memset(t, 0, sizeof *t);
+}
+
+GD_API gd_status gd_opt_testfn_init(gd_opt_testfn *t, int fn, int dim, double shift, unsigned long seed, gd_error *err)
+{
+    memset(t, 0, sizeof *t);
+    if (fn < GD_OBJ_SPHERE || fn > GD_OBJ_GRIEWANK)
+        return gd_error_set(err, GD_ERR_INPUT, "test function %d (valid: sphere .. griewank)", fn);
+    if (dim < 1 || (fn == GD_OBJ_ROSENBROCK && dim < 2))
+        return gd_error_set(err, GD_ERR_INPUT, "%s in %d dimensions (valid: %s)", gd_opt_objective_name(fn), dim,
+                            fn == GD_OBJ_ROSENBROCK ? ">= 2" : ">= 1");
+    if (!(shift >= 0 && shift <= 0.9))
+        return gd_error_set(err, GD_ERR_INPUT, "test function shift %g (valid: 0 to 0.9)", shift);
+    t->objective = fn;
+    t->dim = dim;
+    t->lower = malloc(3 * sizeof(double) * (size_t)dim);
+    if (!t->lower)
+        return gd_error_set(err, GD_ERR_NOMEM, "test function: out of memory");
+    t->upper = t->lower + dim;
+    t->optimum = t->upper + dim;
+    double lo, hi;
+    gd_opt_function_domain(fn, &lo, &hi);
+    gsl_rng *rng = NULL;
+    if (shift > 0) {
+        rng = gsl_rng_alloc(gsl_rng_mt19937);
+        if (!rng) {
+            gd_opt_testfn_free(t);
+            return gd_error_set(err, GD_ERR_NOMEM, "test function: out of memory");
+        }
+        gsl_rng_set(rng, seed);
+    }
+    for (int i = 0; i < dim; i++) {
+        t->lower[i] = lo;
+        t->upper[i] = hi;
+        t->optimum[i] = rng ? shift * hi * (2.0 * gsl_rng_uniform(rng) - 1.0) : 0.0;
+    }
+    gsl_rng_free(rng);
+    return GD_OK;
+}
+
+static gd_status testfn_eval(void *state, const double *y, double *f, gd_error *err)
+{
+    (void)err;
+    const gd_opt_testfn *t = state;
+    *f = gd_opt_function_value(t->objective, t->dim, t->optimum, y);
+    return GD_OK;
+}
+
+GD_API void gd_opt_testfn_problem(gd_opt_testfn *t, gd_opt_problem *p)
+{
+    memset(p, 0, sizeof *p);
+    p->dim = t->dim;
+    p->lower = t->lower;
+    p->upper = t->upper;
+    p->eval = testfn_eval;
+    p->user = t;
+}

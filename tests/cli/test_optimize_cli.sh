@@ -1,0 +1,223 @@
+#!/usr/bin/env bash
+# geardyn run for analysis = optimize and compare-optimizers (docs/optimisation.md): check shows the
+# [optimize] keys; optimize writes the optimum, convergence, summary.json (and for the gear the LTE
+# beside the unmodified pair and Table 2, and the optimum's LTCA and TCA outputs); the comparison
+# output is complete for a small budget (files, CSV columns and rows, summary.json keys) and is
+# identical with 1 and 2 threads except the wall-time columns. TAP output.
+set -u
+G=${GEARDYN:?}
+SRC=${GEARDYN_SOURCE:?}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+n=0; bad=0
+ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+
+# ---- check ----------------------------------------------------------------------------------------
+"$G" check "$SRC/cases/paper/optimize-alo.ini" > "$work/check.txt"; ok $? "check exits 0 on optimize-alo.ini"
+grep -Eq "^\[optimize\]" "$work/check.txt"; ok $? "check shows [optimize]"
+grep -Eq "^iterations = 100 +; file line" "$work/check.txt"; ok $? "check shows optimize.iterations from the file"
+grep -Eq "^budget_evals = 3030 +; derived" "$work/check.txt"; ok $? "check shows the derived budget 30 x 101"
+grep -Eq "^lead_unmodified_length_max_mm = 38 mm +; file line" "$work/check.txt"; ok $? "check shows a bound with its unit"
+"$G" check "$SRC/cases/paper/compare-optimizers.ini" > /dev/null; ok $? "check exits 0 on compare-optimizers.ini"
+"$G" check "$SRC/cases/optimize/compare-test-functions.ini" > /dev/null; ok $? "check exits 0 on compare-test-functions.ini"
+
+# ---- optimize: a test function ----------------------------------------------------------------------
+cat > "$work/sphere.ini" <<'EOF'
+[scene]
+analysis = optimize
+[optimize]
+algorithm = alo
+objective = sphere
+dimension = 3
+iterations = 60
+population = 10
+shift = 0.5
+runs = 2
+EOF
+out="$work/opt-sphere"
+"$G" run "$work/sphere.ini" --out "$out" --quiet > "$work/run.txt" 2>&1; ok $? "optimize sphere exits 0 ($(head -c 300 "$work/run.txt"))"
+for f in summary.json optimum.csv convergence.csv; do [ -s "$out/$f" ]; ok $? "optimize sphere: wrote $f"; done
+head -1 "$out/optimum.csv" | grep -q "^variable,symbol,unit,value,lower,upper,minimiser$"; ok $? "optimum.csv header"
+[ "$(($(wc -l < "$out/optimum.csv") - 1))" -eq 3 ]; ok $? "optimum.csv: 3 variables"
+head -1 "$out/convergence.csv" | grep -q "^run,seed_offset,evaluation,f,best_f$"; ok $? "convergence.csv header"
+[ "$(($(wc -l < "$out/convergence.csv") - 1))" -eq $((2 * 610)) ]; ok $? "convergence.csv: 2 runs x 610 evaluations"
+python3 - "$out/summary.json" <<'PY'
+import json, sys, math
+d = json.load(open(sys.argv[1]))
+assert d["analysis"] == "optimize"
+r = d["results"]
+for k in ("objective_value", "optimum", "bounds", "evaluations", "found_at_evaluation", "best_run", "run_values",
+          "true_minimiser", "distance_to_minimiser"):
+    assert k in r, "missing results." + k
+assert r["evaluations"] == 610 and len(r["run_values"]) == 2
+assert r["objective_value"] == min(r["run_values"])
+o = r["true_minimiser"]; x = r["optimum"]
+assert abs(math.dist(o, [x["x1"], x["x2"], x["x3"]]) - r["distance_to_minimiser"]) < 1e-9
+assert r["objective_value"] < 1e-3, r["objective_value"]
+assert d["settings"]["alo_iterations"] == 60 and d["settings"]["budget_evals"] == 610
+PY
+ok $? "optimize sphere: summary.json keys and values"
+
+# ---- optimize: the gear problem, a tiny budget ------------------------------------------------------
+out="$work/opt-gear"
+"$G" run "$SRC/cases/paper/optimize-alo.ini" --out "$out" --quiet --set optimize.iterations=2 \
+    --set optimize.population=4 --set solver.ltca_positions_per_cycle=8 > "$work/run.txt" 2>&1
+ok $? "optimize gear (12 evaluations) exits 0 ($(head -c 300 "$work/run.txt"))"
+for f in summary.json optimum.csv convergence.csv lte.csv optimum/summary.json optimum/load_distribution.csv \
+         optimum/lte.csv optimum-tca/summary.json optimum-tca/contact_path.csv; do
+    [ -s "$out/$f" ]; ok $? "optimize gear: wrote $f"
+done
+ls -a "$out" "$out/optimum" | grep -Eq '\.tmp|\.plot-'; [ $? -ne 0 ]; ok $? "optimize gear: no temporary files left"
+head -1 "$out/optimum.csv" | grep -q "^variable,symbol,unit,value,lower,upper,paper_table2$"; ok $? "optimum.csv header (gear)"
+cut -d, -f2 "$out/optimum.csv" | tr '\n' ' ' | grep -q "^symbol y1 y2 y3 y4 y5 y6 y7 $"; ok $? "optimum.csv rows y1..y7"
+head -1 "$out/lte.csv" | grep -q "^phi1_deg,lte_unmodified_arcsec,lte_table2_arcsec,lte_optimum_arcsec$"; ok $? "lte.csv header"
+[ "$(($(wc -l < "$out/lte.csv") - 1))" -eq 8 ]; ok $? "lte.csv: 8 positions"
+python3 - "$out" <<'PY'
+import json, sys, csv
+out = sys.argv[1]
+d = json.load(open(out + "/summary.json"))
+r = d["results"]
+lte = r["lte_pp_arcsec"]
+for k in ("unmodified", "table2", "optimum"):
+    assert 0 < lte[k] < 10, lte
+assert lte["optimum"] == r["objective_value"], (lte, r["objective_value"])
+assert set(r["optimum_vs_table2"]) == {"y1", "y2", "y3", "y4", "y5", "y7"}
+assert r["optimum_vs_table2"]["y7"]["paper_table2"] == 35
+assert r["paper"]["lte_pp_table2_arcsec"] == 1.157
+assert r["evaluations"] == 12
+# the optimum's own LTCA: the same amplitude, the optimum as its [modification] (derived)
+o = json.load(open(out + "/optimum/summary.json"))
+assert abs(o["results"]["lte_pp_arcsec"] - lte["optimum"]) < 1e-12
+m = o["case"]["parameters"]["modification"]
+assert m["root_relief_amount_um"]["source"] == "derived"
+assert abs(m["root_relief_amount_um"]["value"] - r["optimum"]["root_relief_amount_um"]) < 1e-12
+assert m["lead_relief_outer_um"]["value"] == m["lead_relief_inner_um"]["value"]
+# the LTE columns are the three LTCA runs: their amplitudes
+rows = list(csv.DictReader(open(out + "/lte.csv")))
+for k, col in (("unmodified", "lte_unmodified_arcsec"), ("table2", "lte_table2_arcsec"), ("optimum", "lte_optimum_arcsec")):
+    v = [float(x[col]) for x in rows]
+    assert abs(max(v) - min(v) - lte[k]) < 1e-8, (k, max(v) - min(v), lte[k])
+PY
+ok $? "optimize gear: summary.json keys, LTE amplitudes consistent with lte.csv and optimum/"
+
+# ---- compare-optimizers: a small budget, complete output, 1 and 2 threads ---------------------------
+cat > "$work/cmp.ini" <<'EOF'
+[scene]
+analysis = compare-optimizers
+[optimize]
+objective = sphere, rastrigin
+dimension = 2, 3
+runs = 3
+budget_evals = 150
+population = 10
+shift = 0.5
+ecdf_targets = 11
+target = 1e-6
+EOF
+for t in 1 2; do
+    "$G" run "$work/cmp.ini" --out "$work/cmp$t" --quiet --threads $t > "$work/run.txt" 2>&1
+    ok $? "compare, $t thread(s), exits 0 ($(head -c 300 "$work/run.txt"))"
+done
+out="$work/cmp2"
+for f in runs.csv statistics.csv convergence.csv ecdf.csv best_points.csv summary.json; do
+    [ -s "$out/$f" ]; ok $? "compare: wrote $f"
+done
+if command -v gnuplot > /dev/null; then
+    for f in convergence.png convergence.svg ecdf.png ecdf.svg; do [ -s "$out/$f" ]; ok $? "compare: drew $f"; done
+fi
+ls -a "$out" | grep -Eq '\.tmp|\.plot-'; [ $? -ne 0 ]; ok $? "compare: no temporary files left"
+head -1 "$out/runs.csv" | grep -q "^objective,dimension,optimizer,run,seed,final_f,final_delta_f,evaluations,evals_to_target,starts,wall_s$"
+ok $? "runs.csv columns"
+head -1 "$out/statistics.csv" | grep -q "^objective,dimension,optimizer,runs,budget_evals,f_ref,target,best,q1,median,q3,iqr,worst,mean,successes,success_rate,evals_to_target_median,ert_evals,wall_mean_s,wall_total_s$"
+ok $? "statistics.csv columns"
+head -1 "$out/convergence.csv" | grep -q "^objective,dimension,optimizer,evaluations,q1_delta_f,median_delta_f,q3_delta_f$"; ok $? "convergence.csv columns"
+head -1 "$out/ecdf.csv" | grep -q "^objective,dimension,optimizer,evaluations,fraction$"; ok $? "ecdf.csv columns"
+head -1 "$out/best_points.csv" | grep -q "^objective,dimension,optimizer,run,variable,unit,value$"; ok $? "best_points.csv columns"
+# 4 problems x 9 optimisers x 3 runs
+[ "$(($(wc -l < "$out/runs.csv") - 1))" -eq 108 ]; ok $? "runs.csv: 4 problems x 9 optimisers x 3 runs"
+[ "$(($(wc -l < "$out/statistics.csv") - 1))" -eq 36 ]; ok $? "statistics.csv: 4 x 9 rows"
+[ "$(($(wc -l < "$out/best_points.csv") - 1))" -eq $((9 * 3 * (2 + 2 + 3 + 3))) ]; ok $? "best_points.csv: one row per variable of every run"
+python3 - "$out" <<'PY'
+import json, sys, csv
+out = sys.argv[1]
+d = json.load(open(out + "/summary.json"))
+assert d["analysis"] == "compare-optimizers"
+s = d["settings"]
+assert s["runs"] == 3 and s["budget_evals"] == 150 and len(s["optimizers"]) == 9
+assert len(d["problems"]) == 4
+algs = s["optimizers"]
+runs = list(csv.DictReader(open(out + "/runs.csv")))
+for p in d["problems"]:
+    for k in ("objective", "dimension", "shift", "f_ref", "target", "ecdf_targets", "optimizers"):
+        assert k in p, k
+    assert p["f_ref"] == 0 and len(p["ecdf_targets"]) == 11 and abs(p["ecdf_targets"][-1] - 1e-6) < 1e-18
+    assert set(p["optimizers"]) == set(algs)
+    for a, st in p["optimizers"].items():
+        for k in ("best", "q1", "median", "q3", "iqr", "worst", "success_rate", "evals_to_target_median", "ert_evals",
+                  "wall_mean_s"):
+            assert k in st, k
+        mine = [float(r["final_f"]) for r in runs if r["objective"] == p["objective"]
+                and int(r["dimension"]) == p["dimension"] and r["optimizer"] == a]
+        assert len(mine) == 3 and abs(min(mine) - st["best"]) <= 1e-12 * (1 + abs(st["best"]))
+        assert st["q1"] <= st["median"] <= st["q3"]
+        ok = [float(r["final_f"]) <= 1e-6 for r in runs if r["objective"] == p["objective"]
+              and int(r["dimension"]) == p["dimension"] and r["optimizer"] == a]
+        assert abs(sum(ok) / 3 - st["success_rate"]) < 1e-12
+for r in runs:
+    assert int(r["evaluations"]) <= 150
+    e = int(r["evals_to_target"])
+    assert (e == -1) == (float(r["final_f"]) > 1e-6), r
+for a in algs:
+    assert 0 <= d["ecdf_pooled"][a]["at_budget"] <= 1
+# the ECDF is non-decreasing in the evaluations and the pooled rows are there
+rows = list(csv.DictReader(open(out + "/ecdf.csv")))
+assert any(r["objective"] == "all" for r in rows)
+prev = {}
+for r in rows:
+    key = (r["objective"], r["dimension"], r["optimizer"])
+    f = float(r["fraction"])
+    assert f >= prev.get(key, 0) - 1e-15
+    prev[key] = f
+PY
+ok $? "compare: summary.json keys, statistics consistent with runs.csv, ECDF non-decreasing"
+# 1 and 2 threads: identical outputs except the wall times
+cmp <(cut -d, -f1-10 "$work/cmp1/runs.csv") <(cut -d, -f1-10 "$work/cmp2/runs.csv"); ok $? "runs.csv identical with 1 and 2 threads (without wall_s)"
+cmp <(cut -d, -f1-18 "$work/cmp1/statistics.csv") <(cut -d, -f1-18 "$work/cmp2/statistics.csv"); ok $? "statistics.csv identical (without the wall columns)"
+for f in convergence.csv ecdf.csv best_points.csv; do cmp "$work/cmp1/$f" "$work/cmp2/$f"; ok $? "$f identical with 1 and 2 threads"; done
+python3 - "$work/cmp1/summary.json" "$work/cmp2/summary.json" <<'PY'
+import json, sys
+def strip(o):
+    if isinstance(o, dict):
+        return {k: strip(v) for k, v in o.items() if "wall" not in k and k != "threads"}
+    if isinstance(o, list):
+        return [strip(v) for v in o]
+    return o
+a, b = (strip(json.load(open(p))) for p in sys.argv[1:3])
+assert a == b
+PY
+ok $? "summary.json identical with 1 and 2 threads (without wall times and the thread count)"
+
+# ---- compare-optimizers on the gear problem: a tiny budget --------------------------------------------
+out="$work/cmp-gear"
+"$G" run "$SRC/cases/paper/compare-optimizers.ini" --out "$out" --quiet --set optimize.optimizers=alo,ln_cobyla,random \
+    --set optimize.runs=2 --set optimize.budget_evals=8 --set optimize.population=4 \
+    --set solver.ltca_positions_per_cycle=8 --set output.plots=off > "$work/run.txt" 2>&1
+ok $? "compare on gear-lte (3 optimisers x 2 runs x 8 evaluations) exits 0 ($(head -c 300 "$work/run.txt"))"
+python3 - "$out" <<'PY'
+import json, sys, csv
+out = sys.argv[1]
+d = json.load(open(out + "/summary.json"))
+p = d["problems"][0]
+assert p["objective"] == "gear-lte" and p["dimension"] == 6
+runs = list(csv.DictReader(open(out + "/runs.csv")))
+assert len(runs) == 6
+assert p["f_ref"] == min(float(r["final_f"]) for r in runs)   # the best found: no known minimum
+assert p["f_ref_is"] == "the best value found by any run"
+pts = list(csv.DictReader(open(out + "/best_points.csv")))
+assert {r["variable"] for r in pts} == {"root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
+                                         "tip_relief_length_mm", "lead_relief_inner_um", "lead_unmodified_length_mm"}
+PY
+ok $? "compare on gear-lte: f_ref is the best run, best points named by their [modification] keys"
+
+echo "1..$n"
+[ $bad -eq 0 ]
