@@ -13,8 +13,11 @@
  * step) measure what event location buys:
  *  - adaptive ERK (order 5, rtol 1e-12): the force is continuous, so a step across a
  *    kink has an O(h^3) local error that the error estimator sees and answers with
- *    smaller steps; the drift grows only by a modest factor (about 3 to 4 here, and
- *    between 1.6 and 14 at other tolerances), asserted above 1.5;
+ *    smaller steps: root finding off takes more steps (asserted: more than 5 % more;
+ *    measured 12 to 27 %), and its energy drift stays of the order of the drift with
+ *    root finding (printed, not asserted: their ratio was 1.4 to 5.7 at rtol 1e-12 and
+ *    0.8 to 1.6 at 1e-10 over the engine changes, i.e. the drift of adaptive ERK is set
+ *    by its tolerance, not by the kinks);
  *  - the paper's fixed-step classical RK4: nothing shrinks the straddling steps and the
  *    drift grows by three orders of magnitude, asserted above 100. */
 #include "physics_util.h"
@@ -66,6 +69,7 @@ static void modes_of(const gd_model *m, const double *y, gd_modes *md)
 typedef struct result {
     double on, off;
     long contacts;
+    long steps_on, steps_off;
 } result;
 
 /* Drift with root finding on and off for one solver configuration. */
@@ -81,6 +85,8 @@ static result compare(const char *label, const char *solver, const gd_model *m, 
     o->root_finding = 0;
     r.off = drift(m, o, y0, &md0, nper, &off);
     r.contacts = on.events_by_kind[GD_EV_CONTACT] + on.events_by_kind[GD_EV_BACK_CONTACT];
+    r.steps_on = on.steps;
+    r.steps_off = off.steps;
     printf("# %s, %s: E0 = %.12g; %ld events (%ld contacts; by clearance: ", label, solver,
            gd_model_energy(m, 0.0, y0, &md0), on.events, r.contacts);
     for (int c = 0; c < m->nclear; c++)
@@ -105,8 +111,9 @@ static void check(const char *label, const gd_model *m, gd_solver_opts *o, const
     tap_ok(a.contacts >= min_contacts, "%s: %ld", name, a.contacts);
     snprintf(name, sizeof name, "%s, erk: max |E - E0| / |E0| with event location", label);
     TAP_CLOSE(a.on, 0.0, 1e-8, name);
-    snprintf(name, sizeof name, "%s, erk: drift without root finding / drift with it", label);
-    tap_ok(a.off > 1.5 * a.on, "%s: %.4g (must exceed 1.5; %.3e vs %.3e)", name, a.off / a.on, a.off, a.on);
+    snprintf(name, sizeof name, "%s, erk: root finding off, the error control answers the kinks with more steps", label);
+    tap_ok(a.steps_off > 1.05 * a.steps_on, "%s: %ld against %ld steps (ratio %.3g, must exceed 1.05; energy drift "
+           "%.3e off, %.3e on)", name, a.steps_off, a.steps_on, (double)a.steps_off / (double)a.steps_on, a.off, a.on);
     /* the paper's fixed-step classical RK4 (over half the run): without event location
      * nothing shrinks the steps that straddle a kink, each leaves an O(h^3) error */
     o->method = GD_METHOD_RK4;
@@ -161,7 +168,7 @@ int main(void)
             y0[10 + i] = v[i];
         y0[0] = 0.5;  /* y1L inside its clearance */
         y0[9] = -1.0; /* qR */
-        check("bta", &m, &o, y0, 520, 2000);
+        check("bta", &m, &o, y0, 560, 2000); /* about 2100 contacts: the count of this chaotic rattle moves by a few per cent with rounding */
         gd_case_free(&c);
     }
     return tap_done();

@@ -105,6 +105,7 @@ typedef struct gd_case {
     int fixed_step;
     int root_finding;
     int grazing_watch;
+    int exact_samples;       /* steps end on the sample times of the recorded window (docs/numerics.md section 9) */
     double max_step_fraction;
     double characteristic_length_um;
     int max_events_per_period;

@@ -52,6 +52,7 @@ typedef struct gd_mesh_excitation {
     double a[GD_MESH_HARMONICS], phi[GD_MESH_HARMONICS];
     double rect_high, rect_low, rect_frac; /* levels relative to the mean, fraction at high */
     double phase;            /* half phase offset (rad of the mesh cycle) */
+    double cph, sph;         /* its cosine and sine (precomputed: one sincos per time serves both meshes) */
     double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
     /* precomputed: cos and sin of phi[h] and of e_phi (one sincos per evaluation) */
     double cphi[GD_MESH_HARMONICS], sphi[GD_MESH_HARMONICS], ce, se;
@@ -123,6 +124,10 @@ GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *m
 /* Clearance coordinate and its rate. */
 GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double *y, const gd_modes *md, double *x,
                                double *xdot);
+/* All clearance coordinates and rates at once (one excitation evaluation per mesh); the same
+ * values as gd_model_clearance for each c. */
+GD_API void gd_model_clearances(const gd_model *m, double t, const double *y, const gd_modes *md, double *x,
+                                double *xdot);
 /* ydot = f(t, y) with the held modes. No allocation. */
 GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md);
 /* Tangent (variational) right-hand side out = J(t, y) v in the held modes: the

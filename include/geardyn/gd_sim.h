@@ -34,6 +34,8 @@ typedef struct gd_solver_opts {
     int max_separated_periods; /* a mesh open this long stops the run (GD_ERR_PHYSICS) */
     int n_tangent;           /* tangent vectors integrated with the trajectory (Lyapunov), 0..n */
     int refine_events;       /* redo the step to a located root with the method (not the interpolant) */
+    int interp_degree;       /* degree of ARKODE's Hermite dense output: 0 = 3 (cubic: no RHS evaluation
+                              * of its own); 4 and 5 cost 1 and 4 RHS evaluations per use */
 } gd_solver_opts;
 
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
@@ -85,6 +87,9 @@ GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err);
 /* Advance to an absolute dimensionless time inside the current period or beyond. */
 GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end, gd_error *err);
 
+/* Make steps end on the times t_first + k dt (absolute; dt = 0: no grid), so that states
+ * sampled there are the method's solution, not an interpolant's. */
+GD_API void gd_sim_set_sample_grid(gd_sim *s, double t_first, double dt);
 /* Current time (absolute, dimensionless), state and modes. */
 GD_API double gd_sim_time(const gd_sim *s);
 GD_API long gd_sim_period_index(const gd_sim *s);

@@ -307,6 +307,8 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
             }
             /* the sample at the very start of the window */
             on_step(s, gd_sim_time(s), gd_sim_time(s), &r);
+            if (c->exact_samples) /* samples on step ends: the method's states, not the interpolant's */
+                gd_sim_set_sample_grid(s, r.t_record, r.dt_sample);
         }
         st = gd_sim_period(s, err);
         if (st != GD_OK) {

@@ -143,6 +143,7 @@ typedef struct wp_setting {
     int method, order, root_finding, fixed, steps;
     double rtol, atol;
     double max_step_fraction; /* 0: the case's */
+    int exact_samples;        /* steps end on the sample times (the reference; else the case's setting) */
 } wp_setting;
 
 typedef struct wp_trace {
@@ -355,8 +356,11 @@ static gd_status run_one(const gd_case *c, const gd_model *m, const wp_setting *
     gd_sim_set_hooks(s, on_step, on_event, &x);
     memcpy(tr->pts, gd_sim_state(s), sizeof(double) * (size_t)m->n);
     tr->npts = 1;
-    if (sample)
+    if (sample) {
         take_samples(s, &x, 0.0, 0.0);
+        if (w->exact_samples || c->exact_samples) /* samples on step ends, as in a response run */
+            gd_sim_set_sample_grid(s, 0.0, x.dt_sample);
+    }
     for (long k = 0; k < periods; k++) {
         st = gd_sim_period(s, &e);
         if (st != GD_OK)
@@ -623,6 +627,7 @@ static wp_setting ref_setting(const gd_case *c, int order)
     w.rtol = c->wp_reference_rtol;
     w.atol = c->wp_reference_rtol * c->wp_atol_over_rtol;
     w.max_step_fraction = c->wp_reference_max_step_fraction;
+    w.exact_samples = 1; /* the samples (RMS) of the reference are the method's solution */
     return w;
 }
 

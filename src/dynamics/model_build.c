@@ -85,6 +85,8 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         x->rect_high = 1.0 + c->rectangular_variation;
         x->rect_low = 1.0 - c->rectangular_variation * x->rect_frac / (1.0 - x->rect_frac);
         x->phase = s == 1 ? c->half_phase_deg * deg : 0.0;
+        x->cph = cos(x->phase);
+        x->sph = sin(x->phase);
         double on = c->error_excitation ? 1.0 : 0.0;
         x->e_m = on * c->ste_mean_um * 1e-6 / m->bc_m;
         x->e_r = on * c->ste_amplitude_um * 1e-6 / m->bc_m;

@@ -17,15 +17,19 @@ static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
     return f < x->rect_frac;
 }
 
-/* Stiffness factor, error and its rates of mesh j from one sincos of the mesh phase:
- * harmonics by the angle-addition recurrence, the error by the phase-shift identity. */
-static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes *md, double *kf, double *e,
-                             double *ed, double *edd)
+/* Stiffness factor, error and its rates of mesh j from the sine and cosine (s0, c0) of Omega t,
+ * one sincos for all meshes: the half's phase offset by angle addition, harmonics by the
+ * angle-addition recurrence, the error by the phase-shift identity. */
+static inline void mesh_eval_sc(const gd_model *m, int j, double t, double s0, double c0, const gd_modes *md,
+                                double *kf, double *e, double *ed, double *edd)
 {
     const gd_mesh_excitation *x = &m->mesh[j];
     double th = mesh_phase(m, j, t);
-    double s1, c1;
-    sincos(th, &s1, &c1);
+    double s1 = s0, c1 = c0;
+    if (x->phase != 0.0) {
+        s1 = s0 * x->cph + c0 * x->sph;
+        c1 = c0 * x->cph - s0 * x->sph;
+    }
     if (kf) {
         if (x->kind == GD_STIFF_HARMONIC || x->kind == GD_STIFF_TABLE) {
             double sk = s1, ck = c1, k = x->mean;
@@ -49,6 +53,14 @@ static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes 
         *ed = x->e_r * m->Omega * ce;
     if (edd)
         *edd = -x->e_r * m->Omega * m->Omega * se;
+}
+
+static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes *md, double *kf, double *e,
+                             double *ed, double *edd)
+{
+    double s0, c0;
+    sincos(m->Omega * t, &s0, &c0);
+    mesh_eval_sc(m, j, t, s0, c0, md, kf, e, ed, edd);
 }
 
 GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md)
@@ -101,6 +113,25 @@ GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double 
     }
 }
 
+GD_API void gd_model_clearances(const gd_model *m, double t, const double *y, const gd_modes *md, double *x,
+                                double *xdot)
+{
+    double e[GD_MAX_MESH], ed[GD_MAX_MESH];
+    double s0 = 0.0, c0 = 1.0;
+    if (m->nmesh > 0)
+        sincos(m->Omega * t, &s0, &c0);
+    for (int j = 0; j < m->nmesh; j++)
+        mesh_eval_sc(m, j, t, s0, c0, md, NULL, &e[j], &ed[j], NULL);
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        coord(cl, y, m->ndof, &x[c], &xdot[c]);
+        if (cl->kind == GD_CLR_MESH) {
+            x[c] -= e[cl->mesh];
+            xdot[c] -= ed[cl->mesh];
+        }
+    }
+}
+
 GD_API int gd_model_mode_of(const gd_model *m, int c, double x)
 {
     double h = m->clear[c].h;
@@ -146,8 +177,11 @@ GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const
     const double *dv = v + nd;
     double *da = out + nd;
     double kf[GD_MAX_MESH];
+    double s0 = 0.0, c0 = 1.0;
+    if (m->nmesh > 0)
+        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
-        mesh_eval(m, j, t, md, &kf[j], &(double){0}, NULL, NULL);
+        mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &(double){0}, NULL, NULL);
     for (int i = 0; i < nd; i++) {
         out[i] = dv[i];
         da[i] = 0.0;
@@ -192,13 +226,18 @@ static inline int pulse_at(const gd_mesh_excitation *x, double th)
     return f * 2.0 * M_PI < x->imp_width;
 }
 
-GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
 {
     const gd_mesh_excitation *x = &m->mesh[j];
     if (!(x->imp_width > 0))
         return 0.0;
     int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
     return on ? x->imp_force : 0.0;
+}
+
+GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+{
+    return pulse_force(m, j, t, md);
 }
 
 GD_API int gd_model_pulse_after(const gd_model *m, int j, double t)
@@ -215,14 +254,17 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
     }
     const int nd = m->ndof;
     const double *v = y + nd;
-    double *a = ydot + nd;
+    /* the forces add up in a local array (it cannot alias the model or the state: the compiler
+     * keeps the model's fields in registers), in the same order as always */
+    double a[GD_MAX_DOF];
     double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH];
+    double s0 = 0.0, c0 = 1.0;
+    if (m->nmesh > 0)
+        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
-        mesh_eval(m, j, t, md, &kf[j], &e[j], &ed[j], NULL);
-    for (int i = 0; i < nd; i++) {
-        ydot[i] = v[i];
+        mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &e[j], &ed[j], NULL);
+    for (int i = 0; i < nd; i++)
         a[i] = m->F0[i];
-    }
     for (int q = 0; q < m->nk; q++)
         a[m->K0[q].i] -= m->K0[q].v * y[m->K0[q].j];
     for (int q = 0; q < m->nc; q++)
@@ -240,12 +282,14 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
         int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
         double f = clear_force(m, c, x, xd, kfac, mode);
         if (cl->kind == GD_CLR_MESH)
-            f += gd_model_pulse_force(m, cl->mesh, t, md);
+            f += pulse_force(m, cl->mesh, t, md);
         for (int q = 0; q < cl->nw; q++)
             a[cl->widx[q]] -= cl->wval[q] * f;
     }
-    for (int i = 0; i < nd; i++)
-        a[i] *= m->inv_mass[i];
+    for (int i = 0; i < nd; i++) {
+        ydot[i] = v[i];
+        ydot[nd + i] = a[i] * m->inv_mass[i];
+    }
 }
 
 GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md)
@@ -285,8 +329,11 @@ GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, doub
 GD_API void gd_model_roots(const gd_model *m, double t, const double *y, double *g, const gd_modes *md)
 {
     double e[GD_MAX_MESH];
+    double s0 = 0.0, c0 = 1.0;
+    if (m->nmesh > 0)
+        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
-        mesh_eval(m, j, t, md, NULL, &e[j], NULL, NULL);
+        mesh_eval_sc(m, j, t, s0, c0, md, NULL, &e[j], NULL, NULL);
     for (int c = 0; c < m->nclear; c++) {
         const gd_clearance *cl = &m->clear[c];
         double x = 0;

@@ -45,6 +45,10 @@ struct gd_sim {
     gsl_matrix *qr, *Q, *R;
     gsl_vector *tau;
     double t_step0;          /* start of the last step (local) */
+    double samp_t0, samp_dt; /* sample grid (absolute time; samp_dt 0: none): steps end on it */
+    double cx[GD_MAX_CLEAR], cv[GD_MAX_CLEAR];   /* clearance coordinates and rates at (t, y) when cx_ok */
+    double cx0[GD_MAX_CLEAR], cv0[GD_MAX_CLEAR]; /* the same at the start of the last step */
+    int cx_ok;
     int nroots;
     int rootsfound[2 * GD_MAX_CLEAR];
     gd_step_hook step_hook;
@@ -97,11 +101,21 @@ static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
     return 0;
 }
 
+/* A value of a root function exactly on its boundary (g = 0) counts as the side of the held mode:
+ * ARKODE switches off a root function that is exactly zero where it restarts, and a crossing back
+ * in the first step after an event on the boundary (a grazing separation) would go unseen. */
+#define ON_BOUNDARY 1e-100
+
 static int root_fn(realtype t, N_Vector y, realtype *g, void *user)
 {
     gd_sim *s = user;
     gd_model_roots(&s->m, t, N_VGetArrayPointer(y), g, &s->md);
     s->nroot_evals++;
+    for (int i = 0; i < s->nroots; i++)
+        if (g[i] == 0.0) {
+            int mode = s->md.mode[i / 2]; /* g[2c] = x - h > 0 in mode +1; g[2c+1] = x + h < 0 in mode -1 */
+            g[i] = (i % 2 == 0 ? mode > 0 : mode >= 0) ? ON_BOUNDARY : -ON_BOUNDARY;
+        }
     /* a solution gone NaN or infinite inside a step (an unstable fixed step) would send
      * ARKODE's root search around for ever: fail the step instead */
     for (int i = 0; i < s->nroots; i++)
@@ -222,6 +236,10 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         goto fail;
     }
     CHECK(s->ops->set_err_handler(s->mem, err_handler, s));
+    /* cubic Hermite dense output by default: built from the step's end values and derivatives,
+     * it costs no RHS evaluation (ARKODE's degrees 4 and 5 cost 1 and 4 per use, and its root
+     * check uses it at every step); events are located with the method (refine_root_state) */
+    CHECK(s->ops->set_interpolant_degree(s->mem, o->interp_degree > 0 ? o->interp_degree : 3));
     CHECK(s->ops->set_user_data(s->mem, s));
     CHECK(s->ops->ss_tolerances(s->mem, o->rtol, o->atol));
     CHECK(s->ops->set_max_num_steps(s->mem, 1000000));
@@ -320,6 +338,7 @@ gd_status gd_sim_orthonormalise(gd_sim *s, int accumulate, gd_error *err)
 GD_API gd_status gd_sim_set_state(gd_sim *s, const double *y, gd_error *err)
 {
     memcpy(N_VGetArrayPointer(s->y), y, sizeof(double) * (size_t)s->m.n);
+    s->cx_ok = 0;
     if (!s->md.from_state) {
         gd_status st = gd_model_consistent_modes(&s->m, s->t, y, &s->md, err);
         if (st != GD_OK)
@@ -437,15 +456,22 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
     return -1.0;
 }
 
-/* A touch hidden inside the step [t0, t1]? Returns the time to stop at, or -1. */
+/* The clearance coordinates and rates at the current (t, y), computed once per state. */
+static void clearances_now(gd_sim *s)
+{
+    if (!s->cx_ok)
+        gd_model_clearances(&s->m, s->t, N_VGetArrayPointer(s->y), &s->md, s->cx, s->cv);
+    s->cx_ok = 1;
+}
+
+/* A touch hidden inside the step [t0, t1]? Returns the time to stop at, or -1. The clearances at
+ * t0 are in cx0, cv0, those at t1 (the current state) in cx, cv. */
 static double grazing_check(gd_sim *s, double t0, double t1)
 {
     double best = -1.0;
-    const double *y1 = N_VGetArrayPointer(s->y);
+    clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
-        double x0, v0, x1, v1;
-        gd_model_clearance(&s->m, c, t0, s->y_prev, &s->md, &x0, &v0);
-        gd_model_clearance(&s->m, c, t1, y1, &s->md, &x1, &v1);
+        double x0 = s->cx0[c], v0 = s->cv0[c], x1 = s->cx[c], v1 = s->cv[c];
         double h = s->m.clear[c].h, dt = t1 - t0;
         for (int side = 0; side < 2; side++) {
             double off = side ? h : -h;
@@ -531,32 +557,58 @@ static void saltation(gd_sim *s, int c, int nw)
     }
 }
 
-/* The state at a located root comes from ARKODE's Hermite interpolant (degree at most 5),
- * less accurate than a step of a high-order method. Redo the step from its start to the
- * root with the method itself, so that the state at the event has the method's accuracy
- * (the root information of the original return is kept). */
+/* Where the method itself crosses. ARKODE locates a root on its Hermite interpolant over the
+ * step [t0, t1] (cubic by default: no RHS evaluation of its own), which is less accurate than
+ * the method. The step is redone with the method from t0 to a little past that root,
+ * tr + REFINE_MARGIN (t1 - t0), with root finding on: the crossing is then located again on the
+ * interpolant of the redone step, whose end point is the method's solution and lies just past
+ * the crossing, so the interpolation error at the root is smaller by about (margin / step)^2
+ * and the state at the event has the method's accuracy. The roots found by the redone step
+ * replace the first ones (they are the method's). If the interpolant's root was early by more
+ * than the margin, the step goes on to t1; if the method does not cross in [t0, t1] at all, no
+ * root is reported and the run goes on from t1. Each redone piece is one ARKODE step, and the
+ * step hook runs for it on its interpolant. */
+#define REFINE_MARGIN 1e-4
+
 static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *err)
 {
+    double t1 = tr;
+    if (s->ops->get_current_time(s->mem, &t1) < 0 || !(t1 >= tr))
+        t1 = tr;
     if (!(tr > t0))
         return GD_OK;
-    memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
     int fixed = s->o.method == GD_METHOD_RK4 || s->o.fixed_step;
-    int flag = s->ops->reset(s->mem, t0, s->y);
+    double target = fmin(t1, tr + REFINE_MARGIN * (t1 - t0)), ta = t0;
+    memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
+    int flag = s->ops->reset(s->mem, t0, s->y), found = 0;
     if (flag >= 0)
-        flag = fixed ? s->ops->set_fixed_step(s->mem, tr - t0) : s->ops->set_init_step(s->mem, tr - t0);
-    if (flag >= 0)
-        flag = s->ops->set_stop_time(s->mem, tr);
-    double t2 = t0;
-    if (flag >= 0)
-        flag = s->ops->evolve(s->mem, tr, s->y, &t2, ARK_NORMAL);
-    if (flag == ARK_ROOT_RETURN) {
-        /* the redone step met a crossing just before tr (another clearance, or the same one a
-         * rounding earlier): add it to the crossings being handled */
-        int more[2 * GD_MAX_CLEAR];
-        if (s->ops->get_root_info(s->mem, more) >= 0)
-            for (int i = 0; i < s->nroots; i++)
-                if (!s->rootsfound[i])
-                    s->rootsfound[i] = more[i];
+        flag = fixed ? s->ops->set_fixed_step(s->mem, target - t0) : s->ops->set_init_step(s->mem, target - t0);
+    s->resets++;
+    while (flag >= 0) {
+        flag = s->ops->set_stop_time(s->mem, target);
+        double t2 = ta;
+        if (flag >= 0)
+            flag = s->ops->evolve(s->mem, target, s->y, &t2, ARK_ONE_STEP);
+        if (flag < 0)
+            break;
+        s->t_step0 = ta;
+        s->t = t2;
+        s->cx_ok = 0;
+        if (s->step_hook && s->step_hook(s, abs_time(s, ta), abs_time(s, t2), s->hook_user))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+        if (flag == ARK_ROOT_RETURN) {
+            flag = s->ops->get_root_info(s->mem, s->rootsfound);
+            found = 1;
+            break;
+        }
+        if (!(t2 < t1))
+            break; /* the method did not cross in this step */
+        if (!(t2 < target)) { /* the crossing lies beyond the margin: on to the end of the step */
+            target = t1;
+            if (fixed)
+                flag = s->ops->set_fixed_step(s->mem, t1 - t2);
+        }
+        ta = t2;
     }
     if (fixed && flag >= 0) {
         int f2 = s->ops->set_fixed_step(s->mem, s->m.period / s->o.steps_per_period);
@@ -565,8 +617,8 @@ static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *er
     }
     if (flag < 0)
         return sun_check(s, flag, "refining the state at an event", err);
-    s->resets++;
-    s->t = t2;
+    if (!found)
+        memset(s->rootsfound, 0, sizeof s->rootsfound);
     return GD_OK;
 }
 
@@ -591,12 +643,11 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
      * that touch together, up to rounding) or once the state was refined: a coordinate past
      * a boundary its held mode does not allow switches here and now, or ARKODE, restarting
      * with the root function already past zero, would never see that crossing. */
-    const double *y = N_VGetArrayPointer(s->y);
+    clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
         if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1])
             continue;
-        double x, xd;
-        gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &xd);
+        double x = s->cx[c], xd = s->cv[c];
         int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
@@ -625,11 +676,10 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
  * boundary, and far below any physical length. */
 static gd_status repair_held_modes(gd_sim *s, gd_error *err)
 {
-    const double *y = N_VGetArrayPointer(s->y);
     int changed = 0;
+    clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
-        double x, xd, h = s->m.clear[c].h;
-        gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &xd);
+        double x = s->cx[c], h = s->m.clear[c].h;
         int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
@@ -678,6 +728,15 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
     while (s->t < t_end) {
         double disc = gd_model_next_discontinuity(&s->m, s->t, &s->md);
         double tstop = fmin(t_end, disc);
+        if (s->samp_dt > 0) {
+            double ta = abs_time(s, s->t), tiny = 1e-12 * (fabs(ta) + s->m.period);
+            double k = ceil((ta + tiny - s->samp_t0) / s->samp_dt);
+            if (k < 0)
+                k = 0;
+            double ts = s->samp_t0 + k * s->samp_dt - (double)s->shift * s->m.period;
+            if (ts > s->t && ts < tstop)
+                tstop = ts;
+        }
         if (rewound && t_graze_stop > s->t && t_graze_stop < tstop)
             tstop = t_graze_stop;
         int flag = s->ops->set_stop_time(s->mem, tstop);
@@ -685,6 +744,12 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             return sun_check(s, flag, "SetStopTime", err);
         double t0 = s->t;
         memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
+        if (s->nroots && s->o.grazing_watch) { /* the clearances at the start, for the grazing watch */
+            clearances_now(s);
+            memcpy(s->cx0, s->cx, sizeof s->cx);
+            memcpy(s->cv0, s->cv, sizeof s->cv);
+        }
+        s->cx_ok = 0;
         double tret = t0;
         s->sunmsg[0] = '\0';
         flag = s->ops->evolve(s->mem, tstop, s->y, &tret, ARK_ONE_STEP);
@@ -700,12 +765,16 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
                                 abs_time(s, tret) / s->m.period);
         /* near-grazing watch: a crossing and return hidden inside the step */
         if (s->nroots && s->o.grazing_watch && flag != ARK_ROOT_RETURN && !rewound) {
+            s->t = tret;
             double tg = grazing_check(s, t0, tret);
             if (tg > 0) {
                 s->grazing_suspects++;
                 s->grazing_rewinds++;
                 memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
                 s->t = t0;
+                memcpy(s->cx, s->cx0, sizeof s->cx);
+                memcpy(s->cv, s->cv0, sizeof s->cv);
+                s->cx_ok = 1;
                 gd_status st = reset_at(s, t0, err);
                 if (st != GD_OK)
                     return st;
@@ -720,13 +789,14 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             rewound = 0;
         s->t = tret;
         s->t_step0 = t0;
-        if (s->step_hook && s->step_hook(s, abs_time(s, t0), abs_time(s, tret), s->hook_user))
+        int refine = flag == ARK_ROOT_RETURN && s->o.refine_events;
+        if (!refine && s->step_hook && s->step_hook(s, abs_time(s, t0), abs_time(s, tret), s->hook_user))
             return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
         if (flag == ARK_ROOT_RETURN) {
             int f2 = s->ops->get_root_info(s->mem, s->rootsfound);
             if (f2 < 0)
                 return sun_check(s, f2, "GetRootInfo", err);
-            if (s->o.refine_events) {
+            if (refine) { /* the hook runs on the redone pieces */
                 gd_status st = refine_root_state(s, t0, tret, err);
                 if (st != GD_OK)
                     return st;
@@ -773,6 +843,7 @@ GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err)
         return st;
     /* land exactly on the boundary */
     s->t = (double)(s->period + 1 - s->shift) * s->m.period;
+    s->cx_ok = 0;
     s->period++;
     s->events_this_period = 0;
     /* endless separation: a mesh open for whole periods, one after another, with no event */
@@ -802,10 +873,17 @@ GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err)
         s->shift = s->period;
         st = reset_at(s, 0.0, err);
         s->t = 0.0;
+        s->cx_ok = 0;
         if (st != GD_OK)
             return st;
     }
     return GD_OK;
+}
+
+GD_API void gd_sim_set_sample_grid(gd_sim *s, double t_first, double dt)
+{
+    s->samp_t0 = t_first;
+    s->samp_dt = dt > 0 ? dt : 0.0;
 }
 
 GD_API double gd_sim_time(const gd_sim *s) { return abs_time(s, s->t); }

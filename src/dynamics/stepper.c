@@ -9,7 +9,7 @@ const gd_stepper_ops gd_stepper_erk = {
     ERKStepRootInit, ERKStepSetInitStep, ERKStepSetMaxStep, ERKStepSetFixedStep, ERKStepSetMaxNumSteps,
     ERKStepSStolerances, ERKStepSetUserData, ERKStepSetErrHandlerFn, ERKStepSetOrder, ERKStepGetNumSteps,
     ERKStepGetNumStepAttempts, ERKStepGetNumGEvals, ERKStepGetLastStep, ERKStepSetNoInactiveRootWarn,
-    ERKStepGetReturnFlagName, ERKStepFree,
+    ERKStepSetInterpolantDegree, ERKStepGetCurrentTime, ERKStepGetReturnFlagName, ERKStepFree,
 };
 
 const gd_stepper_ops gd_stepper_ark = {
@@ -17,5 +17,5 @@ const gd_stepper_ops gd_stepper_ark = {
     ARKStepRootInit, ARKStepSetInitStep, ARKStepSetMaxStep, ARKStepSetFixedStep, ARKStepSetMaxNumSteps,
     ARKStepSStolerances, ARKStepSetUserData, ARKStepSetErrHandlerFn, ARKStepSetOrder, ARKStepGetNumSteps,
     ARKStepGetNumStepAttempts, ARKStepGetNumGEvals, ARKStepGetLastStep, ARKStepSetNoInactiveRootWarn,
-    ARKStepGetReturnFlagName, ARKStepFree,
+    ARKStepSetInterpolantDegree, ARKStepGetCurrentTime, ARKStepGetReturnFlagName, ARKStepFree,
 };

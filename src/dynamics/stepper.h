@@ -26,6 +26,8 @@ typedef struct gd_stepper_ops {
     int (*get_num_g_evals)(void *mem, long *n);
     int (*get_last_step)(void *mem, realtype *h);
     int (*set_no_inactive_root_warn)(void *mem);
+    int (*set_interpolant_degree)(void *mem, int degree);
+    int (*get_current_time)(void *mem, realtype *t);
     char *(*flag_name)(long flag);
     void (*free_mem)(void **mem);
 } gd_stepper_ops;
