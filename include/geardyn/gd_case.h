@@ -31,6 +31,7 @@ typedef enum gd_stiffness_kind {
     GD_STIFF_TABLE = 100 /* model level: a tabulated stiffness (from LTCA) */
 } gd_stiffness_kind;
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
+typedef enum gd_vector_kernels { GD_VECTOR_KERNELS_GEARDYN = 0, GD_VECTOR_KERNELS_SUNDIALS = 1 } gd_vector_kernels;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
 /* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
@@ -106,6 +107,7 @@ typedef struct gd_case {
     int root_finding;
     int grazing_watch;
     int exact_samples;       /* steps end on the sample times of the recorded window (docs/numerics.md section 9) */
+    int vector_kernels;      /* gd_vector_kernels */
     double max_step_fraction;
     double characteristic_length_um;
     int max_events_per_period;

@@ -36,6 +36,8 @@ typedef struct gd_solver_opts {
     int refine_events;       /* redo the step to a located root with the method (not the interpolant) */
     int interp_degree;       /* degree of ARKODE's Hermite dense output: 0 = 3 (cubic: no RHS evaluation
                               * of its own); 4 and 5 cost 1 and 4 RHS evaluations per use */
+    int library_vector_ops;  /* 1: SUNDIALS' own serial vector kernels; 0: geardyn's (the same
+                              * results bit for bit, compiled with geardyn; docs/performance.md) */
 } gd_solver_opts;
 
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);

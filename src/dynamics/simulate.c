@@ -6,6 +6,7 @@
 
 #include "erk_table.h"
 #include "stepper.h"
+#include "vector_kernels.h"
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher.h>
@@ -84,6 +85,7 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->refine_events = 1;
     o->root_finding = c->root_finding;
     o->grazing_watch = c->grazing_watch;
+    o->library_vector_ops = c->vector_kernels == GD_VECTOR_KERNELS_SUNDIALS;
     o->max_step_fraction = c->max_step_fraction;
     o->max_events_per_period = c->max_events_per_period;
     o->max_separated_periods = 1000;
@@ -203,6 +205,13 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     /* fused vector operations: one pass over the short state vectors instead of several */
     if (N_VEnableFusedOps_Serial(s->y, SUNTRUE) != 0 || N_VEnableFusedOps_Serial(s->tmp, SUNTRUE) != 0) {
         gd_error_set(err, GD_ERR_SOLVER, "N_VEnableFusedOps_Serial failed");
+        goto fail;
+    }
+    /* the per-step vector kernels compiled with geardyn (Debian's SUNDIALS is built at -O0;
+     * same results bit for bit, vector_kernels.c); every vector ARKODE clones inherits them */
+    if (!o->library_vector_ops &&
+        (gd_vector_use_compiled_ops(s->y) != 0 || gd_vector_use_compiled_ops(s->tmp) != 0)) {
+        gd_error_set(err, GD_ERR_SOLVER, "the state vector is not a serial N_Vector");
         goto fail;
     }
     memcpy(N_VGetArrayPointer(s->y), y0, sizeof(double) * (size_t)m->n);

@@ -1,0 +1,287 @@
+/* The serial vector operations ARKODE calls at every step, compiled with geardyn.
+ *
+ * Why this file exists (docs/performance.md, "Where the time goes"): Debian 12's SUNDIALS 6.4.1
+ * is built without optimisation (-O0), and its serial vector kernels were 57 % of all
+ * instructions of a bta run (N_VLinearCombination_Serial alone 44 %: about 2 300 instructions
+ * per stage sum of 20-element vectors). SUNDIALS' vector interface is an operations table that a
+ * program may fill with its own implementations (the documented route for custom N_Vectors);
+ * gd_vector_use_compiled_ops puts these into the table of a serial vector, whose clones (every
+ * vector ARKODE allocates) inherit it. Everything else, the data layout included, stays
+ * SUNDIALS' serial vector.
+ *
+ * Each kernel performs, element by element, the same floating-point operations in the same
+ * order as the serial vector of SUNDIALS 6.4.1, including the special cases it takes for
+ * coefficients of +1 and -1 and for aliased arguments (which change the rounding: c*(x+y) is
+ * not c*x + c*y). The results are therefore bit-for-bit those of the library's kernels, which
+ * tests/test_vector_kernels.c checks operation by operation and on whole runs; only the speed
+ * differs. solver.vector_kernels = sundials keeps the library's own table. */
+#include "vector_kernels.h"
+
+#include <math.h>
+
+#define LEN(v) NV_LENGTH_S(v)
+#define DAT(v) NV_DATA_S(v)
+
+/* z = a x + b y, with the library's special cases (each changes the rounding or the aliasing) */
+static void k_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    if (z == y && b == 1.0) { /* y += a x */
+        if (a == 1.0)
+            for (sunindextype i = 0; i < n; i++) yd[i] += xd[i];
+        else if (a == -1.0)
+            for (sunindextype i = 0; i < n; i++) yd[i] -= xd[i];
+        else
+            for (sunindextype i = 0; i < n; i++) yd[i] += a * xd[i];
+        return;
+    }
+    if (z == x && a == 1.0) { /* x += b y */
+        if (b == 1.0)
+            for (sunindextype i = 0; i < n; i++) xd[i] += yd[i];
+        else if (b == -1.0)
+            for (sunindextype i = 0; i < n; i++) xd[i] -= yd[i];
+        else
+            for (sunindextype i = 0; i < n; i++) xd[i] += b * yd[i];
+        return;
+    }
+    if (a == 1.0 && b == 1.0) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] + yd[i];
+        return;
+    }
+    if (a == 1.0 && b == -1.0) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] - yd[i];
+        return;
+    }
+    if (a == -1.0 && b == 1.0) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = yd[i] - xd[i];
+        return;
+    }
+    if (a == 1.0) { /* b y + x */
+        for (sunindextype i = 0; i < n; i++) zd[i] = (b * yd[i]) + xd[i];
+        return;
+    }
+    if (b == 1.0) { /* a x + y */
+        for (sunindextype i = 0; i < n; i++) zd[i] = (a * xd[i]) + yd[i];
+        return;
+    }
+    if (a == -1.0) { /* b y - x */
+        for (sunindextype i = 0; i < n; i++) zd[i] = (b * yd[i]) - xd[i];
+        return;
+    }
+    if (b == -1.0) { /* a x - y */
+        for (sunindextype i = 0; i < n; i++) zd[i] = (a * xd[i]) - yd[i];
+        return;
+    }
+    if (a == b) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = a * (xd[i] + yd[i]);
+        return;
+    }
+    if (a == -b) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = a * (xd[i] - yd[i]);
+        return;
+    }
+    for (sunindextype i = 0; i < n; i++) zd[i] = (a * xd[i]) + (b * yd[i]);
+}
+
+static void k_const(realtype c, N_Vector z)
+{
+    const sunindextype n = LEN(z);
+    realtype *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = c;
+}
+
+static void k_prod(N_Vector x, N_Vector y, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] * yd[i];
+}
+
+static void k_div(N_Vector x, N_Vector y, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] / yd[i];
+}
+
+static void k_scale(realtype c, N_Vector x, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *zd = DAT(z);
+    if (z == x) {
+        for (sunindextype i = 0; i < n; i++) xd[i] *= c;
+    } else if (c == 1.0) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = xd[i];
+    } else if (c == -1.0) {
+        for (sunindextype i = 0; i < n; i++) zd[i] = -xd[i];
+    } else {
+        for (sunindextype i = 0; i < n; i++) zd[i] = c * xd[i];
+    }
+}
+
+static void k_abs(N_Vector x, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = fabs(xd[i]);
+}
+
+static void k_inv(N_Vector x, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = 1.0 / xd[i];
+}
+
+static void k_addconst(N_Vector x, realtype b, N_Vector z)
+{
+    const sunindextype n = LEN(x);
+    realtype *xd = DAT(x), *zd = DAT(z);
+    for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] + b;
+}
+
+static realtype k_dotprod(N_Vector x, N_Vector y)
+{
+    const sunindextype n = LEN(x);
+    const realtype *xd = DAT(x), *yd = DAT(y);
+    realtype s = 0.0;
+    for (sunindextype i = 0; i < n; i++) s += xd[i] * yd[i];
+    return s;
+}
+
+static realtype k_maxnorm(N_Vector x)
+{
+    const sunindextype n = LEN(x);
+    const realtype *xd = DAT(x);
+    realtype m = 0.0;
+    for (sunindextype i = 0; i < n; i++)
+        if (fabs(xd[i]) > m)
+            m = fabs(xd[i]);
+    return m;
+}
+
+static realtype k_wsqrsum(N_Vector x, N_Vector w)
+{
+    const sunindextype n = LEN(x);
+    const realtype *xd = DAT(x), *wd = DAT(w);
+    realtype s = 0.0;
+    for (sunindextype i = 0; i < n; i++) {
+        const realtype p = xd[i] * wd[i];
+        s += p * p;
+    }
+    return s;
+}
+
+static realtype k_wrmsnorm(N_Vector x, N_Vector w)
+{
+    return sqrt(k_wsqrsum(x, w) / (realtype)LEN(x));
+}
+
+static realtype k_min(N_Vector x)
+{
+    const sunindextype n = LEN(x);
+    const realtype *xd = DAT(x);
+    realtype m = xd[0];
+    for (sunindextype i = 1; i < n; i++)
+        if (xd[i] < m)
+            m = xd[i];
+    return m;
+}
+
+/* z = sum c[i] X[i]. The vectors are accumulated one after the other (vector-outer loop), as the
+ * library does: with z aliasing one of the X[i] this order is part of the result. */
+static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
+{
+    if (nvec < 1)
+        return -1;
+    if (nvec == 1) {
+        k_scale(c[0], X[0], z);
+        return 0;
+    }
+    if (nvec == 2) {
+        k_linearsum(c[0], X[0], c[1], X[1], z);
+        return 0;
+    }
+    const sunindextype n = LEN(z);
+    realtype *zd = DAT(z);
+    enum { MAXV = 16 };
+    int aliased = nvec > MAXV;
+    for (int i = 1; i < nvec && !aliased; i++)
+        aliased = X[i] == z;
+    if (!aliased) {
+        /* z is none of X[1..]: each element is an independent chain of the same operations, so
+         * the element-outer loop (one store per element) gives the same bits */
+        const realtype *xs[MAXV];
+        for (int i = 0; i < nvec; i++) xs[i] = DAT(X[i]);
+        const int first_is_z = X[0] == z, skip = first_is_z && c[0] == 1.0;
+        for (sunindextype j = 0; j < n; j++) {
+            realtype acc = skip ? zd[j] : c[0] * xs[0][j];
+            for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
+            zd[j] = acc;
+        }
+        return 0;
+    }
+    if (X[0] == z) {
+        if (c[0] != 1.0)
+            for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
+    } else {
+        const realtype *x0 = DAT(X[0]);
+        for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
+    }
+    for (int i = 1; i < nvec; i++) {
+        const realtype *xd = DAT(X[i]);
+        const realtype ci = c[i];
+        for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
+    }
+    return 0;
+}
+
+/* Z[i] = Y[i] + a[i] x */
+static int k_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
+{
+    if (nvec < 1)
+        return -1;
+    if (nvec == 1) {
+        k_linearsum(a[0], x, 1.0, Y[0], Z[0]);
+        return 0;
+    }
+    const sunindextype n = LEN(x);
+    const realtype *xd = DAT(x);
+    for (int i = 0; i < nvec; i++) {
+        realtype *yd = DAT(Y[i]);
+        if (Y == Z) {
+            for (sunindextype j = 0; j < n; j++) yd[j] += a[i] * xd[j];
+        } else {
+            realtype *zd = DAT(Z[i]);
+            for (sunindextype j = 0; j < n; j++) zd[j] = a[i] * xd[j] + yd[j];
+        }
+    }
+    return 0;
+}
+
+int gd_vector_use_compiled_ops(N_Vector v)
+{
+    if (!v || !v->ops || N_VGetVectorID(v) != SUNDIALS_NVEC_SERIAL)
+        return -1;
+    N_Vector_Ops o = v->ops;
+    o->nvlinearsum = k_linearsum;
+    o->nvconst = k_const;
+    o->nvprod = k_prod;
+    o->nvdiv = k_div;
+    o->nvscale = k_scale;
+    o->nvabs = k_abs;
+    o->nvinv = k_inv;
+    o->nvaddconst = k_addconst;
+    o->nvdotprod = k_dotprod;
+    o->nvdotprodlocal = k_dotprod;
+    o->nvmaxnorm = k_maxnorm;
+    o->nvmaxnormlocal = k_maxnorm;
+    o->nvwrmsnorm = k_wrmsnorm;
+    o->nvwsqrsumlocal = k_wsqrsum;
+    o->nvmin = k_min;
+    o->nvminlocal = k_min;
+    o->nvlinearcombination = k_linearcombination;
+    o->nvscaleaddmulti = k_scaleaddmulti;
+    return 0;
+}

@@ -1,0 +1,12 @@
+/* Internal: the serial vector operations ARKODE calls at every step, compiled with geardyn
+ * (bit-for-bit the results of SUNDIALS' own serial kernels; see vector_kernels.c). */
+#ifndef GD_VECTOR_KERNELS_H
+#define GD_VECTOR_KERNELS_H
+
+#include <nvector/nvector_serial.h>
+
+/* Put geardyn's kernels into the operations table of the serial vector v (its clones inherit
+ * them). Returns 0, or -1 if v is not a serial vector. */
+int gd_vector_use_compiled_ops(N_Vector v);
+
+#endif
