@@ -5,7 +5,9 @@
  *
  * Usage: bench_sweep POINTS [MODE] CONFIG...
  *   MODE: both (continuation, up and down: 2 x POINTS runs; default), up, independent
- *   CONFIG: THREADS:MLE, e.g. 2:0 (2 threads, no exponent) 2:1 (2 threads, the exponent) */
+ *   CONFIG: THREADS:MLE, e.g. 2:0 (2 threads, no exponent) 2:1 (2 threads, the exponent)
+ *   any further argument section.key=value is a case setting applied to every configuration
+ *   (e.g. solver.order=8, solver.vector_kernels=sundials) */
 #include "geardyn/geardyn.h"
 
 #include <stdio.h>
@@ -40,17 +42,29 @@ int main(int argc, char **argv)
         a = 3;
     }
     const char *dflt[] = {"2:0", "2:1"};
-    int nconf = argc > a ? argc - a : 2;
-    printf("speed sweep 100-8000 rpm, bta, 300 + 200 mesh periods, rtol 1e-8, %d points, %s\n", points, mode);
+    const char *confs[16], *extra[16];
+    int nconf = 0, nextra = 0;
+    for (int i = a; i < argc; i++) {
+        if (strchr(argv[i], '=') && nextra < 16)
+            extra[nextra++] = argv[i];
+        else if (nconf < 16)
+            confs[nconf++] = argv[i];
+    }
+    if (nconf == 0)
+        confs[nconf++] = dflt[0], confs[nconf++] = dflt[1];
+    printf("speed sweep 100-8000 rpm, bta, 300 + 200 mesh periods, rtol 1e-8, %d points, %s", points, mode);
+    for (int i = 0; i < nextra; i++)
+        printf(", %s", extra[i]);
+    printf("\n");
     printf("%-8s %-4s %10s %10s %8s %14s %12s %12s\n", "threads", "MLE", "wall_s", "cpu_s", "runs", "cpu_s_per_run",
            "steps", "rhs_evals");
     for (int k = 0; k < nconf; k++) {
-        const char *conf = argc > a ? argv[a + k] : dflt[k];
+        const char *conf = confs[k];
         int threads = atoi(conf), mle = atoi(strchr(conf, ':') ? strchr(conf, ':') + 1 : "0");
         gd_case c;
         gd_error err = {0};
         gd_case_init(&c, &err);
-        char sets[16][96];
+        char sets[32][96];
         int n = 0;
         snprintf(sets[n++], 96, "scene.analysis=sweep");
         snprintf(sets[n++], 96, "scene.model=bta");
@@ -71,6 +85,8 @@ int main(int argc, char **argv)
             snprintf(sets[n++], 96, "sweep.mode=independent");
         else
             snprintf(sets[n++], 96, "sweep.direction=%s", mode);
+        for (int i = 0; i < nextra && n < 32; i++)
+            snprintf(sets[n++], 96, "%s", extra[i]);
         for (int i = 0; i < n; i++)
             if (gd_case_set(&c, sets[i], i, &err) != GD_OK) {
                 fprintf(stderr, "%s\n", err.msg);

@@ -215,7 +215,22 @@ static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
         const realtype *xs[MAXV];
         for (int i = 0; i < nvec; i++) xs[i] = DAT(X[i]);
         const int first_is_z = X[0] == z, skip = first_is_z && c[0] == 1.0;
-        for (sunindextype j = 0; j < n; j++) {
+        sunindextype j = 0;
+        for (; j + 4 <= n; j += 4) { /* four elements at a time: independent chains, one pass over X */
+            realtype a0, a1, a2, a3;
+            if (skip) {
+                a0 = zd[j], a1 = zd[j + 1], a2 = zd[j + 2], a3 = zd[j + 3];
+            } else {
+                const realtype *x0 = xs[0] + j;
+                a0 = c[0] * x0[0], a1 = c[0] * x0[1], a2 = c[0] * x0[2], a3 = c[0] * x0[3];
+            }
+            for (int i = 1; i < nvec; i++) {
+                const realtype ci = c[i], *xi = xs[i] + j;
+                a0 += ci * xi[0], a1 += ci * xi[1], a2 += ci * xi[2], a3 += ci * xi[3];
+            }
+            zd[j] = a0, zd[j + 1] = a1, zd[j + 2] = a2, zd[j + 3] = a3;
+        }
+        for (; j < n; j++) {
             realtype acc = skip ? zd[j] : c[0] * xs[0][j];
             for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
             zd[j] = acc;
