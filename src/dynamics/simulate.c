@@ -91,11 +91,13 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->max_separated_periods = 1000;
 }
 
+/* The vectors are the serial ones created in gd_sim_create: their data are read with the
+ * NV_DATA_S macro (N_VGetArrayPointer is a call into Debian's unoptimised library per use). */
 static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
 {
     gd_sim *s = user;
-    const double *yy = N_VGetArrayPointer(y);
-    double *yd = N_VGetArrayPointer(ydot);
+    const double *yy = NV_DATA_S(y);
+    double *yd = NV_DATA_S(ydot);
     gd_model_rhs(&s->m, t, yy, yd, &s->md);
     for (int v = 1; v <= s->k; v++)
         gd_model_tangent(&s->m, t, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
@@ -111,7 +113,7 @@ static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
 static int root_fn(realtype t, N_Vector y, realtype *g, void *user)
 {
     gd_sim *s = user;
-    gd_model_roots(&s->m, t, N_VGetArrayPointer(y), g, &s->md);
+    gd_model_roots(&s->m, t, NV_DATA_S(y), g, &s->md);
     s->nroot_evals++;
     for (int i = 0; i < s->nroots; i++)
         if (g[i] == 0.0) {
@@ -133,7 +135,7 @@ static int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *user, 
     gd_sim *s = user;
     int n = s->m.n;
     double Jd[GD_MAX_STATE * GD_MAX_STATE];
-    gd_model_jacobian(&s->m, t, N_VGetArrayPointer(y), Jd, &s->md);
+    gd_model_jacobian(&s->m, t, NV_DATA_S(y), Jd, &s->md);
     /* the tangent blocks repeat J (within a contact mode J does not depend on the state) */
     SUNMatZero(J);
     for (int b = 0; b <= s->k; b++)
@@ -214,7 +216,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         gd_error_set(err, GD_ERR_SOLVER, "the state vector is not a serial N_Vector");
         goto fail;
     }
-    memcpy(N_VGetArrayPointer(s->y), y0, sizeof(double) * (size_t)m->n);
+    memcpy(NV_DATA_S(s->y), y0, sizeof(double) * (size_t)m->n);
     if (s->k > 0) {
         s->qr = gsl_matrix_alloc((size_t)m->n, (size_t)s->k);
         s->Q = gsl_matrix_alloc((size_t)m->n, (size_t)m->n);
@@ -228,7 +230,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         }
         /* reproducible, generic initial directions: seeded uniform, then orthonormalised */
         gsl_rng_set(rng, 20261121UL);
-        double *yy = N_VGetArrayPointer(s->y);
+        double *yy = NV_DATA_S(s->y);
         for (int v = 1; v <= s->k; v++)
             for (int i = 0; i < m->n; i++)
                 yy[v * m->n + i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
@@ -308,7 +310,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
         s->md.pulse_on[j] = gd_model_pulse_after(m, j, 0.0);
         s->was_open[j] = s->md.mode[m->mesh_clear[j]] == 0;
     }
-    memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
+    memcpy(s->y_prev, NV_DATA_S(s->y), sizeof(double) * (size_t)s->N);
     *out = s;
     return GD_OK;
 fail:
@@ -321,7 +323,7 @@ fail:
 gd_status gd_sim_orthonormalise(gd_sim *s, int accumulate, gd_error *err)
 {
     const int n = s->m.n, k = s->k;
-    double *y = N_VGetArrayPointer(s->y);
+    double *y = NV_DATA_S(s->y);
     for (int v = 0; v < k; v++)
         for (int i = 0; i < n; i++)
             gsl_matrix_set(s->qr, (size_t)i, (size_t)v, y[(v + 1) * n + i]);
@@ -346,7 +348,7 @@ gd_status gd_sim_orthonormalise(gd_sim *s, int accumulate, gd_error *err)
 
 GD_API gd_status gd_sim_set_state(gd_sim *s, const double *y, gd_error *err)
 {
-    memcpy(N_VGetArrayPointer(s->y), y, sizeof(double) * (size_t)s->m.n);
+    memcpy(NV_DATA_S(s->y), y, sizeof(double) * (size_t)s->m.n);
     s->cx_ok = 0;
     if (!s->md.from_state) {
         gd_status st = gd_model_consistent_modes(&s->m, s->t, y, &s->md, err);
@@ -469,7 +471,7 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
 static void clearances_now(gd_sim *s)
 {
     if (!s->cx_ok)
-        gd_model_clearances(&s->m, s->t, N_VGetArrayPointer(s->y), &s->md, s->cx, s->cv);
+        gd_model_clearances(&s->m, s->t, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
     s->cx_ok = 1;
 }
 
@@ -524,7 +526,7 @@ static gd_status record_event(gd_sim *s, int c, int old, int nw, int direction, 
     ev.direction = direction;
     ev.located = located;
     ev.kind = kind_of(old, nw);
-    gd_model_clearance(&s->m, c, s->t, N_VGetArrayPointer(s->y), &s->md, &ev.x, &ev.xdot);
+    gd_model_clearance(&s->m, c, s->t, NV_DATA_S(s->y), &s->md, &ev.x, &ev.xdot);
     s->events++;
     s->by_kind[ev.kind]++;
     s->by_clear[c]++;
@@ -542,7 +544,7 @@ static void saltation(gd_sim *s, int c, int nw)
 {
     const gd_model *m = &s->m;
     const int n = m->n, nd = m->ndof;
-    double *y = N_VGetArrayPointer(s->y);
+    double *y = NV_DATA_S(s->y);
     double fm[GD_MAX_STATE], fp[GD_MAX_STATE];
     gd_model_rhs(m, s->t, y, fm, &s->md);
     int old = s->md.mode[c];
@@ -588,7 +590,7 @@ static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *er
         return GD_OK;
     int fixed = s->o.method == GD_METHOD_RK4 || s->o.fixed_step;
     double target = fmin(t1, tr + REFINE_MARGIN * (t1 - t0)), ta = t0;
-    memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
+    memcpy(NV_DATA_S(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
     int flag = s->ops->reset(s->mem, t0, s->y), found = 0;
     if (flag >= 0)
         flag = fixed ? s->ops->set_fixed_step(s->mem, target - t0) : s->ops->set_init_step(s->mem, target - t0);
@@ -711,7 +713,7 @@ static gd_status repair_held_modes(gd_sim *s, gd_error *err)
  * reported as an event at the step end (not located, as a fixed-step user would see it). */
 static gd_status modes_from_state(gd_sim *s, gd_error *err)
 {
-    const double *y = N_VGetArrayPointer(s->y);
+    const double *y = NV_DATA_S(s->y);
     for (int c = 0; c < s->m.nclear; c++) {
         double x, v;
         gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &v);
@@ -752,7 +754,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         if (flag < 0)
             return sun_check(s, flag, "SetStopTime", err);
         double t0 = s->t;
-        memcpy(s->y_prev, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->N);
+        memcpy(s->y_prev, NV_DATA_S(s->y), sizeof(double) * (size_t)s->N);
         if (s->nroots && s->o.grazing_watch) { /* the clearances at the start, for the grazing watch */
             clearances_now(s);
             memcpy(s->cx0, s->cx, sizeof s->cx);
@@ -769,7 +771,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             sun_check(s, flag, "Evolve", err);
             return gd_error_prefix(err, "at t = %.9g mesh periods", abs_time(s, t0) / s->m.period);
         }
-        if (!state_finite(N_VGetArrayPointer(s->y), s->N))
+        if (!state_finite(NV_DATA_S(s->y), s->N))
             return gd_error_set(err, GD_ERR_SOLVER, "the solution became NaN or infinite at t = %.9g mesh periods",
                                 abs_time(s, tret) / s->m.period);
         /* near-grazing watch: a crossing and return hidden inside the step */
@@ -779,7 +781,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (tg > 0) {
                 s->grazing_suspects++;
                 s->grazing_rewinds++;
-                memcpy(N_VGetArrayPointer(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
+                memcpy(NV_DATA_S(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
                 s->t = t0;
                 memcpy(s->cx, s->cx0, sizeof s->cx);
                 memcpy(s->cv, s->cv0, sizeof s->cv);
@@ -897,7 +899,7 @@ GD_API void gd_sim_set_sample_grid(gd_sim *s, double t_first, double dt)
 
 GD_API double gd_sim_time(const gd_sim *s) { return abs_time(s, s->t); }
 GD_API long gd_sim_period_index(const gd_sim *s) { return s->period; }
-GD_API const double *gd_sim_state(const gd_sim *s) { return N_VGetArrayPointer(s->y); }
+GD_API const double *gd_sim_state(const gd_sim *s) { return NV_DATA_S(s->y); }
 GD_API const gd_modes *gd_sim_modes(const gd_sim *s) { return &s->md; }
 GD_API const gd_model *gd_sim_model(const gd_sim *s) { return &s->m; }
 
@@ -911,13 +913,13 @@ GD_API gd_status gd_sim_dense(gd_sim *s, double t_abs, double *y, gd_error *err)
     if (t < s->t_step0 && t >= s->t_step0 - tol)
         t = s->t_step0;
     if (t == s->t) { /* the current state (also before the first step, when there is no interpolant) */
-        memcpy(y, N_VGetArrayPointer(s->y), sizeof(double) * (size_t)s->m.n);
+        memcpy(y, NV_DATA_S(s->y), sizeof(double) * (size_t)s->m.n);
         return GD_OK;
     }
     int flag = s->ops->get_dky(s->mem, t, 0, s->tmp);
     if (flag < 0)
         return sun_check(s, flag, "GetDky", err);
-    memcpy(y, N_VGetArrayPointer(s->tmp), sizeof(double) * (size_t)s->m.n);
+    memcpy(y, NV_DATA_S(s->tmp), sizeof(double) * (size_t)s->m.n);
     return GD_OK;
 }
 
