@@ -208,6 +208,7 @@ static void run(const char *const *sets, int nsets, const char *kernels, int per
     memset(out, 0, sizeof *out);
     if (gd_case_set(&c, kv, 20, &err) != GD_OK || gd_case_resolve(&c, &err) != GD_OK) {
         tap_ok(0, "case: %s", err.msg);
+        gd_case_free(&c);
         return;
     }
     gd_model m;
@@ -215,14 +216,17 @@ static void run(const char *const *sets, int nsets, const char *kernels, int per
     gd_modes md;
     gd_solver_opts o;
     gd_sim *s = NULL;
-    if (gd_model_build(&c, &m, &err) != GD_OK || gd_model_static_state(&m, y0, &md, &err) != GD_OK) {
+    int ok = gd_model_build(&c, &m, &err) == GD_OK && gd_model_static_state(&m, y0, &md, &err) == GD_OK;
+    gd_solver_opts_from_case(&c, &o);
+    if (!ok) {
         tap_ok(0, "model: %s", err.msg);
+        gd_case_free(&c);
         return;
     }
-    gd_solver_opts_from_case(&c, &o);
     o.n_tangent = tangents;
     if (gd_sim_create(&m, &o, y0, &md, &s, &err) != GD_OK) {
         tap_ok(0, "sim: %s", err.msg);
+        gd_case_free(&c);
         return;
     }
     out->n = m.n;
@@ -242,6 +246,7 @@ static void run(const char *const *sets, int nsets, const char *kernels, int per
     }
     gd_sim_get_stats(s, &out->st);
     gd_sim_free(s);
+    gd_case_free(&c);
 }
 
 static void whole_runs(void)
