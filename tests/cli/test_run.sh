@@ -80,7 +80,7 @@ grep -Eq "^mesh-R" "$work/ev2.txt"; [ $? -ne 0 ]; ok $? "events filter keeps one
 env PATH=/nonexistent "$G" run "$SRC/cases/quickstart.ini" --out "$work/nogp" --set scene.model=torsional \
     --set run.transient_periods=10 --set run.record_periods=5 > "$work/nogp.txt" 2>&1; rc=$?
 [ $rc -eq 0 ]; ok $? "without gnuplot the run still succeeds (exit $rc)"
-grep -q "note: gnuplot is not installed" "$work/nogp.txt"; ok $? "and notes it ($(tail -c 200 "$work/nogp.txt"))"
+grep -q "note: gnuplot is not installed" "$work/nogp.txt"; ok $? "and notes it ($(tail -c 200 "$work/nogp.txt" | tr "\n" " "))"
 ls "$work/nogp" | grep -q "png\|svg"; [ $? -ne 0 ]; ok $? "and draws nothing"
 
 # a failure at run time leaves nothing behind: zero torque and no damping never re-engages
