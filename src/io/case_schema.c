@@ -155,7 +155,7 @@ static const gd_keyspec schema[] = {
     B("solver", "root_finding", root_finding, 1, "locate every contact and separation exactly (off: contact mode from the state at every RHS call)"),
     B("solver", "grazing_watch", grazing_watch, 1, "re-check each step for a touch that leaves and returns inside it"),
     B("solver", "exact_samples", exact_samples, 0,
-      "end steps on the sample times of the recorded window: samples are the method's solution, not the cubic interpolant's"),
+      "end steps on the sample times of the recorded window: samples are the method's solution, not the dense output's"),
     E("solver", "vector_kernels", vector_kernels, 0, "geardyn|sundials",
       "serial vector operations of the integrator: compiled with geardyn, or the SUNDIALS library's own (same results bit for bit)"),
     D("solver", "max_step_fraction", "", max_step_fraction, 0, 1, 1, 0, 0.1, "largest step as a fraction of the mesh period"),
