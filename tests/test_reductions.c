@@ -190,7 +190,7 @@ static void equal_halves(void)
     printf("# (c) torsional-lr with equal halves against torsional (double-sided impacts)\n");
     const char *base[] = {"excitation.stiffness=harmonic", "excitation.stiffness_harmonics=0.2",
                           "scene.error_excitation=on", "excitation.ste_amplitude_um=12", "operating.torque_nm=300",
-                          "solver.rtol=1e-12", "solver.atol=1e-14", NULL};
+                          "solver.rtol=1e-13", "solver.atol=1e-15", NULL};
     const long nper = 200, rec0 = 0;
     const int ns = 32;
     gd_case c1, c2;

@@ -146,7 +146,7 @@ static const gd_keyspec schema[] = {
 
     /* [solver] */
     E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),
-    I("solver", "order", order, 2, 8, 5, "order of the ARKODE method (erk 2-8, dirk 2-5)"),
+    I("solver", "order", order, 2, 8, 8, "order of the ARKODE method (erk 2-8, dirk 2-5; default 8, the Fehlberg 7(8) table; dirk: 4 unless given)"),
     S("solver", "table", table, "", "ARKODE Butcher table name (overrides order), e.g. ARKODE_VERNER_8_5_6"),
     D("solver", "rtol", "", rtol, 1e-14, 1e-1, 0, 0, 1e-8, "relative tolerance"),
     D("solver", "atol", "", atol, 1e-16, 1, 0, 0, 1e-10, "absolute tolerance, dimensionless (characteristic lengths)"),
