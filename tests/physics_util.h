@@ -140,8 +140,8 @@ static inline void pu_samples_free(pu_samples *p)
 /* Run a simulation of nper mesh periods from (y0, md0) and sample periods [rec0, nper)
  * with ns samples per period (the first sample on the boundary of period rec0, the
  * state at the boundary itself is taken from the integrator). */
-static inline void pu_run_sampled(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
-                                  long nper, long rec0, int ns, pu_samples *p, gd_sim_stats *stats)
+static inline void pu_run_sampled_ex(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
+                                     long nper, long rec0, int ns, int exact, pu_samples *p, gd_sim_stats *stats)
 {
     gd_error e;
     memset(&e, 0, sizeof e);
@@ -149,6 +149,8 @@ static inline void pu_run_sampled(const gd_model *m, const gd_solver_opts *o, co
     PU_CHECK(gd_sim_create(m, o, y0, md0, &s, &e), &e);
     pu_samples_init(p, m, (double)rec0 * m->period, m->period / ns, (nper - rec0) * ns);
     gd_sim_set_hooks(s, pu_sample_hook, NULL, p);
+    if (exact) /* steps end on the sample times: the samples are the method's states */
+        gd_sim_set_sample_grid(s, (double)rec0 * m->period, m->period / ns);
     for (long k = 0; k < nper; k++) {
         if (k == rec0 && p->count > 0) {
             memcpy(p->y, gd_sim_state(s), sizeof(double) * (size_t)m->n);
@@ -164,6 +166,12 @@ static inline void pu_run_sampled(const gd_model *m, const gd_solver_opts *o, co
     if (stats)
         gd_sim_get_stats(s, stats);
     gd_sim_free(s);
+}
+
+static inline void pu_run_sampled(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
+                                  long nper, long rec0, int ns, pu_samples *p, gd_sim_stats *stats)
+{
+    pu_run_sampled_ex(m, o, y0, md0, nper, rec0, ns, 0, p, stats);
 }
 
 #endif

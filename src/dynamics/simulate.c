@@ -64,6 +64,7 @@ struct gd_sim {
     long events, by_kind[GD_EV_NKINDS], by_clear[GD_MAX_CLEAR];
     char sunmsg[512];
     int nonfinite;           /* a root function met a non-finite state */
+    double h_resume;         /* > 0: the step to restart with at the next reset (the step that found a root) */
     /* the quintic dense output of the last step (gd_sim_dense): its ends, states and
      * accelerations, valid while nrhs == dq_key (every new step evaluates the RHS) */
     int dq_ok;
@@ -425,6 +426,9 @@ static gd_status reset_at(gd_sim *s, double t, gd_error *err)
 {
     double h = 0;
     s->ops->get_last_step(s->mem, &h);
+    if (s->h_resume > 0) /* after a refined event: the step the controller had reached, not the redone piece */
+        h = s->h_resume;
+    s->h_resume = 0;
     int flag = s->ops->reset(s->mem, t, s->y);
     if (flag < 0)
         return sun_check(s, flag, "Reset", err);
@@ -596,6 +600,7 @@ static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *er
         return GD_OK;
     int fixed = s->o.method == GD_METHOD_RK4 || s->o.fixed_step;
     double target = fmin(t1, tr + REFINE_MARGIN * (t1 - t0)), ta = t0;
+    s->h_resume = t1 - t0;
     memcpy(NV_DATA_S(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
     int flag = s->ops->reset(s->mem, t0, s->y), found = 0;
     if (flag >= 0)
