@@ -3,7 +3,7 @@
 
 For each scene: a reference by geardyn (explicit order 8 at rtol 1e-13, largest step 0.002 of a
 mesh period, events located, samples on step ends), then geardyn (ERK order 5 and 8, events
-located, samples from the cubic dense output or on step ends: solver.exact_samples) and SciPy's
+located, samples from the quintic dense output or on step ends: solver.exact_samples) and SciPy's
 solve_ivp (DOP853 and LSODA with terminal events; DOP853 without events) over a range of rtol,
 all from the same initial state (geardyn's static state: transient_periods = 0), over the same
 window. Every run's Poincare points are compared with the reference (the metric of
@@ -85,7 +85,7 @@ def scene(exe, label, case, extra, periods, rtols_g, rtols_s, naive_rtols, tmp):
 
     print("| program | method | rtol | wall (s) | us/period | RHS/period | events | Poincare error | RMS error |")
     print("|---|---|---|---|---|---|---|---|---|")
-    # the samples (RMS) from geardyn's cubic dense output, or on step ends (solver.exact_samples): SciPy's
+    # the samples (RMS) from geardyn's quintic dense output, or on step ends (solver.exact_samples): SciPy's
     # come from its own dense output (t_eval); the cheapest geardyn setting that reaches a target counts
     for order in (5, 8):
         for exact in ("off", "on"):
