@@ -1,6 +1,6 @@
 /* 10^5 mesh periods (suite 'extremes', docs/accuracy.md): no drift of the Poincare points of a
  * periodic response. The torsional model at 4000 rpm (period-1, double-sided impacts, 4 located
- * events per period), default solver (ERK order 5, rtol 1e-8), integrated for 100 000 mesh
+ * events per period), default solver (ERK order 8, rtol 1e-8), integrated for 100 000 mesh
  * periods (4 x 10^5 events, 3000 time shifts of the integrator's clock). Checked: the Poincare
  * points of the last 1000 periods stay as close to the point after 10^3 periods as those of periods
  * 1000-2000 do, and their mean equals the mean of those (the orbit is attracting, so a drift would
