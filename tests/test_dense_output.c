@@ -24,27 +24,7 @@ static const char *const scene[] = {
 static void run(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md, int exact,
                 pu_samples *p)
 {
-    gd_error e;
-    memset(&e, 0, sizeof e);
-    gd_sim *s = NULL;
-    PU_CHECK(gd_sim_create(m, o, y0, md, &s, &e), &e);
-    pu_samples_init(p, m, P0 * m->period, m->period / NS, (long)(P1 - P0) * NS);
-    gd_sim_set_hooks(s, pu_sample_hook, NULL, p);
-    if (exact)
-        gd_sim_set_sample_grid(s, P0 * m->period, m->period / NS);
-    for (long k = 0; k < P1; k++) {
-        if (k == P0) {
-            memcpy(p->y, gd_sim_state(s), sizeof(double) * (size_t)m->n);
-            p->t[0] = gd_sim_time(s);
-            p->next = 1;
-        }
-        PU_CHECK(gd_sim_period(s, &e), &e);
-    }
-    if (p->failed || p->next != p->count) {
-        printf("Bail out! sampling failed (%ld of %ld samples)\n", p->next, p->count);
-        exit(1);
-    }
-    gd_sim_free(s);
+    pu_run_sampled_ex(m, o, y0, md, P1, P0, NS, exact, p, NULL);
 }
 
 /* largest error of the samples, each variable relative to its largest magnitude in the reference */
