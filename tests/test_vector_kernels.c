@@ -83,7 +83,7 @@ static int same_double(double a, double b) { return memcmp(&a, &b, sizeof a) == 
 static const double coef[] = {1.0, -1.0, 0.0, 0.7, -0.7, 1.3, 2.5e-3};
 #define NCOEF ((int)(sizeof coef / sizeof coef[0]))
 
-static void op_by_op(SUNContext ctx)
+static void op_by_op(SUNContext ctx, const char *width)
 {
     const int lens[] = {1, 7, 20, 40};
     int bad[16] = {0}, count[16] = {0};
@@ -182,8 +182,8 @@ static void op_by_op(SUNContext ctx)
     for (int q = 0; q < 15; q++) {
         if (q >= 5 && q <= 9)
             continue; /* counted with 'const' (one comparison of all element-wise outputs) */
-        tap_ok(count[q] > 0 && bad[q] == 0, "%s%s: %d of %d cases bit-identical to SUNDIALS' serial kernel", names[q],
-               q == 4 ? " prod div abs inv addconst" : "", count[q] - bad[q], count[q]);
+        tap_ok(count[q] > 0 && bad[q] == 0, "%s%s (%s): %d of %d cases bit-identical to SUNDIALS' serial kernel",
+               names[q], q == 4 ? " prod div abs inv addconst" : "", width, count[q] - bad[q], count[q]);
     }
 }
 
@@ -287,7 +287,12 @@ int main(void)
         tap_ok(0, "SUNContext_Create");
         return 1;
     }
-    op_by_op(ctx);
+    /* the linear combination two lanes wide (SSE2), then as the runs use it (AVX where the
+     * processor has it) */
+    gd_vector_kernels_wide(0);
+    op_by_op(ctx, "two lanes");
+    if (gd_vector_kernels_wide(1))
+        op_by_op(ctx, "four lanes, AVX");
     SUNContext_Free(&ctx);
     gsl_rng_free(rng);
     whole_runs();

@@ -18,8 +18,21 @@
 #include "vector_kernels.h"
 
 #include <math.h>
+#include <string.h>
 
 #define LEN(v) NV_LENGTH_S(v)
+
+/* two doubles in one register (GCC and Clang vector extension; SSE2 on x86-64): lane-wise
+ * multiply and add are the scalar operations, so the results keep their bits */
+typedef double v2 __attribute__((vector_size(16)));
+_Static_assert(sizeof(realtype) == sizeof(double), "SUNDIALS built with double precision");
+static inline v2 ld2(const realtype *p)
+{
+    v2 r;
+    memcpy(&r, p, sizeof r);
+    return r;
+}
+static inline void st2(realtype *p, v2 a) { memcpy(p, &a, sizeof a); }
 #define DAT(v) NV_DATA_S(v)
 
 /* z = a x + b y, with the library's special cases (each changes the rounding or the aliasing) */
@@ -189,6 +202,105 @@ static realtype k_min(N_Vector x)
     return m;
 }
 
+/* The sum of k_linearcombination when z is none of X[1..]: z[j] = c[0] X[0][j] (or z[j] itself
+ * when X[0] is z with c[0] = 1), then + c[i] X[i][j] for i = 1, 2, ... in this order. Each element
+ * is an independent chain of the scalar operations, so computing several elements at once in the
+ * lanes of a register (element-outer loop, one pass over the X[i] per block) keeps the bits. */
+static void lc_sum_sse2(int nvec, const realtype *c, const realtype *const *xs, realtype *zd, sunindextype n,
+                        int skip)
+{
+    sunindextype j = 0;
+    for (; j + 8 <= n; j += 8) {
+        v2 a0, a1, a2, a3;
+        if (skip) {
+            a0 = ld2(zd + j), a1 = ld2(zd + j + 2), a2 = ld2(zd + j + 4), a3 = ld2(zd + j + 6);
+        } else {
+            const realtype *x0 = xs[0] + j;
+            const v2 c0 = {c[0], c[0]};
+            a0 = c0 * ld2(x0), a1 = c0 * ld2(x0 + 2), a2 = c0 * ld2(x0 + 4), a3 = c0 * ld2(x0 + 6);
+        }
+        for (int i = 1; i < nvec; i++) {
+            const v2 ci = {c[i], c[i]};
+            const realtype *xi = xs[i] + j;
+            a0 += ci * ld2(xi), a1 += ci * ld2(xi + 2), a2 += ci * ld2(xi + 4), a3 += ci * ld2(xi + 6);
+        }
+        st2(zd + j, a0), st2(zd + j + 2, a1), st2(zd + j + 4, a2), st2(zd + j + 6, a3);
+    }
+    for (; j + 2 <= n; j += 2) {
+        v2 a0 = skip ? ld2(zd + j) : (v2){c[0], c[0]} * ld2(xs[0] + j);
+        for (int i = 1; i < nvec; i++) a0 += (v2){c[i], c[i]} * ld2(xs[i] + j);
+        st2(zd + j, a0);
+    }
+    for (; j < n; j++) {
+        realtype acc = skip ? zd[j] : c[0] * xs[0][j];
+        for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
+        zd[j] = acc;
+    }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define GD_HAVE_AVX_KERNEL 1
+/* The same sum four lanes wide, for processors with AVX (chosen at run time). Separate
+ * multiply and add instructions as above (AVX has no fused multiply-add; FMA is not enabled),
+ * so the bits are those of the scalar chain. */
+typedef double v4 __attribute__((vector_size(32)));
+#define LD4(p) (__extension__({ v4 r_; memcpy(&r_, (p), sizeof r_); r_; }))
+#define ST4(p, a) (__extension__({ v4 a_ = (a); memcpy((p), &a_, sizeof a_); }))
+__attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *c, const realtype *const *xs,
+                                                      realtype *zd, sunindextype n, int skip)
+{
+    sunindextype j = 0;
+    for (; j + 16 <= n; j += 16) {
+        v4 a0, a1, a2, a3;
+        if (skip) {
+            a0 = LD4(zd + j), a1 = LD4(zd + j + 4), a2 = LD4(zd + j + 8), a3 = LD4(zd + j + 12);
+        } else {
+            const realtype *x0 = xs[0] + j;
+            const v4 c0 = {c[0], c[0], c[0], c[0]};
+            a0 = c0 * LD4(x0), a1 = c0 * LD4(x0 + 4), a2 = c0 * LD4(x0 + 8), a3 = c0 * LD4(x0 + 12);
+        }
+        for (int i = 1; i < nvec; i++) {
+            const v4 ci = {c[i], c[i], c[i], c[i]};
+            const realtype *xi = xs[i] + j;
+            a0 += ci * LD4(xi), a1 += ci * LD4(xi + 4), a2 += ci * LD4(xi + 8), a3 += ci * LD4(xi + 12);
+        }
+        ST4(zd + j, a0), ST4(zd + j + 4, a1), ST4(zd + j + 8, a2), ST4(zd + j + 12, a3);
+    }
+    for (; j + 4 <= n; j += 4) {
+        v4 a0;
+        if (skip) {
+            a0 = LD4(zd + j);
+        } else {
+            const v4 c0 = {c[0], c[0], c[0], c[0]};
+            a0 = c0 * LD4(xs[0] + j);
+        }
+        for (int i = 1; i < nvec; i++) {
+            const v4 ci = {c[i], c[i], c[i], c[i]};
+            a0 += ci * LD4(xs[i] + j);
+        }
+        ST4(zd + j, a0);
+    }
+    for (; j < n; j++) {
+        realtype acc = skip ? zd[j] : c[0] * xs[0][j];
+        for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
+        zd[j] = acc;
+    }
+}
+#endif
+
+static int lc_narrow; /* 1: two lanes even where AVX is available (gd_vector_kernels_wide(0), for the tests) */
+
+static void lc_sum(int nvec, const realtype *c, const realtype *const *xs, realtype *zd, sunindextype n, int skip)
+{
+#ifdef GD_HAVE_AVX_KERNEL
+    if (!lc_narrow && __builtin_cpu_supports("avx")) {
+        lc_sum_avx(nvec, c, xs, zd, n, skip);
+        return;
+    }
+#endif
+    lc_sum_sse2(nvec, c, xs, zd, n, skip);
+}
+
 /* z = sum c[i] X[i]. The vectors are accumulated one after the other (vector-outer loop), as the
  * library does: with z aliasing one of the X[i] this order is part of the result. */
 static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
@@ -210,31 +322,9 @@ static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
     for (int i = 1; i < nvec && !aliased; i++)
         aliased = X[i] == z;
     if (!aliased) {
-        /* z is none of X[1..]: each element is an independent chain of the same operations, so
-         * the element-outer loop (one store per element) gives the same bits */
         const realtype *xs[MAXV];
         for (int i = 0; i < nvec; i++) xs[i] = DAT(X[i]);
-        const int first_is_z = X[0] == z, skip = first_is_z && c[0] == 1.0;
-        sunindextype j = 0;
-        for (; j + 4 <= n; j += 4) { /* four elements at a time: independent chains, one pass over X */
-            realtype a0, a1, a2, a3;
-            if (skip) {
-                a0 = zd[j], a1 = zd[j + 1], a2 = zd[j + 2], a3 = zd[j + 3];
-            } else {
-                const realtype *x0 = xs[0] + j;
-                a0 = c[0] * x0[0], a1 = c[0] * x0[1], a2 = c[0] * x0[2], a3 = c[0] * x0[3];
-            }
-            for (int i = 1; i < nvec; i++) {
-                const realtype ci = c[i], *xi = xs[i] + j;
-                a0 += ci * xi[0], a1 += ci * xi[1], a2 += ci * xi[2], a3 += ci * xi[3];
-            }
-            zd[j] = a0, zd[j + 1] = a1, zd[j + 2] = a2, zd[j + 3] = a3;
-        }
-        for (; j < n; j++) {
-            realtype acc = skip ? zd[j] : c[0] * xs[0][j];
-            for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
-            zd[j] = acc;
-        }
+        lc_sum(nvec, c, xs, zd, n, X[0] == z && c[0] == 1.0);
         return 0;
     }
     if (X[0] == z) {
@@ -273,6 +363,16 @@ static int k_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vec
         }
     }
     return 0;
+}
+
+int gd_vector_kernels_wide(int on)
+{
+    lc_narrow = !on;
+#ifdef GD_HAVE_AVX_KERNEL
+    return on && __builtin_cpu_supports("avx");
+#else
+    return 0;
+#endif
 }
 
 int gd_vector_use_compiled_ops(N_Vector v)

@@ -9,4 +9,9 @@
  * them). Returns 0, or -1 if v is not a serial vector. */
 int gd_vector_use_compiled_ops(N_Vector v);
 
+/* The linear combination four lanes wide (AVX, where the processor has it: the default) or two
+ * (SSE2): the bits are the same. Returns 1 if AVX is in use. Process-wide and not thread-safe:
+ * for the tests, which check both. */
+int gd_vector_kernels_wide(int on);
+
 #endif
