@@ -1,6 +1,7 @@
 /* Evaluating the dimensionless model: excitations, right-hand side, Jacobian, root
  * functions, energy and the static state. The RHS, Jacobian and roots allocate nothing. */
 #include "geardyn/gd_model.h"
+#include "model_internal.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_real.h>
@@ -166,8 +167,24 @@ GD_API void gd_model_custom(gd_model *m, const gd_custom_system *sys, double per
     m->dte_scale = m->force_share = 1.0;
 }
 
+/* sin and cos of Omega t (0 and 1 without meshes: nothing reads them) */
+static inline void phase_sc(const gd_model *m, double t, double *s0, double *c0)
+{
+    *s0 = 0.0, *c0 = 1.0;
+    if (m->nmesh > 0)
+        sincos(m->Omega * t, s0, c0);
+}
+
 GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const double *v, double *out,
                              const gd_modes *md)
+{
+    double s0, c0;
+    phase_sc(m, t, &s0, &c0);
+    gd_model_tangent_sc(m, t, s0, c0, y, v, out, md);
+}
+
+void gd_model_tangent_sc(const gd_model *m, double t, double s0, double c0, const double *y, const double *v,
+                         double *out, const gd_modes *md)
 {
     if (m->custom) {
         m->custom->tangent(t, y, v, out, m->custom->ctx);
@@ -177,9 +194,6 @@ GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const
     const double *dv = v + nd;
     double *da = out + nd;
     double kf[GD_MAX_MESH];
-    double s0 = 0.0, c0 = 1.0;
-    if (m->nmesh > 0)
-        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &(double){0}, NULL, NULL);
     for (int i = 0; i < nd; i++) {
@@ -248,6 +262,14 @@ GD_API int gd_model_pulse_after(const gd_model *m, int j, double t)
 
 GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *ydot, const gd_modes *md)
 {
+    double s0, c0;
+    phase_sc(m, t, &s0, &c0);
+    gd_model_rhs_sc(m, t, s0, c0, y, ydot, md);
+}
+
+void gd_model_rhs_sc(const gd_model *m, double t, double s0, double c0, const double *y, double *ydot,
+                     const gd_modes *md)
+{
     if (m->custom) {
         m->custom->rhs(t, y, ydot, m->custom->ctx);
         return;
@@ -258,9 +280,6 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
      * keeps the model's fields in registers), in the same order as always */
     double a[GD_MAX_DOF];
     double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH];
-    double s0 = 0.0, c0 = 1.0;
-    if (m->nmesh > 0)
-        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &e[j], &ed[j], NULL);
     for (int i = 0; i < nd; i++)
@@ -328,10 +347,15 @@ GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, doub
 
 GD_API void gd_model_roots(const gd_model *m, double t, const double *y, double *g, const gd_modes *md)
 {
+    double s0, c0;
+    phase_sc(m, t, &s0, &c0);
+    gd_model_roots_sc(m, t, s0, c0, y, g, md);
+}
+
+void gd_model_roots_sc(const gd_model *m, double t, double s0, double c0, const double *y, double *g,
+                       const gd_modes *md)
+{
     double e[GD_MAX_MESH];
-    double s0 = 0.0, c0 = 1.0;
-    if (m->nmesh > 0)
-        sincos(m->Omega * t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, NULL, &e[j], NULL, NULL);
     for (int c = 0; c < m->nclear; c++) {

@@ -5,6 +5,7 @@
 #include "geardyn/gd_sim.h"
 
 #include "erk_table.h"
+#include "model_internal.h"
 #include "stepper.h"
 #include "vector_kernels.h"
 
@@ -71,7 +72,27 @@ struct gd_sim {
     long dq_key;
     double dq_t0, dq_h;
     double dq_y0[GD_MAX_STATE], dq_y1[GD_MAX_STATE], dq_a0[GD_MAX_DOF], dq_a1[GD_MAX_DOF];
+    /* sin and cos of Omega t at the last few times evaluated (model_internal.h): the stages of a
+     * step with equal nodes and the root functions at its end share them */
+    double sc_t[4], sc_s[4], sc_c[4];
+    int sc_next;
 };
+
+/* sin(Omega t) and cos(Omega t), from the cache when t was one of the last four times */
+static inline void phase_at(gd_sim *s, double t, double *sn, double *cs)
+{
+    for (int i = 0; i < 4; i++)
+        if (s->sc_t[i] == t) {
+            *sn = s->sc_s[i];
+            *cs = s->sc_c[i];
+            return;
+        }
+    *sn = 0.0, *cs = 1.0;
+    if (s->m.nmesh > 0)
+        sincos(s->m.Omega * t, sn, cs);
+    s->sc_t[s->sc_next] = t, s->sc_s[s->sc_next] = *sn, s->sc_c[s->sc_next] = *cs;
+    s->sc_next = (s->sc_next + 1) & 3;
+}
 
 GD_API const char *gd_event_kind_name(int kind)
 {
@@ -105,9 +126,11 @@ static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
     gd_sim *s = user;
     const double *yy = NV_DATA_S(y);
     double *yd = NV_DATA_S(ydot);
-    gd_model_rhs(&s->m, t, yy, yd, &s->md);
+    double sn, cs;
+    phase_at(s, t, &sn, &cs);
+    gd_model_rhs_sc(&s->m, t, sn, cs, yy, yd, &s->md);
     for (int v = 1; v <= s->k; v++)
-        gd_model_tangent(&s->m, t, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
+        gd_model_tangent_sc(&s->m, t, sn, cs, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
     s->nrhs++;
     return 0;
 }
@@ -120,7 +143,9 @@ static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
 static int root_fn(realtype t, N_Vector y, realtype *g, void *user)
 {
     gd_sim *s = user;
-    gd_model_roots(&s->m, t, NV_DATA_S(y), g, &s->md);
+    double sn, cs;
+    phase_at(s, t, &sn, &cs);
+    gd_model_roots_sc(&s->m, t, sn, cs, NV_DATA_S(y), g, &s->md);
     s->nroot_evals++;
     for (int i = 0; i < s->nroots; i++)
         if (g[i] == 0.0) {
@@ -186,6 +211,8 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     if (!s)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory creating the integrator");
     s->m = *m;
+    for (int i = 0; i < 4; i++)
+        s->sc_t[i] = NAN; /* equal to no time */
     s->o = *o;
     s->md = *md0;
     s->md.from_state = !o->root_finding;
