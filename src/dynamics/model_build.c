@@ -36,6 +36,28 @@ static void spring(gd_model *m, int i, int j, double k, double c)
     }
 }
 
+/* Reorder the entries of a sparse list so that consecutive entries act on different rows (the
+ * first entry of every row, then the second of every row, ...), keeping the order within each row.
+ * The RHS subtracts the entries from the rows in list order: each row sees the same operations in
+ * the same order (the same bits), and consecutive updates no longer wait for each other. */
+static void interleave_rows(gd_nz *list, int n)
+{
+    gd_nz out[GD_MAX_NNZ];
+    int taken[GD_MAX_NNZ] = {0}, k = 0;
+    for (int rank = 0; k < n; rank++) {
+        int seen[GD_MAX_DOF] = {0};
+        for (int q = 0; q < n; q++) {
+            if (taken[q])
+                continue;
+            if (seen[list[q].i]++ == 0) { /* the first entry of its row not yet taken */
+                out[k++] = list[q];
+                taken[q] = 1;
+            }
+        }
+    }
+    memcpy(list, out, sizeof(gd_nz) * (size_t)n);
+}
+
 static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
 
 GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
@@ -214,6 +236,8 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         m->nclear = nclr;
     }
     m->n = 2 * m->ndof;
+    interleave_rows(m->K0, m->nk);
+    interleave_rows(m->C0, m->nc);
     for (int i = 0; i < m->ndof; i++)
         m->inv_mass[i] = 1.0 / m->mass[i];
     m->dte_scale = cb;
