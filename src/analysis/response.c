@@ -1,5 +1,6 @@
 /* The `response` analysis of one operating point. */
 #include "geardyn/gd_response.h"
+#include "../dynamics/model_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -50,13 +51,13 @@ typedef struct run_ctx {
     double len_um;           /* micrometres per dimensionless length */
 } run_ctx;
 
-static void mesh_quantities(const gd_model *m, double t, const double *y, const double *ydot, const gd_modes *md,
-                            int j, double *lam, double *lamd, double *acc, double *force)
+static void mesh_quantities(const gd_model *m, double t, double s0, double c0, const double *y, const double *ydot,
+                            const gd_modes *md, int j, double *lam, double *lamd, double *acc, double *force)
 {
     int c = m->mesh_clear[j];
     const gd_clearance *cl = &m->clear[c];
     double e, ed, edd;
-    gd_model_error(m, j, t, md, &e, &ed, &edd);
+    gd_model_error_sc(m, j, t, s0, c0, md, &e, &ed, &edd); /* as gd_model_error, with sincos(Omega t) given */
     double x = 0, v = 0, a = 0;
     for (int q = 0; q < cl->nw; q++) {
         x += cl->wval[q] * y[cl->widx[q]];
@@ -99,11 +100,13 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
         smp.period = (long)floor(ts / m->period + 1e-12);
         smp.y = y;
         const gd_modes *md = gd_sim_modes(s);
-        double acc_mean = 0;
+        double acc_mean = 0, s0, c0;
+        sincos(m->Omega * ts, &s0, &c0); /* one for both meshes */
+        double lam = 0, lamd = 0, acc = 0, force = 0;
         for (int j = 0; j < 2; j++) {
             int jj = j < m->nmesh ? j : 0;
-            double lam, lamd, acc, force;
-            mesh_quantities(m, ts, y, yd, md, jj, &lam, &lamd, &acc, &force);
+            if (j == 0 || jj != 0) /* one mesh (torsional): its quantities serve both columns */
+                mesh_quantities(m, ts, s0, c0, y, yd, md, jj, &lam, &lamd, &acc, &force);
             int qidx = m->q_dof[jj];
             smp.lambda_um[j] = lam * r->len_um;
             smp.lambda_dot_mps[j] = lamd * r->len_um * 1e-6 / r->sec;

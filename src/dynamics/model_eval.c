@@ -90,6 +90,12 @@ GD_API void gd_model_error(const gd_model *m, int j, double t, const gd_modes *m
     mesh_eval(m, j, t, md, NULL, e, edot, eddot);
 }
 
+void gd_model_error_sc(const gd_model *m, int j, double t, double s0, double c0, const gd_modes *md, double *e,
+                       double *edot, double *eddot)
+{
+    mesh_eval_sc(m, j, t, s0, c0, md, NULL, e, edot, eddot);
+}
+
 static inline void coord(const gd_clearance *cl, const double *y, int ndof, double *x, double *v)
 {
     double a = 0, b = 0;

@@ -15,5 +15,7 @@ void gd_model_roots_sc(const gd_model *m, double t, double s0, double c0, const 
                        const gd_modes *md);
 void gd_model_tangent_sc(const gd_model *m, double t, double s0, double c0, const double *y, const double *v,
                          double *out, const gd_modes *md);
+void gd_model_error_sc(const gd_model *m, int j, double t, double s0, double c0, const gd_modes *md, double *e,
+                       double *edot, double *eddot);
 
 #endif
