@@ -46,9 +46,8 @@ static gd_status parse_token(const char *tok, gd_wp_family *f, gd_error *err)
     } else if (strncmp(tok, "erk", 3) == 0 && isdigit((unsigned char)tok[3]) && tok[4] == '\0') {
         f->method = GD_METHOD_ERK;
         f->order = tok[3] - '0';
-        if (f->order < 2 || f->order > 8 || f->order == 7)
-            return gd_error_set(err, GD_ERR_INPUT, "workprecision.families: '%s' (valid orders of erk: 2, 3, 4, 5, 6, "
-                                "8; SUNDIALS 6.4 has no 7th-order explicit table)", tok);
+        if (f->order < 2 || f->order > 8)
+            return gd_error_set(err, GD_ERR_INPUT, "workprecision.families: '%s' (valid orders of erk: 2 to 8)", tok);
     } else if (strncmp(tok, "dirk", 4) == 0 && isdigit((unsigned char)tok[4]) && tok[5] == '\0') {
         f->method = GD_METHOD_DIRK;
         f->order = tok[4] - '0';
@@ -56,7 +55,7 @@ static gd_status parse_token(const char *tok, gd_wp_family *f, gd_error *err)
             return gd_error_set(err, GD_ERR_INPUT, "workprecision.families: '%s' (valid orders of dirk: 2 to 5)", tok);
     } else {
         return gd_error_set(err, GD_ERR_INPUT, "workprecision.families: unknown family '%s' (valid: rk4, erk2, erk3, "
-                            "erk4, erk5, erk6, erk8, dirk2, dirk3, dirk4, dirk5)", tok);
+                            "erk4, erk5, erk6, erk7, erk8, dirk2, dirk3, dirk4, dirk5)", tok);
     }
     snprintf(f->name, sizeof f->name, "%s", tok);
     return GD_OK;
@@ -109,9 +108,6 @@ GD_API gd_status gd_workprec_check_case(const gd_case *c, gd_error *err)
     if (c->wp_rtol_tightest > c->wp_rtol_loosest)
         return gd_error_set(err, GD_ERR_INPUT, "workprecision.rtol_tightest: %g above rtol_loosest %g",
                             c->wp_rtol_tightest, c->wp_rtol_loosest);
-    if (c->wp_reference_order == 7 || c->wp_check_order == 7)
-        return gd_error_set(err, GD_ERR_INPUT, "workprecision.%s: 7 (valid: 2, 3, 4, 5, 6, 8; SUNDIALS 6.4 has no "
-                            "7th-order explicit table)", c->wp_reference_order == 7 ? "reference_order" : "check_order");
     if (c->wp_check_order == c->wp_reference_order)
         return gd_error_set(err, GD_ERR_INPUT, "workprecision.check_order: %d, the order of the reference (valid: "
                             "another order, so that the check is an independent method)", c->wp_check_order);

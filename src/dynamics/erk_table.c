@@ -26,9 +26,18 @@ const char *gd_erk_default_table(int order)
     case 4: return "ARKODE_ZONNEVELD_5_3_4";
     case 5: return "ARKODE_CASH_KARP_6_4_5"; /* SUNDIALS 6.4 default; fewer steps than DP on bta */
     case 6: return "ARKODE_VERNER_8_5_6";
-    case 8: return "ARKODE_FEHLBERG_13_7_8";
+    case 7: return "ARKODE_VERNER_10_6_7";   /* erk_verner.c */
+    case 8: return "ARKODE_VERNER_13_7_8";   /* erk_verner.c; docs/accuracy.md: fewer steps and 5-15x smaller
+                                              * Poincare errors than Fehlberg 7(8) at equal rtol */
     default: return NULL;
     }
+}
+
+ARKodeButcherTable gd_erk_load(const char *name)
+{
+    if (gd_erk_verner_known(name))
+        return gd_erk_verner(name);
+    return ARKodeButcherTable_LoadERKByName(name);
 }
 
 static int needs_fix(ARKodeButcherTable B)

@@ -301,7 +301,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
             B = gd_erk_classical_rk4();
         } else {
             const char *name = o->table[0] ? o->table : gd_erk_default_table(o->order);
-            ARKodeButcherTable B0 = name ? ARKodeButcherTable_LoadERKByName(name) : NULL;
+            ARKodeButcherTable B0 = name ? gd_erk_load(name) : NULL;
             if (!B0) {
                 gd_error_set(err, GD_ERR_INPUT, "no explicit Runge-Kutta table '%s' of order %d", name ? name : "",
                              o->order);

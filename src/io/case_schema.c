@@ -146,7 +146,7 @@ static const gd_keyspec schema[] = {
 
     /* [solver] */
     E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),
-    I("solver", "order", order, 2, 8, 8, "order of the ARKODE method (erk 2-8, dirk 2-5; default 8, the Fehlberg 7(8) table; dirk: 4 unless given)"),
+    I("solver", "order", order, 2, 8, 8, "order of the ARKODE method (erk 2-8, dirk 2-5; default 8, Verner's 8(7) table; dirk: 4 unless given)"),
     S("solver", "table", table, "", "ARKODE Butcher table name (overrides order), e.g. ARKODE_VERNER_8_5_6"),
     D("solver", "rtol", "", rtol, 1e-14, 1e-1, 0, 0, 1e-8, "relative tolerance"),
     D("solver", "atol", "", atol, 1e-16, 1, 0, 0, 1e-10, "absolute tolerance, dimensionless (characteristic lengths)"),
@@ -224,8 +224,8 @@ static const gd_keyspec schema[] = {
       "Poincare responses, comma-separated: lambda_L, lambda_R (default), lambda_dot_L, lambda_dot_R, DOF names, DOF_dot"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
-    S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk8",
-      "method families, comma-separated: rk4 (fixed steps), erk2 to erk8 (no erk7), dirk2 to dirk5 (over rtol)"),
+    S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",
+      "method families, comma-separated: rk4 (fixed steps), erk2 to erk8, dirk2 to dirk5 (over rtol)"),
     B("workprecision", "root_finding_off", wp_root_finding_off, 1,
       "also run every family with root finding off (contact modes from the state, events seen at step ends)"),
     I("workprecision", "rk4_steps_min", wp_rk4_steps_min, 4, 1000000, 16, "rk4: fewest steps per mesh period (doubled up to rk4_steps_max)"),
@@ -240,7 +240,7 @@ static const gd_keyspec schema[] = {
     D("workprecision", "reference_max_step_fraction", "", wp_reference_max_step_fraction, 0, 1, 1, 0, 0.002,
       "largest step of the reference and its check / mesh period: event times are located on ARKODE's interpolant "
       "(degree 5 at most), so they are only as accurate as the steps are short"),
-    I("workprecision", "reference_order", wp_reference_order, 2, 8, 8, "explicit order of the reference (not 7)"),
+    I("workprecision", "reference_order", wp_reference_order, 2, 8, 8, "explicit order of the reference"),
     I("workprecision", "check_order", wp_check_order, 2, 8, 6,
       "explicit order of the independent check of the reference (not 7, not reference_order)"),
     D("workprecision", "reference_max_error", "", wp_reference_max_error, 0, 1, 1, 0, 1e-9,
