@@ -83,6 +83,20 @@ env PATH=/nonexistent "$G" run "$SRC/cases/quickstart.ini" --out "$work/nogp" --
 grep -q "note: gnuplot is not installed" "$work/nogp.txt"; ok $? "and notes it ($(tail -c 200 "$work/nogp.txt" | tr "\n" " "))"
 ls "$work/nogp" | grep -q "png\|svg"; [ $? -ne 0 ]; ok $? "and draws nothing"
 
+# [solver] keys reach the integrator: with fixed_step = on the steps are the period's share (a
+# 13-stage table at 40 steps per period takes at least 40 x 30 steps; adaptive it takes fewer)
+for fs in on off; do
+    "$G" run "$SRC/cases/quickstart.ini" --out "$work/fs_$fs" --quiet --set scene.model=torsional \
+        --set run.transient_periods=20 --set run.record_periods=10 --set solver.fixed_step=$fs \
+        --set solver.steps_per_period=40 > /dev/null 2>&1
+done
+python3 - "$work/fs_on/summary.json" "$work/fs_off/summary.json" <<'PY'
+import json, sys
+on, off = (json.load(open(f))["solver"] for f in sys.argv[1:3])
+assert on["steps"] >= 40 * 30 and off["steps"] < 40 * 30, (on["steps"], off["steps"])
+PY
+ok $? "solver.fixed_step = on fixes the step at the period over steps_per_period"
+
 # a failure at run time leaves nothing behind: zero torque and no damping never re-engages
 out2="$work/run2"
 "$G" run "$SRC/cases/quickstart.ini" --out "$out2" --quiet --set scene.model=torsional --set operating.torque_nm=0 \
