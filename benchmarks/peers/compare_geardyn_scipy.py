@@ -3,7 +3,7 @@
 
 For each scene: a reference by geardyn (explicit order 8 at rtol 1e-13, largest step 0.002 of a
 mesh period, events located, samples on step ends), then geardyn (ERK order 5 and 8, events
-located, samples from the quintic dense output or on step ends: solver.exact_samples) and SciPy's
+located, samples from the septic dense output or on step ends: solver.exact_samples) and SciPy's
 solve_ivp (DOP853 and LSODA with terminal events; DOP853 without events) over a range of rtol,
 all from the same initial state (geardyn's static state: transient_periods = 0), over the same
 window. Every run's Poincare points are compared with the reference (the metric of
@@ -90,7 +90,7 @@ def scene(exe, label, case, extra, periods, rtols_g, rtols_s, naive_rtols, tmp):
 
     print("| program | method | rtol | wall (s) | us/period | RHS/period | events | Poincare error | RMS error |")
     print("|---|---|---|---|---|---|---|---|---|")
-    # the samples (RMS) from geardyn's quintic dense output, or on step ends (solver.exact_samples): SciPy's
+    # the samples (RMS) from geardyn's septic dense output, or on step ends (solver.exact_samples): SciPy's
     # come from its own dense output (t_eval); the cheapest geardyn setting that reaches a target counts
     # ERK8 is Verner's 8(7) (the default), ERK8F Fehlberg's 7(8) (the default until session 7)
     methods = (("ERK5", "solver.order=5"), ("ERK8", "solver.order=8"), ("ERK8F", "solver.table=ARKODE_FEHLBERG_13_7_8"))

@@ -134,6 +134,12 @@ GD_API void gd_model_rhs(const gd_model *m, double t, const double *y, double *y
  * linearisation of each contact mode, O(nonzeros), no allocation. */
 GD_API void gd_model_tangent(const gd_model *m, double t, const double *y, const double *v, double *out,
                              const gd_modes *md);
+/* The jerk of a built-in model: the time derivative of the accelerations along the solution,
+ * d/dt f(t, y(t)) = df/dy (v, acc) + df/dt in the held modes, given the accelerations acc (the
+ * velocity part of f at (t, y)). Fills jerk[0..ndof) and returns 0, or returns -1 for a custom
+ * system. No allocation. */
+GD_API int gd_model_jerk(const gd_model *m, double t, const double *y, const double *acc, double *jerk,
+                         const gd_modes *md);
 /* Dense Jacobian df/dy (n x n, row-major) in the held modes. */
 GD_API void gd_model_jacobian(const gd_model *m, double t, const double *y, double *J, const gd_modes *md);
 /* Root functions: 2 per clearance, x_c - h_c and x_c + h_c. */

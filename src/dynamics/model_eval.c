@@ -623,3 +623,68 @@ GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double 
     x->imp_width = width;
     return GD_OK;
 }
+
+/* d/dt of the stiffness factor of mesh j: the harmonic series differentiated term by term
+ * (a rectangular or constant factor is constant between the stops at its edges) */
+static double stiffness_rate(const gd_model *m, int j, double t)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    if (x->kind != GD_STIFF_HARMONIC && x->kind != GD_STIFF_TABLE)
+        return 0.0;
+    double ph = mesh_phase(m, j, t), r = 0.0;
+    for (int h = 0; h < x->nh; h++)
+        r -= x->a[h] * (double)(h + 1) * sin((h + 1) * ph + x->phi[h]);
+    return r * m->Omega;
+}
+
+GD_API int gd_model_jerk(const gd_model *m, double t, const double *y, const double *acc, double *jerk,
+                         const gd_modes *md)
+{
+    if (m->custom)
+        return -1;
+    const int nd = m->ndof;
+    const double *v = y + nd;
+    double da[GD_MAX_DOF];
+    double kf[GD_MAX_MESH], kfd[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH], edd[GD_MAX_MESH];
+    double s0, c0;
+    phase_sc(m, t, &s0, &c0);
+    for (int j = 0; j < m->nmesh; j++) {
+        mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &e[j], &ed[j], &edd[j]);
+        kfd[j] = stiffness_rate(m, j, t);
+    }
+    /* F0 and the impact pulses are constant between the stops at their edges */
+    for (int i = 0; i < nd; i++)
+        da[i] = 0.0;
+    for (int q = 0; q < m->nk; q++)
+        da[m->K0[q].i] -= m->K0[q].v * v[m->K0[q].j];
+    for (int q = 0; q < m->nc; q++)
+        da[m->C0[q].i] -= m->C0[q].v * acc[m->C0[q].j];
+    for (int c = 0; c < m->nclear; c++) {
+        const gd_clearance *cl = &m->clear[c];
+        double x = 0, xd = 0, xdd = 0;
+        for (int q = 0; q < cl->nw; q++) {
+            x += cl->wval[q] * y[cl->widx[q]];
+            xd += cl->wval[q] * v[cl->widx[q]];
+            xdd += cl->wval[q] * acc[cl->widx[q]];
+        }
+        double kfac = 1.0, kdot = 0.0;
+        if (cl->kind == GD_CLR_MESH) {
+            x -= e[cl->mesh];
+            xd -= ed[cl->mesh];
+            xdd -= edd[cl->mesh];
+            kfac = kf[cl->mesh];
+            kdot = kfd[cl->mesh];
+        }
+        int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
+        double fd = 0.0; /* d/dt of clear_force */
+        if (mode != 0)
+            fd = cl->k * (kdot * (x - (mode > 0 ? cl->h : -cl->h)) + kfac * xd);
+        if (!cl->damp_contact_only || mode != 0)
+            fd += cl->c * xdd;
+        for (int q = 0; q < cl->nw; q++)
+            da[cl->widx[q]] -= cl->wval[q] * fd;
+    }
+    for (int i = 0; i < nd; i++)
+        jerk[i] = da[i] * m->inv_mass[i];
+    return 0;
+}

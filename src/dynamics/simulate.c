@@ -66,12 +66,15 @@ struct gd_sim {
     char sunmsg[512];
     int nonfinite;           /* a root function met a non-finite state */
     double h_resume;         /* > 0: the step to restart with at the next reset (the step that found a root) */
-    /* the quintic dense output of the last step (gd_sim_dense): its ends, states and
+    /* the septic dense output of the last step (gd_sim_dense): its ends, states and
      * accelerations, valid while nrhs == dq_key (every new step evaluates the RHS) */
     int dq_ok;
     long dq_key;
-    double dq_t0, dq_h;
+    double dq_t0, dq_h, dq_t1;
     double dq_y0[GD_MAX_STATE], dq_y1[GD_MAX_STATE], dq_a0[GD_MAX_DOF], dq_a1[GD_MAX_DOF];
+    double dq_j0[GD_MAX_DOF], dq_j1[GD_MAX_DOF];
+    long dq_resets;          /* resets when the ends were read: the next step's start is this end */
+    gd_modes dq_md;          /* ... if no reset came between and the modes are the same */
     /* sin and cos of Omega t at the last few times evaluated (model_internal.h): the stages of a
      * step with equal nodes and the root functions at its end share them */
     double sc_t[4], sc_s[4], sc_c[4];
@@ -942,13 +945,14 @@ GD_API const gd_modes *gd_sim_modes(const gd_sim *s) { return &s->md; }
 GD_API const gd_model *gd_sim_model(const gd_sim *s) { return &s->m; }
 
 /* Dense output of a gear model inside the last step [t0, t1] = [tn - h, tn]. The state is
- * (q, v) with q' = v, so the ends give each position its value, rate and acceleration (the
- * RHS at the ends, which ARKODE's Hermite interpolant holds): the quintic Hermite Q of q
- * through these six values, and v = Q'. The error is O(h^6) in q and O(h^5) in v, against
- * O(h^4) for ARKODE's cubic, at four interpolant reads per step and no RHS evaluation of its
- * own (docs/numerics.md section 9). Returns 0 with y filled, 1 when t is not inside the last
- * step (the caller falls back to ARKODE's interpolant), or a negative ARKODE flag. */
-static int dense_quintic(gd_sim *s, double t, double *y)
+ * (q, v) with q' = v, so the ends give each position its value, rate, acceleration (the RHS at
+ * the ends, which ARKODE's Hermite interpolant holds) and jerk (the time derivative of the RHS
+ * along the solution, gd_model_jerk, with the step's modes): the septic Hermite Q of q through
+ * these eight values, and v = Q'. The error is O(h^8) in q and O(h^7) in v, against O(h^4) for
+ * ARKODE's cubic, at four interpolant reads and two jerk evaluations per step with samples and no
+ * RHS evaluation (docs/numerics.md section 9). Returns 0 with y filled, 1 when t is not inside
+ * the last step (the caller falls back to ARKODE's interpolant), or a negative ARKODE flag. */
+static int dense_septic(gd_sim *s, double t, double *y)
 {
     const int n = s->m.n, nd = s->m.ndof;
     if (!s->dq_ok || s->dq_key != s->nrhs) {
@@ -956,21 +960,37 @@ static int dense_quintic(gd_sim *s, double t, double *y)
         if (s->ops->get_current_time(s->mem, &tn) < 0 || s->ops->get_last_step(s->mem, &h) < 0 || !(h > 0))
             return 1;
         double t0 = tn - h;
-        int flag = s->ops->get_dky(s->mem, t0, 0, s->tmp);
-        if (flag < 0)
-            return flag;
-        memcpy(s->dq_y0, NV_DATA_S(s->tmp), sizeof(double) * (size_t)n);
-        if ((flag = s->ops->get_dky(s->mem, t0, 1, s->tmp)) < 0)
-            return flag;
-        memcpy(s->dq_a0, NV_DATA_S(s->tmp) + nd, sizeof(double) * (size_t)nd);
+        int flag;
+        /* the start of this step is the end of the last step read, when the integrator went on
+         * from there (no reset) in the same modes: its values, acceleration and jerk carry over */
+        if (s->dq_ok && t0 == s->dq_t1 && s->resets == s->dq_resets &&
+            memcmp(&s->md, &s->dq_md, sizeof s->md) == 0) {
+            memcpy(s->dq_y0, s->dq_y1, sizeof(double) * (size_t)n);
+            memcpy(s->dq_a0, s->dq_a1, sizeof(double) * (size_t)nd);
+            memcpy(s->dq_j0, s->dq_j1, sizeof(double) * (size_t)nd);
+        } else {
+            if ((flag = s->ops->get_dky(s->mem, t0, 0, s->tmp)) < 0)
+                return flag;
+            memcpy(s->dq_y0, NV_DATA_S(s->tmp), sizeof(double) * (size_t)n);
+            if ((flag = s->ops->get_dky(s->mem, t0, 1, s->tmp)) < 0)
+                return flag;
+            memcpy(s->dq_a0, NV_DATA_S(s->tmp) + nd, sizeof(double) * (size_t)nd);
+            if (gd_model_jerk(&s->m, t0, s->dq_y0, s->dq_a0, s->dq_j0, &s->md) != 0)
+                return 1;
+        }
         if ((flag = s->ops->get_dky(s->mem, tn, 0, s->tmp)) < 0)
             return flag;
         memcpy(s->dq_y1, NV_DATA_S(s->tmp), sizeof(double) * (size_t)n);
         if ((flag = s->ops->get_dky(s->mem, tn, 1, s->tmp)) < 0)
             return flag;
         memcpy(s->dq_a1, NV_DATA_S(s->tmp) + nd, sizeof(double) * (size_t)nd);
+        if (gd_model_jerk(&s->m, tn, s->dq_y1, s->dq_a1, s->dq_j1, &s->md) != 0)
+            return 1;
+        s->dq_resets = s->resets;
+        s->dq_md = s->md;
         s->dq_t0 = t0;
         s->dq_h = h;
+        s->dq_t1 = tn;
         s->dq_ok = 1;
         s->dq_key = s->nrhs; /* after the reads: a read at tn may evaluate the RHS */
     }
@@ -979,23 +999,23 @@ static int dense_quintic(gd_sim *s, double t, double *y)
         return 1;
     double x = (t - s->dq_t0) / h;
     x = x < 0 ? 0 : (x > 1 ? 1 : x);
-    const double x2 = x * x, x3 = x2 * x, x4 = x3 * x, x5 = x4 * x;
-    /* the quintic Hermite basis on [0, 1] and its derivative */
-    const double h5 = 10 * x3 - 15 * x4 + 6 * x5;                 /* q1 - q0 */
-    const double h1 = x - 6 * x3 + 8 * x4 - 3 * x5;                /* h v0 */
-    const double h4 = -4 * x3 + 7 * x4 - 3 * x5;                   /* h v1 */
-    const double h2 = 0.5 * (x2 - 3 * x3 + 3 * x4 - x5);           /* h^2 a0 */
-    const double h3 = 0.5 * (x3 - 2 * x4 + x5);                    /* h^2 a1 */
-    const double d5 = 30 * x2 - 60 * x3 + 30 * x4;
-    const double d1 = 1 - 18 * x2 + 32 * x3 - 15 * x4;
-    const double d4 = -12 * x2 + 28 * x3 - 15 * x4;
-    const double d2 = 0.5 * (2 * x - 9 * x2 + 12 * x3 - 5 * x4);
-    const double d3 = 0.5 * (3 * x2 - 8 * x3 + 5 * x4);
+    const double x2 = x * x, x3 = x2 * x, x4 = x3 * x, x5 = x4 * x, x6 = x5 * x, x7 = x6 * x;
+    const double h2 = h * h, h3 = h2 * h;
     for (int i = 0; i < nd; i++) {
-        double q0 = s->dq_y0[i], q1 = s->dq_y1[i], v0 = s->dq_y0[nd + i], v1 = s->dq_y1[nd + i];
-        double a0 = s->dq_a0[i], a1 = s->dq_a1[i], dq = q1 - q0;
-        y[i] = q0 + dq * h5 + h * (v0 * h1 + v1 * h4 + h * (a0 * h2 + a1 * h3));
-        y[nd + i] = dq / h * d5 + v0 * d1 + v1 * d4 + h * (a0 * d2 + a1 * d3);
+        const double q0 = s->dq_y0[i], q1 = s->dq_y1[i], v0 = s->dq_y0[nd + i], v1 = s->dq_y1[nd + i];
+        const double a0 = s->dq_a0[i], a1 = s->dq_a1[i], j0 = s->dq_j0[i], j1 = s->dq_j1[i];
+        /* Q(x) = q0 + h v0 x + h^2 a0 x^2/2 + h^3 j0 x^3/6 + c4 x^4 + ... + c7 x^7; the residuals of
+         * the Taylor part at x = 1 in value and first three derivatives fix c4..c7 */
+        const double r0 = q1 - (q0 + h * (v0 + h * (0.5 * a0 + h * j0 / 6.0)));
+        const double r1 = h * (v1 - (v0 + h * (a0 + 0.5 * h * j0)));
+        const double r2 = h2 * (a1 - (a0 + h * j0));
+        const double r3 = h3 * (j1 - j0);
+        const double c4 = 35.0 * r0 - 15.0 * r1 + 2.5 * r2 - r3 / 6.0;
+        const double c5 = -84.0 * r0 + 39.0 * r1 - 7.0 * r2 + 0.5 * r3;
+        const double c6 = 70.0 * r0 - 34.0 * r1 + 6.5 * r2 - 0.5 * r3;
+        const double c7 = -20.0 * r0 + 10.0 * r1 - 2.0 * r2 + r3 / 6.0;
+        y[i] = q0 + h * (v0 * x + h * (0.5 * a0 * x2 + h * j0 * x3 / 6.0)) + c4 * x4 + c5 * x5 + c6 * x6 + c7 * x7;
+        y[nd + i] = v0 + h * (a0 * x + 0.5 * h * j0 * x2) + (4.0 * c4 * x3 + 5.0 * c5 * x4 + 6.0 * c6 * x5 + 7.0 * c7 * x6) / h;
     }
     return 0;
 }
@@ -1014,7 +1034,7 @@ GD_API gd_status gd_sim_dense(gd_sim *s, double t_abs, double *y, gd_error *err)
         return GD_OK;
     }
     if (!s->o.arkode_dense && !s->m.custom) {
-        int r = dense_quintic(s, t, y);
+        int r = dense_septic(s, t, y);
         if (r < 0)
             return sun_check(s, r, "GetDky", err);
         if (r == 0)
