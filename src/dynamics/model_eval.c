@@ -643,48 +643,38 @@ GD_API int gd_model_jerk(const gd_model *m, double t, const double *y, const dou
     if (m->custom)
         return -1;
     const int nd = m->ndof;
-    const double *v = y + nd;
-    double da[GD_MAX_DOF];
-    double kf[GD_MAX_MESH], kfd[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH], edd[GD_MAX_MESH];
+    /* along the state: the tangent map applied to the motion (v, acc) */
+    double yd[GD_MAX_STATE], out[GD_MAX_STATE];
+    memcpy(yd, y + nd, sizeof(double) * (size_t)nd);
+    memcpy(yd + nd, acc, sizeof(double) * (size_t)nd);
+    gd_model_tangent(m, t, y, yd, out, md);
+    /* along the time: the mesh clearances' stiffness factor and error move with t (x_c = w.q - e,
+     * so dx/dt = -e', dxdot/dt = -e''); F0 and the impact pulses are constant between the stops
+     * at their edges */
+    double da[GD_MAX_DOF] = {0};
+    double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH], edd[GD_MAX_MESH];
     double s0, c0;
     phase_sc(m, t, &s0, &c0);
-    for (int j = 0; j < m->nmesh; j++) {
+    for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &e[j], &ed[j], &edd[j]);
-        kfd[j] = stiffness_rate(m, j, t);
-    }
-    /* F0 and the impact pulses are constant between the stops at their edges */
-    for (int i = 0; i < nd; i++)
-        da[i] = 0.0;
-    for (int q = 0; q < m->nk; q++)
-        da[m->K0[q].i] -= m->K0[q].v * v[m->K0[q].j];
-    for (int q = 0; q < m->nc; q++)
-        da[m->C0[q].i] -= m->C0[q].v * acc[m->C0[q].j];
     for (int c = 0; c < m->nclear; c++) {
         const gd_clearance *cl = &m->clear[c];
-        double x = 0, xd = 0, xdd = 0;
-        for (int q = 0; q < cl->nw; q++) {
-            x += cl->wval[q] * y[cl->widx[q]];
-            xd += cl->wval[q] * v[cl->widx[q]];
-            xdd += cl->wval[q] * acc[cl->widx[q]];
-        }
-        double kfac = 1.0, kdot = 0.0;
-        if (cl->kind == GD_CLR_MESH) {
-            x -= e[cl->mesh];
-            xd -= ed[cl->mesh];
-            xdd -= edd[cl->mesh];
-            kfac = kf[cl->mesh];
-            kdot = kfd[cl->mesh];
-        }
-        int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
-        double fd = 0.0; /* d/dt of clear_force */
-        if (mode != 0)
-            fd = cl->k * (kdot * (x - (mode > 0 ? cl->h : -cl->h)) + kfac * xd);
-        if (!cl->damp_contact_only || mode != 0)
-            fd += cl->c * xdd;
+        if (cl->kind != GD_CLR_MESH)
+            continue;
+        const int j = cl->mesh;
+        double x = -e[j];
         for (int q = 0; q < cl->nw; q++)
-            da[cl->widx[q]] -= cl->wval[q] * fd;
+            x += cl->wval[q] * y[cl->widx[q]];
+        int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
+        double ft = 0.0; /* the explicit time derivative of clear_force */
+        if (mode != 0)
+            ft = cl->k * (stiffness_rate(m, j, t) * (x - (mode > 0 ? cl->h : -cl->h)) - kf[j] * ed[j]);
+        if (!cl->damp_contact_only || mode != 0)
+            ft -= cl->c * edd[j];
+        for (int q = 0; q < cl->nw; q++)
+            da[cl->widx[q]] -= cl->wval[q] * ft;
     }
     for (int i = 0; i < nd; i++)
-        jerk[i] = da[i] * m->inv_mass[i];
+        jerk[i] = out[nd + i] + da[i] * m->inv_mass[i];
     return 0;
 }
