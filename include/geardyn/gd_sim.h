@@ -38,6 +38,9 @@ typedef struct gd_solver_opts {
                               * of its own); 4 and 5 cost 1 and 4 RHS evaluations per use */
     int library_vector_ops;  /* 1: SUNDIALS' own serial vector kernels; 0: geardyn's (the same
                               * results bit for bit, compiled with geardyn; docs/performance.md) */
+    int generic_rhs;         /* 1: the model's general RHS and tangent loops at every stage; 0 (default):
+                              * compiled for the held contact modes at each change of modes (the same
+                              * function, a different order of the operations: equal to rounding) */
     int arkode_dense;        /* gd_sim_dense: 0 (default) the septic Hermite of the positions through
                               * both ends of the step (values, rates, accelerations, jerks; gear models;
                               * docs/numerics.md section 9), 1 ARKODE's Hermite interpolant (of

@@ -9,53 +9,6 @@
 #include <math.h>
 #include <string.h>
 
-static inline double mesh_phase(const gd_model *m, int j, double t) { return m->Omega * t + m->mesh[j].phase; }
-
-static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
-{
-    double f = ph / (2.0 * M_PI);
-    f -= floor(f);
-    return f < x->rect_frac;
-}
-
-/* Stiffness factor, error and its rates of mesh j from the sine and cosine (s0, c0) of Omega t,
- * one sincos for all meshes: the half's phase offset by angle addition, harmonics by the
- * angle-addition recurrence, the error by the phase-shift identity. */
-static inline void mesh_eval_sc(const gd_model *m, int j, double t, double s0, double c0, const gd_modes *md,
-                                double *kf, double *e, double *ed, double *edd)
-{
-    const gd_mesh_excitation *x = &m->mesh[j];
-    double th = mesh_phase(m, j, t);
-    double s1 = s0, c1 = c0;
-    if (x->phase != 0.0) {
-        s1 = s0 * x->cph + c0 * x->sph;
-        c1 = c0 * x->cph - s0 * x->sph;
-    }
-    if (kf) {
-        if (x->kind == GD_STIFF_HARMONIC || x->kind == GD_STIFF_TABLE) {
-            double sk = s1, ck = c1, k = x->mean;
-            for (int h = 0; h < x->nh; h++) {
-                k += x->a[h] * (ck * x->cphi[h] - sk * x->sphi[h]);
-                double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
-                sk = sn;
-                ck = cn;
-            }
-            *kf = k;
-        } else if (x->kind == GD_STIFF_RECTANGULAR) {
-            int level = md->from_state ? rect_level_at(x, th) : md->rect_level[j];
-            *kf = level ? x->rect_high : x->rect_low;
-        } else {
-            *kf = 1.0;
-        }
-    }
-    double se = s1 * x->ce + c1 * x->se, ce = c1 * x->ce - s1 * x->se; /* sin, cos of th + e_phi */
-    *e = x->e_m + x->e_r * se;
-    if (ed)
-        *ed = x->e_r * m->Omega * ce;
-    if (edd)
-        *edd = -x->e_r * m->Omega * m->Omega * se;
-}
-
 static inline void mesh_eval(const gd_model *m, int j, double t, const gd_modes *md, double *kf, double *e,
                              double *ed, double *edd)
 {
@@ -235,24 +188,6 @@ void gd_model_tangent_sc(const gd_model *m, double t, double s0, double c0, cons
     }
     for (int i = 0; i < nd; i++)
         da[i] *= m->inv_mass[i];
-}
-
-static inline int pulse_at(const gd_mesh_excitation *x, double th)
-{
-    if (!(x->imp_width > 0))
-        return 0;
-    double f = (th - x->imp_phase) / (2.0 * M_PI);
-    f -= floor(f);
-    return f * 2.0 * M_PI < x->imp_width;
-}
-
-static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
-{
-    const gd_mesh_excitation *x = &m->mesh[j];
-    if (!(x->imp_width > 0))
-        return 0.0;
-    int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
-    return on ? x->imp_force : 0.0;
 }
 
 GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md)

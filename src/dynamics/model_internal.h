@@ -3,11 +3,80 @@
  * harmonics); an integrator evaluates several times at the same t (stages of a Runge-Kutta step
  * with equal nodes, the root functions at the step end), so gd_sim keeps the last few and passes
  * them in. The results are those of gd_model_rhs, gd_model_roots and gd_model_tangent with the
- * same sincos values, to the bit. */
+ * same sincos values, to the bit. The excitation of a mesh is evaluated inline here, for these and
+ * for the RHS compiled for the held modes (rhs_plan.h). */
 #ifndef GD_MODEL_INTERNAL_H
 #define GD_MODEL_INTERNAL_H
 
 #include "geardyn/gd_model.h"
+
+#include <math.h>
+
+static inline double mesh_phase(const gd_model *m, int j, double t) { return m->Omega * t + m->mesh[j].phase; }
+
+static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
+{
+    double f = ph / (2.0 * M_PI);
+    f -= floor(f);
+    return f < x->rect_frac;
+}
+
+/* Stiffness factor, error and its rates of mesh j from the sine and cosine (s0, c0) of Omega t,
+ * one sincos for all meshes: the half's phase offset by angle addition, harmonics by the
+ * angle-addition recurrence, the error by the phase-shift identity. */
+static inline __attribute__((always_inline)) void mesh_eval_sc(const gd_model *m, int j, double t, double s0, double c0, const gd_modes *md,
+                                double *kf, double *e, double *ed, double *edd)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    double th = mesh_phase(m, j, t);
+    double s1 = s0, c1 = c0;
+    if (x->phase != 0.0) {
+        s1 = s0 * x->cph + c0 * x->sph;
+        c1 = c0 * x->cph - s0 * x->sph;
+    }
+    if (kf) {
+        if (x->kind == GD_STIFF_HARMONIC || x->kind == GD_STIFF_TABLE) {
+            double sk = s1, ck = c1, k = x->mean;
+            for (int h = 0; h < x->nh; h++) {
+                k += x->a[h] * (ck * x->cphi[h] - sk * x->sphi[h]);
+                double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
+                sk = sn;
+                ck = cn;
+            }
+            *kf = k;
+        } else if (x->kind == GD_STIFF_RECTANGULAR) {
+            int level = md->from_state ? rect_level_at(x, th) : md->rect_level[j];
+            *kf = level ? x->rect_high : x->rect_low;
+        } else {
+            *kf = 1.0;
+        }
+    }
+    double se = s1 * x->ce + c1 * x->se, ce = c1 * x->ce - s1 * x->se; /* sin, cos of th + e_phi */
+    *e = x->e_m + x->e_r * se;
+    if (ed)
+        *ed = x->e_r * m->Omega * ce;
+    if (edd)
+        *edd = -x->e_r * m->Omega * m->Omega * se;
+}
+
+static inline int pulse_at(const gd_mesh_excitation *x, double th)
+{
+    if (!(x->imp_width > 0))
+        return 0;
+    double f = (th - x->imp_phase) / (2.0 * M_PI);
+    f -= floor(f);
+    return f * 2.0 * M_PI < x->imp_width;
+}
+
+static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+{
+    const gd_mesh_excitation *x = &m->mesh[j];
+    if (!(x->imp_width > 0))
+        return 0.0;
+    int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
+    return on ? x->imp_force : 0.0;
+}
+
 
 void gd_model_rhs_sc(const gd_model *m, double t, double s0, double c0, const double *y, double *ydot,
                      const gd_modes *md);

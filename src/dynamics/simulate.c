@@ -8,6 +8,7 @@
 #include "model_internal.h"
 #include "stepper.h"
 #include "vector_kernels.h"
+#include "rhs_plan.h"
 
 #include <arkode/arkode_arkstep.h>
 #include <arkode/arkode_butcher.h>
@@ -79,6 +80,10 @@ struct gd_sim {
      * step with equal nodes and the root functions at its end share them */
     double sc_t[4], sc_s[4], sc_c[4];
     int sc_next;
+    /* the RHS compiled for the held modes (rhs_plan.h): the last few sets of modes (a mesh that
+     * opens and closes goes back and forth between two) */
+    gd_rhs_plan plan[4];
+    int plan_cur, plan_next, use_plan;
 };
 
 /* sin(Omega t) and cos(Omega t), from the cache when t was one of the last four times */
@@ -117,9 +122,26 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->root_finding = c->root_finding;
     o->grazing_watch = c->grazing_watch;
     o->library_vector_ops = c->vector_kernels == GD_VECTOR_KERNELS_SUNDIALS;
+    o->generic_rhs = !c->compiled_rhs;
     o->max_step_fraction = c->max_step_fraction;
     o->max_events_per_period = c->max_events_per_period;
     o->max_separated_periods = 1000;
+}
+
+/* the compiled RHS of the held modes: the one used last, another kept, or built now */
+static const gd_rhs_plan *plan_for(gd_sim *s)
+{
+    if (gd_rhs_plan_current(&s->plan[s->plan_cur], &s->md))
+        return &s->plan[s->plan_cur];
+    for (int i = 0; i < 4; i++)
+        if (gd_rhs_plan_current(&s->plan[i], &s->md)) {
+            s->plan_cur = i;
+            return &s->plan[i];
+        }
+    s->plan_cur = s->plan_next;
+    s->plan_next = (s->plan_next + 1) % 4;
+    gd_rhs_plan_build(&s->plan[s->plan_cur], &s->m, &s->md);
+    return &s->plan[s->plan_cur];
 }
 
 /* The vectors are the serial ones created in gd_sim_create: their data are read with the
@@ -131,10 +153,17 @@ static int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void *user)
     double *yd = NV_DATA_S(ydot);
     double sn, cs;
     phase_at(s, t, &sn, &cs);
+    s->nrhs++;
+    if (s->use_plan && gd_rhs_plan_applies(&s->m, &s->md)) {
+        const gd_rhs_plan *p = plan_for(s);
+        gd_rhs_plan_rhs(p, &s->m, t, sn, cs, yy, yd, &s->md);
+        for (int v = 1; v <= s->k; v++)
+            gd_rhs_plan_tangent(p, &s->m, t, sn, cs, yy + v * s->m.n, yd + v * s->m.n, &s->md);
+        return 0;
+    }
     gd_model_rhs_sc(&s->m, t, sn, cs, yy, yd, &s->md);
     for (int v = 1; v <= s->k; v++)
         gd_model_tangent_sc(&s->m, t, sn, cs, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
-    s->nrhs++;
     return 0;
 }
 
@@ -219,6 +248,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     s->o = *o;
     s->md = *md0;
     s->md.from_state = !o->root_finding;
+    s->use_plan = !o->generic_rhs;
     if (SUNContext_Create(NULL, &s->ctx) != 0) {
         free(s);
         return gd_error_set(err, GD_ERR_SOLVER, "SUNContext_Create failed");

@@ -158,6 +158,8 @@ static const gd_keyspec schema[] = {
       "end steps on the sample times of the recorded window: samples are the method's solution, not the dense output's"),
     E("solver", "vector_kernels", vector_kernels, 0, "geardyn|sundials",
       "serial vector operations of the integrator: compiled with geardyn, or the SUNDIALS library's own (same results bit for bit)"),
+    B("solver", "compiled_rhs", compiled_rhs, 1,
+      "evaluate the gear model compiled for the held contact modes (off: the model's general loops; the same function to rounding)"),
     D("solver", "max_step_fraction", "", max_step_fraction, 0, 1, 1, 0, 0.1, "largest step as a fraction of the mesh period"),
     D("solver", "characteristic_length_um", "um", characteristic_length_um, 0, 1e4, 1, 0, 1.0, "length scale of the dimensionless equations"),
     I("solver", "max_events_per_period", max_events_per_period, 1, 100000000, 10000, "more events than this in one mesh period stop the run (chattering)"),

@@ -1,0 +1,63 @@
+/* Internal: the right-hand side of a gear model compiled for one set of held contact modes.
+ *
+ * Between two events the contact modes are fixed, and with them every clearance except the
+ * meshes is a linear spring and damper: the bearing contacts fold into the constant stiffness and
+ * damping, and the mass scaling into every coefficient. What is left per evaluation is a diagonal,
+ * a short list of off-diagonal coefficients and one rank-one term per mesh (its stiffness and
+ * error vary with time). gd_sim builds the plan when the modes change and evaluates the RHS and
+ * the tangent map with it: the same function as gd_model_rhs and gd_model_tangent, in a different
+ * order of the floating-point operations (the results agree to rounding, tests/test_rhs_plan.c),
+ * at about a third of the instructions (docs/performance.md). */
+#ifndef GD_RHS_PLAN_H
+#define GD_RHS_PLAN_H
+
+#include "geardyn/gd_model.h"
+
+#include <string.h>
+
+typedef struct gd_plan_coef {
+    int i, j; /* acceleration i, state component j (0..n-1: positions, then velocities) */
+    double v;
+} gd_plan_coef;
+
+/* the accelerations in blocks of four lanes, zeros beyond the degrees of freedom */
+#define GD_PLAN_W (((GD_MAX_DOF) + 3) / 4 * 4)
+
+typedef struct gd_plan_mesh {
+    int j;                    /* mesh index */
+    double w[GD_PLAN_W];      /* weights of its coordinate x = w . q - e(t) over the degrees of freedom */
+    double u[GD_PLAN_W];      /* w / mass: how its force moves the accelerations */
+    double ks, hs, cs;        /* stiffness (0 when open), held half gap with the side's sign, damping */
+} gd_plan_mesh;
+
+typedef struct gd_rhs_plan {
+    int valid;
+    int mode[GD_MAX_CLEAR];   /* the modes it was built for */
+    int nd, noff, nmesh;
+    double b[GD_PLAN_W];      /* constant accelerations (static load, bearing contacts' offsets) */
+    double kd[GD_PLAN_W], cd[GD_PLAN_W];            /* diagonal stiffness and damping over mass */
+    gd_plan_coef off[2 * GD_MAX_DOF * GD_MAX_DOF]; /* the rest of the constant linear part */
+    gd_plan_mesh mesh[GD_MAX_MESH];
+} gd_rhs_plan;
+
+/* 1 when the plan applies: a gear model (not a custom system) with modes held between events. */
+static inline int gd_rhs_plan_applies(const gd_model *m, const gd_modes *md)
+{
+    return !m->custom && !md->from_state;
+}
+
+/* 1 when p was built for the modes of md. */
+static inline int gd_rhs_plan_current(const gd_rhs_plan *p, const gd_modes *md)
+{
+    return p->valid && memcmp(p->mode, md->mode, sizeof p->mode) == 0;
+}
+
+void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md);
+/* ydot = f(t, y), with the sine and cosine (s0, c0) of Omega t (model_internal.h) */
+void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
+                     const double *restrict y, double *restrict ydot, const gd_modes *md);
+/* out = J(t, y) v */
+void gd_rhs_plan_tangent(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
+                         const double *restrict v, double *restrict out, const gd_modes *md);
+
+#endif
