@@ -156,6 +156,7 @@ static void whole_run(const char *name, const char *const *sets, int periods, in
            name, periods, d / sc, events[0], events[1]);
     if (lyap)
         TAP_CLOSE(mle[0], mle[1], 1e-6 * fmax(1.0, fabs(mle[1])), "largest Lyapunov exponent, compiled vs general");
+    gd_case_free(&c);
 }
 
 int main(void)
@@ -182,20 +183,24 @@ int main(void)
 
     const char *rect[] = {"scene.model=bta", "excitation.stiffness=rectangular", "damping.mesh_damping_mode=contact",
                           NULL};
+    gd_case_free(&c);
     pu_case(&c, rect);
     pu_build(&c, &m);
     check_model("bta, rectangular stiffness", &m, r);
 
     const char *lr[] = {"scene.model=torsional-lr", "clearance.backlash_um=20", NULL};
+    gd_case_free(&c);
     pu_case(&c, lr);
     pu_build(&c, &m);
     check_model("torsional-lr", &m, r);
 
     const char *tor[] = {"scene.model=torsional", NULL};
+    gd_case_free(&c);
     pu_case(&c, tor);
     pu_build(&c, &m);
     check_model("torsional", &m, r);
 
+    gd_case_free(&c);
     hand_model(&m);
     check_model("hand-built 5 degrees of freedom (general size)", &m, r);
     gsl_rng_free(r);
