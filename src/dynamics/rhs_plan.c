@@ -177,41 +177,48 @@ static inline __attribute__((always_inline)) void dispatch(const gd_rhs_plan *p,
     }
 }
 
+/* tangent a constant in each branch: two copies of each size, without the unused terms */
+static inline __attribute__((always_inline)) void both(const gd_rhs_plan *p, const gd_model *m, double t, double s0,
+                                                       double c0, const double *y, double *out, const gd_modes *md,
+                                                       int tangent)
+{
+    if (tangent)
+        dispatch(p, m, t, s0, c0, y, out, md, 1);
+    else
+        dispatch(p, m, t, s0, c0, y, out, md, 0);
+}
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GD_PLAN_AVX 1
-__attribute__((target("avx"))) static void rhs_avx(const gd_rhs_plan *p, const gd_model *m, double t, double s0,
-                                                   double c0, const double *y, double *ydot, const gd_modes *md)
+__attribute__((target("avx"))) static void both_avx(const gd_rhs_plan *p, const gd_model *m, double t, double s0,
+                                                    double c0, const double *y, double *out, const gd_modes *md,
+                                                    int tangent)
 {
-    dispatch(p, m, t, s0, c0, y, ydot, md, 0);
-}
-__attribute__((target("avx"))) static void tangent_avx(const gd_rhs_plan *p, const gd_model *m, double t,
-                                                       double s0, double c0, const double *v, double *out,
-                                                       const gd_modes *md)
-{
-    dispatch(p, m, t, s0, c0, v, out, md, 1);
+    both(p, m, t, s0, c0, y, out, md, tangent);
 }
 #endif
+
+/* four lanes in one AVX register where the processor has it, else two SSE2 registers */
+static void run(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0, const double *y,
+                double *out, const gd_modes *md, int tangent)
+{
+#ifdef GD_PLAN_AVX
+    if (__builtin_cpu_supports("avx")) {
+        both_avx(p, m, t, s0, c0, y, out, md, tangent);
+        return;
+    }
+#endif
+    both(p, m, t, s0, c0, y, out, md, tangent);
+}
 
 void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
                      const double *restrict y, double *restrict ydot, const gd_modes *md)
 {
-#ifdef GD_PLAN_AVX
-    if (__builtin_cpu_supports("avx")) {
-        rhs_avx(p, m, t, s0, c0, y, ydot, md);
-        return;
-    }
-#endif
-    dispatch(p, m, t, s0, c0, y, ydot, md, 0);
+    run(p, m, t, s0, c0, y, ydot, md, 0);
 }
 
 void gd_rhs_plan_tangent(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
                          const double *restrict v, double *restrict out, const gd_modes *md)
 {
-#ifdef GD_PLAN_AVX
-    if (__builtin_cpu_supports("avx")) {
-        tangent_avx(p, m, t, s0, c0, v, out, md);
-        return;
-    }
-#endif
-    dispatch(p, m, t, s0, c0, v, out, md, 1);
+    run(p, m, t, s0, c0, v, out, md, 1);
 }
