@@ -108,6 +108,7 @@ typedef struct gd_case {
     int grazing_watch;
     int exact_samples;       /* steps end on the sample times of the recorded window (docs/numerics.md section 9) */
     int vector_kernels;      /* gd_vector_kernels */
+    int gated_roots;         /* 1: ARKODE is given the root functions only to locate a crossing found at a step end */
     int compiled_rhs;        /* 1: the RHS compiled for the held contact modes (src/dynamics/rhs_plan.h) */
     double max_step_fraction;
     double characteristic_length_um;

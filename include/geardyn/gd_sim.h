@@ -41,6 +41,10 @@ typedef struct gd_solver_opts {
     int generic_rhs;         /* 1: the model's general RHS and tangent loops at every stage; 0 (default):
                               * compiled for the held contact modes at each change of modes (the same
                               * function, a different order of the operations: equal to rounding) */
+    int ungated_roots;       /* 1: ARKODE checks the root functions at every step; 0 (default): geardyn checks
+                              * their signs at each step end and ARKODE, given the functions only then,
+                              * redoes a step that crossed and locates the root (docs/numerics.md
+                              * section 3; adaptive ERK with refine_events; the same events) */
     int arkode_dense;        /* gd_sim_dense: 0 (default) the septic Hermite of the positions through
                               * both ends of the step (values, rates, accelerations, jerks; gear models;
                               * docs/numerics.md section 9), 1 ARKODE's Hermite interpolant (of

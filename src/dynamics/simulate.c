@@ -54,6 +54,10 @@ struct gd_sim {
     int cx_ok;
     int nroots;
     int rootsfound[2 * GD_MAX_CLEAR];
+    /* gated root finding (docs/numerics.md section 3): ARKODE holds the root functions (armed)
+     * only while it locates a crossing that the step-end check found, or redoes a step the
+     * grazing watch suspects; every other step ends without its root machinery */
+    int gate, armed;
     gd_step_hook step_hook;
     gd_event_hook event_hook;
     void *hook_user;
@@ -123,6 +127,7 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->grazing_watch = c->grazing_watch;
     o->library_vector_ops = c->vector_kernels == GD_VECTOR_KERNELS_SUNDIALS;
     o->generic_rhs = !c->compiled_rhs;
+    o->ungated_roots = !c->gated_roots;
     o->max_step_fraction = c->max_step_fraction;
     o->max_events_per_period = c->max_events_per_period;
     o->max_separated_periods = 1000;
@@ -369,8 +374,12 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     }
     if (o->root_finding && m->nclear > 0) {
         s->nroots = 2 * m->nclear;
-        CHECK(s->ops->root_init(s->mem, s->nroots, root_fn));
-        CHECK(s->ops->set_no_inactive_root_warn(s->mem));
+        s->gate = !o->ungated_roots && o->refine_events && !s->implicit && o->method != GD_METHOD_RK4 && !o->fixed_step;
+        if (!s->gate) {
+            CHECK(s->ops->root_init(s->mem, s->nroots, root_fn));
+            CHECK(s->ops->set_no_inactive_root_warn(s->mem));
+            s->armed = 1;
+        }
     }
     for (int j = 0; j < m->nmesh; j++) {
         s->md.rect_level[j] = gd_model_rect_level_after(m, j, 0.0, &s->md);
@@ -651,6 +660,59 @@ static void saltation(gd_sim *s, int c, int nw)
  * step hook runs for it on its interpolant. */
 #define REFINE_MARGIN 1e-4
 
+/* Give ARKODE the root functions (on) or take them away (gated root finding only). */
+static gd_status arm_roots(gd_sim *s, int on, gd_error *err)
+{
+    if (!s->gate || s->armed == on)
+        return GD_OK;
+    int flag = s->ops->root_init(s->mem, on ? s->nroots : 0, on ? root_fn : NULL);
+    if (flag >= 0 && on)
+        flag = s->ops->set_no_inactive_root_warn(s->mem);
+    if (flag < 0)
+        return sun_check(s, flag, "RootInit", err);
+    s->armed = on;
+    return GD_OK;
+}
+
+/* Gated root finding, after a step [t0, t1] taken without the root functions: the time at which a
+ * root function changed sign, by ARKODE's rule (a value exactly zero counts as the side of the held
+ * mode, as in root_fn), estimated as the first zero of the cubic Hermite of g from the clearances
+ * and rates at both ends; -1 when none changed sign. The estimate only places the end of the step
+ * that ARKODE then redoes with its root finding on (refine_root_state), which locates the root. */
+static double crossing_in_step(gd_sim *s, double t0, double t1)
+{
+    double best = -1.0, dt = t1 - t0;
+    clearances_now(s);
+    for (int c = 0; c < s->m.nclear; c++) {
+        int mode = s->md.mode[c];
+        double h = s->m.clear[c].h;
+        for (int side = 0; side < 2; side++) { /* g = x - h (side 0), x + h (side 1) */
+            double off = side ? h : -h;
+            double held = side == 0 ? (mode > 0 ? 1.0 : -1.0) : (mode >= 0 ? 1.0 : -1.0);
+            double g0 = s->cx0[c] + off, g1 = s->cx[c] + off;
+            if (!(g1 * held < 0) || g0 * held < 0)
+                continue;
+            double d0 = s->cv0[c] * dt, d1 = s->cv[c] * dt, lo = 0.0, hi = 1.0;
+            for (int it = 0; it < 48; it++) { /* p(lo) on the held side, p(hi) past it */
+                double x = 0.5 * (lo + hi);
+                double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+                double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+                double p = g0 * h00 + d0 * h10 + g1 * h01 + d1 * h11;
+                if (p * held < 0)
+                    hi = x;
+                else
+                    lo = x;
+            }
+            /* a root in the step's first instant (a second clearance crossing just after one
+             * handled at t0) still gets a piece of step for ARKODE to find it in */
+            double tc = t0 + fmax(hi, 1e-9) * dt;
+            if (best < 0 || tc < best)
+                best = tc;
+        }
+    }
+    return best;
+}
+
 static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *err)
 {
     double t1 = tr;
@@ -662,6 +724,9 @@ static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *er
     double target = fmin(t1, tr + REFINE_MARGIN * (t1 - t0)), ta = t0;
     s->h_resume = t1 - t0;
     memcpy(NV_DATA_S(s->y), s->y_prev, sizeof(double) * (size_t)s->N);
+    gd_status ast = arm_roots(s, 1, err);
+    if (ast != GD_OK)
+        return ast;
     int flag = s->ops->reset(s->mem, t0, s->y), found = 0;
     if (flag >= 0)
         flag = fixed ? s->ops->set_fixed_step(s->mem, target - t0) : s->ops->set_init_step(s->mem, target - t0);
@@ -826,7 +891,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             return sun_check(s, flag, "SetStopTime", err);
         double t0 = s->t;
         memcpy(s->y_prev, NV_DATA_S(s->y), sizeof(double) * (size_t)s->N);
-        if (s->nroots && s->o.grazing_watch) { /* the clearances at the start, for the grazing watch */
+        if (s->nroots && (s->o.grazing_watch || !s->armed)) { /* the clearances at the start: grazing watch, gate */
             clearances_now(s);
             memcpy(s->cx0, s->cx, sizeof s->cx);
             memcpy(s->cv0, s->cv, sizeof s->cv);
@@ -857,7 +922,9 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
                 memcpy(s->cx, s->cx0, sizeof s->cx);
                 memcpy(s->cv, s->cv0, sizeof s->cv);
                 s->cx_ok = 1;
-                gd_status st = reset_at(s, t0, err);
+                gd_status st = arm_roots(s, 1, err); /* the redone steps locate the touch */
+                if (st == GD_OK)
+                    st = reset_at(s, t0, err);
                 if (st != GD_OK)
                     return st;
                 if (s->o.method != GD_METHOD_RK4 && !s->o.fixed_step)
@@ -871,9 +938,12 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             rewound = 0;
         s->t = tret;
         s->t_step0 = t0;
-        int refine = flag == ARK_ROOT_RETURN && s->o.refine_events;
+        /* gated root finding: a root function that changed sign over the step */
+        double tc = s->nroots && !s->armed && !s->md.from_state ? crossing_in_step(s, t0, tret) : -1.0;
+        int refine = (flag == ARK_ROOT_RETURN && s->o.refine_events) || tc > 0;
         if (!refine && s->step_hook && s->step_hook(s, abs_time(s, t0), abs_time(s, tret), s->hook_user))
             return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+        int handled = 0;
         if (flag == ARK_ROOT_RETURN) {
             int f2 = s->ops->get_root_info(s->mem, s->rootsfound);
             if (f2 < 0)
@@ -887,7 +957,22 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (st != GD_OK)
                 return st;
             rewound = 0;
-        } else if (flag == ARK_TSTOP_RETURN) {
+            handled = 1;
+        } else if (tc > 0) { /* ARKODE redoes the step with its root finding on and locates it */
+            memset(s->rootsfound, 0, sizeof s->rootsfound);
+            gd_status st = refine_root_state(s, t0, tc, err);
+            if (st != GD_OK)
+                return st;
+            for (int i = 0; i < s->nroots; i++)
+                handled |= s->rootsfound[i] != 0;
+            if (handled) {
+                st = handle_roots(s, err);
+                if (st != GD_OK)
+                    return st;
+                rewound = 0;
+            }
+        }
+        if (!handled && flag == ARK_TSTOP_RETURN) {
             /* at any stop (an edge, or a period end that an edge shares up to rounding) the
              * level is the one just after this time; a change is a discontinuity: reset */
             int changed = 0;
@@ -904,11 +989,16 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
                     return st;
             }
         }
+        if (!rewound) {
+            gd_status st = arm_roots(s, 0, err);
+            if (st != GD_OK)
+                return st;
+        }
         if (s->md.from_state) {
             gd_status st = modes_from_state(s, err);
             if (st != GD_OK)
                 return st;
-        } else if (s->nroots && flag != ARK_ROOT_RETURN) {
+        } else if (s->nroots && !handled) {
             gd_status st = repair_held_modes(s, err);
             if (st != GD_OK)
                 return st;

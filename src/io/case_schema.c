@@ -158,6 +158,8 @@ static const gd_keyspec schema[] = {
       "end steps on the sample times of the recorded window: samples are the method's solution, not the dense output's"),
     E("solver", "vector_kernels", vector_kernels, 0, "geardyn|sundials",
       "serial vector operations of the integrator: compiled with geardyn, or the SUNDIALS library's own (same results bit for bit)"),
+    B("solver", "gated_roots", gated_roots, 1,
+      "check the root functions' signs at each step end and give them to ARKODE only to locate a crossing (off: ARKODE checks them at every step; the same events)"),
     B("solver", "compiled_rhs", compiled_rhs, 1,
       "evaluate the gear model compiled for the held contact modes (off: the model's general loops; the same function to rounding)"),
     D("solver", "max_step_fraction", "", max_step_fraction, 0, 1, 1, 0, 0.1, "largest step as a fraction of the mesh period"),
