@@ -3,7 +3,7 @@
  * (gd_model_rhs, gd_model_tangent): the same function written twice in different orders of the
  * floating-point operations, so they must agree to rounding, in every combination of contact
  * modes, with the mesh-in impact pulse on and off, with damping that acts always or only in
- * contact, for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
+ * contact, with harmonic, tabulated, rectangular and constant stiffness, for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
  * sizes compiled with a constant) and for a hand-built five-degree-of-freedom model (the
  * general size). A wrong sign or a missing term (a bearing contact's offset, the mesh damping of
  * an open mesh, the pulse, the mass scaling) shows as a difference of the order of the term,
@@ -43,7 +43,9 @@ static void compare(const char *name, const gd_model *m, gsl_rng *r, double *dr,
                 y[i] = rnd(r, 5.0), v[i] = rnd(r, 1.0);
             double t = gsl_rng_uniform(r) * 3.0 * m->period;
             gd_rhs_plan p;
-            gd_rhs_plan_build(&p, m, &md);
+            gd_plan_excitation ex[GD_MAX_MESH];
+            gd_plan_excitation_build(ex, m);
+            gd_rhs_plan_build(&p, m, &md, ex);
             double s0 = 0.0, c0 = 1.0;
             if (m->nmesh > 0)
                 sincos(m->Omega * t, &s0, &c0);
@@ -180,6 +182,24 @@ int main(void)
         else
             m.clear[k].damp_contact_only = 1;
     check_model("bta, damped bearings, damping in contact only", &m, r);
+
+    /* a tabulated (LTCA-like) stiffness of 24 harmonics on each half, with the halves' phases */
+    for (int j = 0; j < m.nmesh; j++) {
+        gd_mesh_excitation *x = &m.mesh[j];
+        x->kind = GD_STIFF_TABLE, x->nh = 24, x->mean = 0.93;
+        for (int h = 0; h < x->nh; h++) {
+            x->a[h] = 0.2 / (1.0 + h * h) * (1.0 + 0.3 * gsl_rng_uniform(r));
+            x->phi[h] = rnd(r, M_PI);
+            x->cphi[h] = cos(x->phi[h]), x->sphi[h] = sin(x->phi[h]);
+        }
+    }
+    check_model("bta, tabulated stiffness of 24 harmonics", &m, r);
+
+    const char *cst[] = {"scene.model=bta", "excitation.stiffness=constant", NULL};
+    gd_case_free(&c);
+    pu_case(&c, cst);
+    pu_build(&c, &m);
+    check_model("bta, constant stiffness", &m, r);
 
     const char *rect[] = {"scene.model=bta", "excitation.stiffness=rectangular", "damping.mesh_damping_mode=contact",
                           NULL};

@@ -7,7 +7,54 @@
 
 #include <string.h>
 
-void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md)
+void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m)
+{
+    for (int j = 0; j < m->nmesh; j++) {
+        const gd_mesh_excitation *x = &m->mesh[j];
+        gd_plan_excitation *q = &ex[j];
+        memset(q, 0, sizeof *q);
+        q->kind = x->kind;
+        q->nh = x->kind == GD_STIFF_HARMONIC || x->kind == GD_STIFF_TABLE ? x->nh : 0;
+        q->mean = x->mean;
+        for (int h = 0; h < q->nh; h++) { /* cos(h (Omega t + phase) + phi_h) */
+            double ang = (h + 1) * x->phase + x->phi[h];
+            q->A[h] = x->a[h] * cos(ang);
+            q->B[h] = x->a[h] * sin(ang);
+        }
+        double psi = x->phase + x->e_phi; /* sin(Omega t + phase + e_phi) */
+        q->em = x->e_m;
+        q->P = x->e_r * cos(psi);
+        q->Q = x->e_r * sin(psi);
+    }
+}
+
+/* stiffness factor (when kf), error and its rate of mesh j */
+static inline __attribute__((always_inline)) void excitation(const gd_plan_excitation *q, const gd_model *m, int j,
+                                                             const gd_modes *md, double s0, double c0, double *kf,
+                                                             double *e, double *ed)
+{
+    if (kf) {
+        if (q->nh > 0) {
+            double k = q->mean + (q->A[0] * c0 - q->B[0] * s0), sk = s0, ck = c0;
+            for (int h = 1; h < q->nh; h++) {
+                double sn = sk * c0 + ck * s0, cn = ck * c0 - sk * s0;
+                sk = sn, ck = cn;
+                k += q->A[h] * ck - q->B[h] * sk;
+            }
+            *kf = k;
+        } else if (q->kind == GD_STIFF_RECTANGULAR) {
+            *kf = md->rect_level[j] ? m->mesh[j].rect_high : m->mesh[j].rect_low;
+        } else {
+            *kf = q->kind == GD_STIFF_HARMONIC || q->kind == GD_STIFF_TABLE ? q->mean : 1.0;
+        }
+    }
+    if (e)
+        *e = q->em + (q->P * s0 + q->Q * c0);
+    if (ed)
+        *ed = m->Omega * (q->P * c0 - q->Q * s0);
+}
+
+void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, const gd_plan_excitation *ex)
 {
     const int nd = m->ndof;
     double K[GD_MAX_DOF][GD_MAX_DOF] = {{0}}, C[GD_MAX_DOF][GD_MAX_DOF] = {{0}}, F[GD_MAX_DOF];
@@ -58,6 +105,7 @@ void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md)
                 p->off[p->noff++] = (gd_plan_coef){i, nd + j, C[i][j] * im};
         }
     }
+    p->ex = ex;
     p->valid = 1;
 }
 
@@ -134,14 +182,14 @@ static inline __attribute__((always_inline)) void eval(const gd_rhs_plan *p, con
             sv += w * vqd[k];
         }
         double x = hsum(sx), xd = hsum(sv), kf = 0.0, f;
+        const gd_plan_excitation *q = &p->ex[pm->j];
         if (tangent) {
-            double e;
             if (pm->ks != 0.0)
-                mesh_eval_sc(m, pm->j, t, s0, c0, md, &kf, &e, NULL, NULL);
+                excitation(q, m, pm->j, md, s0, c0, &kf, NULL, NULL);
             f = pm->ks * kf * x + pm->cs * xd;
         } else {
             double e, ed;
-            mesh_eval_sc(m, pm->j, t, s0, c0, md, pm->ks != 0.0 ? &kf : NULL, &e, &ed, NULL);
+            excitation(q, m, pm->j, md, s0, c0, pm->ks != 0.0 ? &kf : NULL, &e, &ed);
             f = pm->ks * kf * (x - e - pm->hs) + pm->cs * (xd - ed) + pulse_force(m, pm->j, t, md);
         }
         v4 fv = {f, f, f, f};

@@ -23,6 +23,18 @@ typedef struct gd_plan_coef {
 /* the accelerations in blocks of four lanes, zeros beyond the degrees of freedom */
 #define GD_PLAN_W (((GD_MAX_DOF) + 3) / 4 * 4)
 
+/* The excitation of mesh j with its half's phase folded into the coefficients (built once per
+ * model: it does not depend on the modes), in the sine and cosine (s0, c0) of Omega t:
+ * stiffness factor mean + sum_h A_h cos(h Omega t) - B_h sin(h Omega t) (harmonic and tabulated),
+ * error e_m + P s0 + Q c0, its rate Omega (P c0 - Q s0). */
+typedef struct gd_plan_excitation {
+    int kind, nh;
+    double mean, A[GD_MESH_HARMONICS], B[GD_MESH_HARMONICS];
+    double em, P, Q;
+} gd_plan_excitation;
+
+void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m);
+
 typedef struct gd_plan_mesh {
     int j;                    /* mesh index */
     double w[GD_PLAN_W];      /* weights of its coordinate x = w . q - e(t) over the degrees of freedom */
@@ -38,6 +50,7 @@ typedef struct gd_rhs_plan {
     double kd[GD_PLAN_W], cd[GD_PLAN_W];            /* diagonal stiffness and damping over mass */
     gd_plan_coef off[2 * GD_MAX_DOF * GD_MAX_DOF]; /* the rest of the constant linear part */
     gd_plan_mesh mesh[GD_MAX_MESH];
+    const gd_plan_excitation *ex; /* the model's, one per mesh (gd_plan_excitation_build) */
 } gd_rhs_plan;
 
 /* 1 when the plan applies: a gear model (not a custom system) with modes held between events. */
@@ -52,7 +65,8 @@ static inline int gd_rhs_plan_current(const gd_rhs_plan *p, const gd_modes *md)
     return p->valid && memcmp(p->mode, md->mode, sizeof p->mode) == 0;
 }
 
-void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md);
+/* ex: gd_plan_excitation_build of m, one per mesh; it must outlive the plan */
+void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, const gd_plan_excitation *ex);
 /* ydot = f(t, y), with the sine and cosine (s0, c0) of Omega t (model_internal.h) */
 void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
                      const double *restrict y, double *restrict ydot, const gd_modes *md);

@@ -87,6 +87,7 @@ struct gd_sim {
     /* the RHS compiled for the held modes (rhs_plan.h): the last few sets of modes (a mesh that
      * opens and closes goes back and forth between two) */
     gd_rhs_plan plan[4];
+    gd_plan_excitation plan_ex[GD_MAX_MESH];
     int plan_cur, plan_next, use_plan;
 };
 
@@ -145,7 +146,7 @@ static const gd_rhs_plan *plan_for(gd_sim *s)
         }
     s->plan_cur = s->plan_next;
     s->plan_next = (s->plan_next + 1) % 4;
-    gd_rhs_plan_build(&s->plan[s->plan_cur], &s->m, &s->md);
+    gd_rhs_plan_build(&s->plan[s->plan_cur], &s->m, &s->md, s->plan_ex);
     return &s->plan[s->plan_cur];
 }
 
@@ -254,6 +255,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     s->md = *md0;
     s->md.from_state = !o->root_finding;
     s->use_plan = !o->generic_rhs;
+    gd_plan_excitation_build(s->plan_ex, m);
     if (SUNContext_Create(NULL, &s->ctx) != 0) {
         free(s);
         return gd_error_set(err, GD_ERR_SOLVER, "SUNContext_Create failed");
