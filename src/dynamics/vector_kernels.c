@@ -118,19 +118,34 @@ static void k_div(N_Vector x, N_Vector y, N_Vector z)
     for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] / yd[i];
 }
 
+/* z[i] = F(x[i]) element by element, two at a time (each lane the scalar operation) */
+#define ELEMENTWISE(n, xd, zd, F)                                                                                  \
+    do {                                                                                                           \
+        sunindextype i_ = 0;                                                                                       \
+        for (; i_ + 2 <= (n); i_ += 2) {                                                                           \
+            v2 x_ = ld2((xd) + i_);                                                                                \
+            st2((zd) + i_, F(x_));                                                                                 \
+        }                                                                                                          \
+        for (; i_ < (n); i_++)                                                                                     \
+            (zd)[i_] = F((xd)[i_]);                                                                                \
+    } while (0)
+#define F_SCALE(x) (c * (x))
+#define F_COPY(x) (x)
+#define F_NEG(x) (-(x))
+#define F_INV(x) (1.0 / (x))
+
 static void k_scale(realtype c, N_Vector x, N_Vector z)
 {
     const sunindextype n = LEN(x);
     realtype *xd = DAT(x), *zd = DAT(z);
-    if (z == x) {
-        for (sunindextype i = 0; i < n; i++) xd[i] *= c;
-    } else if (c == 1.0) {
-        for (sunindextype i = 0; i < n; i++) zd[i] = xd[i];
-    } else if (c == -1.0) {
-        for (sunindextype i = 0; i < n; i++) zd[i] = -xd[i];
-    } else {
-        for (sunindextype i = 0; i < n; i++) zd[i] = c * xd[i];
-    }
+    if (z == x)
+        ELEMENTWISE(n, xd, xd, F_SCALE);
+    else if (c == 1.0)
+        ELEMENTWISE(n, xd, zd, F_COPY);
+    else if (c == -1.0)
+        ELEMENTWISE(n, xd, zd, F_NEG);
+    else
+        ELEMENTWISE(n, xd, zd, F_SCALE);
 }
 
 static void k_abs(N_Vector x, N_Vector z)
@@ -144,7 +159,7 @@ static void k_inv(N_Vector x, N_Vector z)
 {
     const sunindextype n = LEN(x);
     realtype *xd = DAT(x), *zd = DAT(z);
-    for (sunindextype i = 0; i < n; i++) zd[i] = 1.0 / xd[i];
+    ELEMENTWISE(n, xd, zd, F_INV);
 }
 
 static void k_addconst(N_Vector x, realtype b, N_Vector z)
@@ -319,13 +334,17 @@ static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
     realtype *zd = DAT(z);
     enum { MAXV = 16 };
     int aliased = nvec > MAXV;
-    for (int i = 1; i < nvec && !aliased; i++)
-        aliased = X[i] == z;
-    if (!aliased) {
+    if (!aliased) { /* the data pointers and the aliasing test in one pass */
         const realtype *xs[MAXV];
-        for (int i = 0; i < nvec; i++) xs[i] = DAT(X[i]);
-        lc_sum(nvec, c, xs, zd, n, X[0] == z && c[0] == 1.0);
-        return 0;
+        xs[0] = DAT(X[0]);
+        for (int i = 1; i < nvec; i++) {
+            aliased |= X[i] == z;
+            xs[i] = DAT(X[i]);
+        }
+        if (!aliased) {
+            lc_sum(nvec, c, xs, zd, n, X[0] == z && c[0] == 1.0);
+            return 0;
+        }
     }
     if (X[0] == z) {
         if (c[0] != 1.0)
