@@ -82,6 +82,7 @@ void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, co
                 pm->u[cl->widx[q]] += cl->wval[q] * m->inv_mass[cl->widx[q]];
             }
             pm->ks = ks, pm->hs = hs, pm->cs = cs;
+            pm->imp_force = m->mesh[cl->mesh].imp_width > 0 ? m->mesh[cl->mesh].imp_force : 0.0;
             continue;
         }
         /* a bearing: the force k (x - hs) + c xdot along w is linear in the state */
@@ -190,7 +191,9 @@ static inline __attribute__((always_inline)) void eval(const gd_rhs_plan *p, con
         } else {
             double e, ed;
             excitation(q, m, pm->j, md, s0, c0, pm->ks != 0.0 ? &kf : NULL, &e, &ed);
-            f = pm->ks * kf * (x - e - pm->hs) + pm->cs * (xd - ed) + pulse_force(m, pm->j, t, md);
+            f = pm->ks * kf * (x - e - pm->hs) + pm->cs * (xd - ed);
+            if (pm->imp_force != 0.0 && md->pulse_on[pm->j]) /* pulse_force with the modes held */
+                f += pm->imp_force;
         }
         v4 fv = {f, f, f, f};
 #pragma GCC unroll 4

@@ -516,6 +516,12 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
 {
     if ((g0 > 0) != (g1 > 0) || g0 == 0.0 || g1 == 0.0)
         return -1.0;
+    /* most steps: p keeps the sign of g0 for a simple reason. h00 + h01 = 1 with both >= 0, and
+     * s (1 - s)^2 and s^2 (1 - s) are at most 4/27 on [0, 1], so |p(s)| >= min(|g0|, |g1|) - 4/27
+     * (the rate terms that point towards zero) */
+    double sg = g0 > 0 ? 1.0 : -1.0;
+    if (fmin(sg * g0, sg * g1) > (4.0 / 27.0) * (fmax(-sg * d0, 0.0) + fmax(sg * d1, 0.0)))
+        return -1.0;
     /* p(s) = g0 h00 + d0 h10 + g1 h01 + d1 h11; p'(s) = A s^2 + B s + C */
     double A = 6 * g0 + 3 * d0 - 6 * g1 + 3 * d1;
     double B = -6 * g0 - 4 * d0 + 6 * g1 - 2 * d1;
