@@ -85,11 +85,11 @@ static const double coef[] = {1.0, -1.0, 0.0, 0.7, -0.7, 1.3, 2.5e-3};
 
 static void op_by_op(SUNContext ctx, const char *width)
 {
-    const int lens[] = {1, 7, 20, 40};
+    const int lens[] = {1, 7, 20, 40, 57}; /* 57: the 20-, 16- and 4-wide blocks and single elements */
     int bad[16] = {0}, count[16] = {0};
     const char *names[16] = {"linearsum", "scale", "linearcombination", "scaleaddmulti", "const", "prod", "div",
                              "abs", "inv", "addconst", "dotprod", "maxnorm", "wrmsnorm", "wsqrsumlocal", "min"};
-    for (int li = 0; li < 4; li++) {
+    for (int li = 0; li < (int)(sizeof lens / sizeof lens[0]); li++) {
         vset s;
         vset_new(&s, lens[li], ctx);
         /* linear sum: every coefficient pair, output distinct, = x, = y */
