@@ -5,6 +5,8 @@
 #define GD_PHYSICS_UTIL_H
 
 #include "geardyn/gd_response.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 #include <math.h>
 #include <stdio.h>

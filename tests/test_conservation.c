@@ -22,6 +22,7 @@
  *    drift grows by three orders of magnitude, asserted above 100. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 typedef struct erun {
     const gd_model *m;

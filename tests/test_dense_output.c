@@ -17,6 +17,7 @@
  * is of the interpolants alone. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #define NS 64     /* samples per mesh period */
 #define P0 2      /* recorded periods [P0, P1) */

@@ -28,6 +28,7 @@
  * interpolant used before put them 7e-9 off and the state 7e-8 off the boundary). */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #define MAXEV 8192
 

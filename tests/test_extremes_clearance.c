@@ -7,6 +7,8 @@
  * motion is chaotic (largest exponent +0.45 per period): agreement 1e-7 over 10 periods, RMS
  * of the tail within 3 %. */
 #include "extremes_util.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 #define S(...) ((const char *const[]){__VA_ARGS__, NULL})
 

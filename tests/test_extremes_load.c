@@ -4,6 +4,8 @@
  * rpm (quickstart data) unless stated; each scene at rtol 1e-7 and 1e-9 (extremes_util.h):
  * completes, no NaN/inf, events bounded, the two runs agree within the stated tolerances. */
 #include "extremes_util.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 #define S(...) ((const char *const[]){__VA_ARGS__, NULL})
 

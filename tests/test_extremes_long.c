@@ -9,6 +9,8 @@
  * noise, not a drift); the absolute time after N periods is N times the period to rounding;
  * every period has the same 4 events; and the fixed point agrees with one computed at rtol 1e-10. */
 #include "extremes_util.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 /* Poincare points of two windows of 1000 periods, [1000, 2000) and the last 1000: their mean and
  * their largest distance from the point at 1000 (the noise of the adaptive step sequence). */

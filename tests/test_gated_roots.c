@@ -10,6 +10,7 @@
  * about 1e-12. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #define MAXEV 20000
 

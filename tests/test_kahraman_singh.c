@@ -13,6 +13,8 @@
  *    period-1 with single-sided impacts and the extrema of the independent solution. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>

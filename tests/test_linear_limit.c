@@ -22,6 +22,9 @@
  * where the cubic dense output between the long steps of that table is 2e-6 off. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
+#include "geardyn/gd_geometry.h"
 
 #include <complex.h>
 

@@ -10,6 +10,8 @@
  *  3. the cache key: unchanged by the speed, changed by everything LTCA reads;
  *  4. bad arguments are refused. */
 #include "ltca_util.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -11,6 +11,7 @@
  *     LTE amplitude;
  *  3. the mean stiffness over the cycle does not depend on the number of positions. */
 #include "ltca_util.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -19,6 +19,7 @@
  *     sinc(k eps_beta), so the fluctuation nearly vanishes when the overlap ratio is an integer and
  *     is clearly present at 1.5 (face widths chosen here for eps_beta = 1, 1.5, 2). */
 #include "ltca_util.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <stdlib.h>

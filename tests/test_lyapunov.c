@@ -3,6 +3,7 @@
  * of the stroboscopic map against the Floquet multipliers found by finite differences. */
 #include "analysis_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_complex_math.h>

@@ -6,6 +6,7 @@
  *    stop times), and the pulse's mean force shifts the mean deflection by F d / T exactly. */
 #include "analysis_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_rng.h>
 

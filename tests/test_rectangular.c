@@ -5,6 +5,7 @@
  * each period must match it to the integration tolerance; the mean of k must be 1. */
 #include "analysis_util.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 /* exact transition over time t of x'' + 2 z x' + k x = F from (x, v); underdamped */
 static void segment(double k, double z, double F, double t, double *x, double *v)

@@ -14,6 +14,8 @@
  *     history, impacts included. */
 #include "physics_util.h"
 #include "tap.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 static const char *support_keys[] = {
     "support.radial_stiffness_pinion_n_per_m", "support.radial_stiffness_gear_n_per_m",

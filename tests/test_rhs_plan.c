@@ -14,6 +14,7 @@
 #include "physics_util.h"
 #include "rhs_plan.h"
 #include "tap.h"
+#include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_rng.h>
 

@@ -15,6 +15,8 @@
  *    torn last line and a gap in a chain is read back correctly;
  *  - bad [sweep] keys are refused with the key named. */
 #include "geardyn/gd_sweep.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_output.h"
 #include "physics_util.h"
 #include "tap.h"
 

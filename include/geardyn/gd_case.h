@@ -23,8 +23,6 @@ typedef enum gd_analysis {
     GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
     GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6
 } gd_analysis;
-/* Whether this build can run an analysis (the others are named but refused, with the list). */
-GD_API int gd_analysis_available(int analysis);
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind {
     GD_STIFF_CONSTANT = 0, GD_STIFF_HARMONIC = 1, GD_STIFF_RECTANGULAR = 2, GD_STIFF_LTCA = 3,
@@ -204,9 +202,9 @@ GD_API gd_status gd_case_copy(gd_case *dst, const gd_case *src, gd_error *err);
 GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err);
 /* Apply "section.key=value" (the command line's --set). */
 GD_API gd_status gd_case_set(gd_case *c, const char *assignment, int set_index, gd_error *err);
-/* Fill the derived values (unless pinned) and check consistency and ranges
- * across keys. Call once after load and sets. */
-GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err);
+/* The cross-key checks that need no physics (torque or power, STE, stiffness harmonics, solver
+ * settings) and the values they derive; the first step of gd_case_resolve (gd_analysis.h). */
+GD_API gd_status gd_case_check(gd_case *c, gd_error *err);
 
 /* Value of a numeric key as a double ("operating.speed_rpm"); for sweeps. */
 GD_API gd_status gd_case_get_number(const gd_case *c, const char *name, double *value, gd_error *err);

@@ -6,7 +6,6 @@
 #define GD_EXCITATION_H
 
 #include "geardyn/gd_ltca.h"
-#include "geardyn/gd_model.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -26,9 +25,6 @@ GD_API long gd_ltca_cache_computations(void);
  * quarter of the mesh period). */
 GD_API void gd_impact_force(double v_s, double m, double k_s, double delta_m, double n, double *force_n,
                             double *duration_s);
-
-/* Apply the case's LTCA stiffness (stiffness = ltca) and impact (impact = on) to a built model. */
-GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -146,10 +146,6 @@ GD_API gd_status gd_ltca_run(const gd_case *c, gd_ltca_result *r, gd_error *err)
  * each half (extra solves near the entry of the incoming pair). */
 GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, gd_ltca_result *r, gd_error *err);
 GD_API void gd_ltca_result_free(gd_ltca_result *r);
-/* The summary.json of an ltca run (stable keys: results.lte_pp_arcsec,
- * results.mean_mesh_stiffness_n_per_m.left/right, results.load_share.left/right). */
-GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const gd_ltca_result *r,
-                                       const char *const *files, int nfiles, gd_error *err);
 
 /* ---- excitations of the dynamic model (docs/ltca.md section 8) -------------------------------- */
 

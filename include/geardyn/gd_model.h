@@ -14,7 +14,6 @@
 #define GD_MODEL_H
 
 #include "geardyn/gd_case.h"
-#include "geardyn/gd_geometry.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -115,7 +114,6 @@ typedef struct gd_modes {
     int from_state;          /* 1: modes follow the state at every call (root finding off) */
 } gd_modes;
 
-GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
 
 /* Excitation of mesh j at dimensionless time t (periodic: whole periods shifted out of t do not matter). */
 GD_API double gd_model_stiffness(const gd_model *m, int j, double t, const gd_modes *md);

@@ -295,8 +295,6 @@ typedef struct gd_opt_optimize_summary {
     double wall_s;
 } gd_opt_optimize_summary;
 
-GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, const gd_opt_optimize_summary *s,
-                                           const char *const *files, int nfiles, gd_error *err);
 
 typedef struct gd_opt_compare_problem {
     int objective, dim;
@@ -304,11 +302,6 @@ typedef struct gd_opt_compare_problem {
     const gd_opt_compare_result *res;
 } gd_opt_compare_problem;
 
-/* One summary over every problem compared (each with the same optimisers, runs and budget); adds
- * the runtime distribution pooled over the problems at 1 %, 10 % and 100 % of the budget. */
-GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, const gd_opt_compare_problem *pb,
-                                          int nproblems, const char *const *files, int nfiles, int threads,
-                                          gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -51,7 +51,6 @@ typedef struct gd_solver_opts {
                               * interp_degree); custom systems always use ARKODE's */
 } gd_solver_opts;
 
-GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
 
 typedef enum gd_event_kind {
     GD_EV_CONTACT = 0,       /* into drive-side contact (bearing: positive side) */

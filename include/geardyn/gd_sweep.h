@@ -151,29 +151,7 @@ GD_API gd_status gd_sweep_run(const gd_case *base, const gd_sweep_plan *p, gd_sw
 /* Points not yet done or failed. */
 GD_API int gd_sweep_pending(const gd_sweep_plan *p, const gd_sweep_point *pts);
 
-/* Journal records: one text line per point ending in a CRC-32, e.g. for a journal file or a
- * message between MPI ranks. format: a malloc'd line with its '\n' (free it). */
-GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_point *pt, char **line, size_t *len,
-                                        gd_error *err);
-/* Parse one record (with or without its '\n') into pts[slot]; GD_ERR_INPUT for a torn,
- * corrupt or foreign record. *slot gets the slot. */
-GD_API gd_status gd_sweep_record_parse(const gd_sweep_plan *p, const char *line, size_t len, gd_sweep_point *pts,
-                                       int *slot, gd_error *err);
-/* The first line of a journal (identifies the sweep by its fingerprint). */
-GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t len);
 
-/* Read a journal: every intact record of this sweep is loaded into pts (points after a
- * missing one in a continuation chain are dropped, they depend on it); a torn or corrupt
- * line (the last one after a kill) is ignored. *text (malloc'd) receives the header and the
- * kept lines, to be written back as the journal. A missing file or one with a torn header
- * gives no points; a journal of another sweep is GD_ERR_INPUT. */
-GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
-                                       size_t *text_len, int *loaded, int *ignored, gd_error *err);
-
-/* The final files, atomically, from the points in slot order: sweep.csv, bifurcation.csv
- * and summary.json (which lists files[0..nfiles-1] as the files of the run). */
-GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
-                                       gd_error *err);
 GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
                                         const gd_sweep_point *pts, const char *const *files, int nfiles,
                                         gd_error *err);

@@ -141,11 +141,6 @@ typedef struct gd_tca_result {
 
 GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *res, gd_error *err);
 GD_API void gd_tca_result_free(gd_tca_result *r);
-/* The summary.json of a tca run (stable keys: results.gte_pp_arcsec.left/right,
- * results.edge_contact.left/right, results.contact_ratio_transverse, results.contact_ratio_overlap,
- * results.operating_pressure_angle_deg). */
-GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const gd_tca_result *r,
-                                      const char *const *files, int nfiles, gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -151,10 +151,6 @@ GD_API void gd_workprec_free(gd_wp_result *res);
  * when with_events the event time error (mesh periods). Returns its index or -1. */
 GD_API int gd_workprec_cheapest(const gd_wp_result *res, double target, int with_events);
 
-/* summary.json of a work-precision run (written atomically into dir). */
-GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_wp_result *res, const char *const *files, int nfiles,
-                                           gd_error *err);
 
 /* The Poincare error metric: max over k < npts and i < n of |a_ki - b_ki| / (1 + max_k |b_ki|). */
 GD_API double gd_workprec_poincare_error(const double *a, const double *b, long npts, int n);

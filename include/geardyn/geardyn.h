@@ -7,6 +7,8 @@
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_model.h"
+#include "geardyn/gd_scene.h"
+#include "geardyn/gd_analysis.h"
 #include "geardyn/gd_sim.h"
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_workprec.h"

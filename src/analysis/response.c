@@ -1,5 +1,6 @@
 /* The `response` analysis of one operating point. */
 #include "geardyn/gd_response.h"
+#include "geardyn/gd_scene.h"
 #include "../dynamics/model_internal.h"
 
 #include <math.h>

@@ -1,5 +1,7 @@
 /* The `sweep` analysis: the grid, the chains, and running them in parallel (OpenMP). */
 #include "geardyn/gd_sweep.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 #include "geardyn/gd_version.h"
 
 #include <math.h>

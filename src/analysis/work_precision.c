@@ -3,6 +3,7 @@
  * look and their cost, and the convergence order of the Poincare points with and without
  * event location. */
 #include "geardyn/gd_workprec.h"
+#include "geardyn/gd_scene.h"
 
 #include <ctype.h>
 #include <math.h>

@@ -3,6 +3,7 @@
 #define GD_CLI_H
 
 #include "geardyn/geardyn.h"
+#include "gnuplot.h"
 
 #define CLI_MAX_SETS 256
 

@@ -4,6 +4,7 @@
  * linear Hertz), the rigid freedoms (gear rotation; axial shift of a floating herringbone pinion),
  * and the exact solution of the contact problem (Eq. 11). */
 #include "ltca_internal.h"
+#include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_spline.h>
 #include <limits.h>

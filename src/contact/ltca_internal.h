@@ -4,6 +4,7 @@
 
 #include "geardyn/gd_compliance.h"
 #include "geardyn/gd_ltca.h"
+#include "geardyn/gd_geometry.h"
 #include "tca_internal.h"
 
 #define LTCA_PAIR_OFFSET 32   /* pair labels -32 .. 31 in the warm-start bitmap */

@@ -3,6 +3,7 @@
 #define GD_TCA_INTERNAL_H
 
 #include "geardyn/gd_tca.h"
+#include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_multiroots.h>
 

@@ -2,6 +2,7 @@
  * positions of both halves: transmission error (paper Eq. 10), contact path, edge contact,
  * contact pattern and separation topography (docs/tca.md). */
 #include "tca_internal.h"
+#include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_errno.h>
 #include <math.h>

@@ -6,6 +6,7 @@
  * (corners). Each system is solved by GSL's hybridsj with its analytic Jacobian from the ideal
  * involute contact as the starting point; the contact is the valid solution with the least gap. */
 #include "tca_internal.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <string.h>

@@ -2,6 +2,7 @@
  * with exact influence coefficients from tabulated cumulative integrals, Sainsot's fillet
  * foundation, linear Hertz, and the face coupling kernel. */
 #include "geardyn/gd_compliance.h"
+#include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>

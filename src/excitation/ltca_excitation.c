@@ -1,5 +1,5 @@
 /* LTCA excitations of the dynamic model: a process-wide cache of LTCA runs keyed by their inputs,
- * the impact force by energy balance, and their application to a built model. */
+ * and the impact force by energy balance. */
 #include "geardyn/gd_excitation.h"
 
 #include <math.h>
@@ -68,49 +68,4 @@ GD_API void gd_impact_force(double v_s, double m, double k_s, double delta_m, do
         *force_n = c * pow(delta_s, n);
     }
     *duration_s = 0.5 * M_PI * sqrt(m / k_s);
-}
-
-GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
-{
-    if (c->stiffness != GD_STIFF_LTCA && !c->impact)
-        return GD_OK;
-    const gd_ltca_excitation *x;
-    gd_status st = gd_ltca_excitation_cached(c, &x, err);
-    if (st != GD_OK)
-        return st;
-    int two = x->halves > 1 && x->k[1] != NULL;
-    if (c->stiffness == GD_STIFF_LTCA) {
-        double *buf = malloc(sizeof(double) * (size_t)x->npos);
-        if (!buf)
-            return gd_error_set(err, GD_ERR_NOMEM, "LTCA stiffness: out of memory");
-        for (int j = 0; j < m->nmesh && st == GD_OK; j++) {
-            for (int i = 0; i < x->npos; i++) {
-                if (m->kind == GD_MODEL_TORSIONAL) /* one mesh for both halves: their mean per half */
-                    buf[i] = two ? 0.5 * (x->k[0][i] + x->k[1][i]) : x->k[0][i];
-                else
-                    buf[i] = x->k[j < 1 || !two ? 0 : 1][i];
-            }
-            st = gd_model_set_stiffness_table(m, j, buf, x->npos, err);
-        }
-        free(buf);
-        if (st != GD_OK)
-            return gd_error_prefix(err, "LTCA stiffness");
-    }
-    if (c->impact) {
-        double omega1 = 2.0 * M_PI * c->speed_rpm / 60.0;
-        for (int j = 0; j < m->nmesh; j++) {
-            const gd_ltca_impact *im = &x->impact[(m->kind == GD_MODEL_TORSIONAL || !two) ? 0 : j];
-            if (!im->found)
-                continue;
-            double F, dur;
-            gd_impact_force(im->vs_per_omega * omega1, m->m_ref, im->ks, im->delta_m, c->impact_exponent, &F, &dur);
-            /* the paper gives no duration: the rise time of the linearised contact, but at most a
-             * quarter of the mesh period (the incoming pair takes over its share within the cycle) */
-            dur = fmin(dur, 0.25 / m->mesh_freq_hz);
-            st = gd_model_set_impact(m, j, F, 2.0 * M_PI * im->phase, dur, err);
-            if (st != GD_OK)
-                return gd_error_prefix(err, "mesh-in impact of mesh %d", j);
-        }
-    }
-    return GD_OK;
 }

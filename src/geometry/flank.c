@@ -1,6 +1,7 @@
 /* Tooth flank surfaces: the form-ground 3D-modified pinion flank (paper Eq. 1-6) and the
  * unmodified gear flank, in closed form with first and second derivatives (docs/geometry.md). */
 #include "geardyn/gd_flank.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <stdio.h>

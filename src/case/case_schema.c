@@ -309,22 +309,6 @@ static const gd_keyspec schema[] = {
       "gear-lte: upper bound of y7 (G_max, below the face width of one half)"),
 };
 
-GD_API int gd_analysis_available(int analysis)
-{
-    switch (analysis) {
-    case GD_ANALYSIS_RESPONSE:
-    case GD_ANALYSIS_TCA:
-    case GD_ANALYSIS_LTCA:
-    case GD_ANALYSIS_SWEEP:
-    case GD_ANALYSIS_WORK_PRECISION:
-    case GD_ANALYSIS_OPTIMIZE:
-    case GD_ANALYSIS_COMPARE_OPTIMIZERS:
-        return 1;
-    default:
-        return 0;
-    }
-}
-
 GD_API const gd_keyspec *gd_case_schema(size_t *n)
 {
     if (n)

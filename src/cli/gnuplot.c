@@ -1,5 +1,7 @@
 /* Running gnuplot on a script, quietly, when it is installed. */
-#include "geardyn/gd_output.h"
+#include "gnuplot.h"
+
+#include <stdio.h>
 
 #include <errno.h>
 #include <fcntl.h>
@@ -28,13 +30,13 @@ static int find_gnuplot(char *out, size_t len)
     return 0;
 }
 
-GD_API int gd_gnuplot_available(void)
+int gd_gnuplot_available(void)
 {
     char p[4200];
     return find_gnuplot(p, sizeof p);
 }
 
-GD_API gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
+gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
 {
     char exe[4200];
     if (!find_gnuplot(exe, sizeof exe))

@@ -3,6 +3,7 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_version.h"
+#include "geardyn/gd_geometry.h"
 
 #include "json_util.h"
 

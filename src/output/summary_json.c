@@ -1,6 +1,7 @@
 /* summary.json: the resolved case, derived values, solver statistics and results (jansson). */
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_version.h"
+#include "geardyn/gd_geometry.h"
 
 #include "json_util.h"
 

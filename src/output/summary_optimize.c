@@ -1,7 +1,7 @@
 /* summary.json of the optimize and compare-optimizers analyses (docs/optimisation.md section 8):
  * the resolved case, the settings, the results under stable keys; the optimum of the gear problem
  * beside the paper's Table 2. */
-#include "geardyn/gd_optimize.h"
+#include "geardyn/gd_output.h"
 #include "geardyn/gd_version.h"
 
 #include "json_util.h"

@@ -1,0 +1,32 @@
+/* The scene: the one place a case becomes physics. Its geometry and the values derived from it
+ * (gd_scene_resolve, the second step of gd_case_resolve), the dimensionless dynamic model with its
+ * LTCA excitations (gd_model_build), and the solver options of its [solver] section. */
+#ifndef GD_SCENE_H
+#define GD_SCENE_H
+
+#include "geardyn/gd_case.h"
+#include "geardyn/gd_model.h"
+#include "geardyn/gd_sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Geometry and what follows from it: bodies (masses, inertias, equivalent mass), the limits of
+ * the modification, the operating contact ratio, the mesh stiffness (ISO 6336 or LTCA), the groove
+ * shaft stiffness, the rectangular stiffness's high fraction; each derived unless given. */
+GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err);
+
+/* The dimensionless model (torsional, torsional-lr, bta) of a resolved case, with the case's LTCA
+ * stiffness and mesh-in impact when it asks for them. */
+GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
+/* Apply the case's LTCA stiffness (stiffness = ltca) and impact (impact = on) to a built model. */
+GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err);
+
+/* The integrator options of the case's [solver] section. */
+GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,85 @@
+/* The table of analyses and the resolution of a case through it (include/geardyn/gd_analysis.h). */
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
+#include "geardyn/gd_sweep.h"
+#include "geardyn/gd_workprec.h"
+#include "geardyn/gd_optimize.h"
+#include "../case/case_keys.h"
+
+#include <stdio.h>
+#include <string.h>
+
+/* LTCA needs a load. */
+static gd_status ltca_check_case(gd_case *c, gd_error *err)
+{
+    if (c->torque_nm > 0)
+        return GD_OK;
+    char w[GD_PATH_MAX + 32];
+    const char *k = gd_case_key_given(c, "operating", "power_kw") ? "power_kw" : "torque_nm";
+    gd_case_key_where(c, "operating", k, w, sizeof w);
+    return gd_error_set(err, GD_ERR_INPUT, "%s: operating.%s: a pinion torque of %g N m for LTCA (valid: > 0, "
+                        "the loaded contact needs a load)", w, k, c->torque_nm);
+}
+
+/* [sweep]: the swept keys and every value of the grid. */
+static gd_status sweep_check_case(gd_case *c, gd_error *err) { return gd_sweep_check_case(c, err); }
+
+static gd_status workprec_check_case(gd_case *c, gd_error *err)
+{
+    if (gd_workprec_check_case(c, err) != GD_OK)
+        return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
+    return GD_OK;
+}
+
+static const gd_analysis_type analyses[] = {
+    { GD_ANALYSIS_RESPONSE, "response", "the event-exact response of one operating point", NULL },
+    { GD_ANALYSIS_SWEEP, "sweep", "the response over a grid of one or two keys, continued up and down",
+      sweep_check_case },
+    { GD_ANALYSIS_TCA, "tca", "geometric tooth contact analysis", NULL },
+    { GD_ANALYSIS_LTCA, "ltca", "loaded tooth contact analysis", ltca_check_case },
+    { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", gd_opt_resolve_case },
+    { GD_ANALYSIS_COMPARE_OPTIMIZERS, "compare-optimizers", "ALO against NLopt's methods on one budget",
+      gd_opt_resolve_case },
+    { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
+      workprec_check_case },
+};
+
+GD_API const gd_analysis_type *gd_analysis_types(size_t *n)
+{
+    *n = sizeof analyses / sizeof analyses[0];
+    return analyses;
+}
+
+GD_API const gd_analysis_type *gd_analysis_find(int id)
+{
+    for (size_t i = 0; i < sizeof analyses / sizeof analyses[0]; i++)
+        if (analyses[i].id == id)
+            return &analyses[i];
+    return NULL;
+}
+
+/* The analysis names no row: list those there are. */
+static gd_status unknown_analysis(const gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32], avail[256] = "";
+    for (size_t i = 0; i < sizeof analyses / sizeof analyses[0]; i++) {
+        size_t used = strlen(avail);
+        snprintf(avail + used, sizeof avail - used, "%s%s", used ? ", " : "", analyses[i].name);
+    }
+    gd_case_key_where(c, "scene", "analysis", w, sizeof w);
+    return gd_error_set(err, GD_ERR_INPUT, "%s: scene.analysis: %d is not available in this version of geardyn "
+                        "(valid: %s)", w, c->analysis, avail);
+}
+
+GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
+{
+    const gd_analysis_type *a = gd_analysis_find(c->analysis);
+    if (!a)
+        return unknown_analysis(c, err);
+    gd_status st = gd_case_check(c, err);
+    if (st == GD_OK)
+        st = gd_scene_resolve(c, err);
+    if (st == GD_OK && a->check_case)
+        st = a->check_case(c, err);
+    return st;
+}

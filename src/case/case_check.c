@@ -1,0 +1,126 @@
+/* The cross-key checks of a case that need no physics: torque or power, the STE amplitude, the
+ * stiffness harmonics, the solver settings and tables; the values they derive. */
+#include "case_keys.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+/* The Butcher tables of ARKODE 6.4 by name, and Verner's three that geardyn adds under the names
+ * of later SUNDIALS (src/dynamics/erk_verner.c); checked here so that ARKODE, which prints to
+ * stderr on an unknown name, is only ever asked for one it has. */
+static const char *const erk_tables =
+    " ARKODE_HEUN_EULER_2_1_2 ARKODE_BOGACKI_SHAMPINE_4_2_3 ARKODE_ARK324L2SA_ERK_4_2_3 ARKODE_ZONNEVELD_5_3_4"
+    " ARKODE_ARK436L2SA_ERK_6_3_4 ARKODE_SAYFY_ABURUB_6_3_4 ARKODE_CASH_KARP_6_4_5 ARKODE_FEHLBERG_6_4_5"
+    " ARKODE_DORMAND_PRINCE_7_4_5 ARKODE_ARK548L2SA_ERK_8_4_5 ARKODE_VERNER_8_5_6 ARKODE_FEHLBERG_13_7_8"
+    " ARKODE_KNOTH_WOLKE_3_3 ARKODE_ARK437L2SA_ERK_7_3_4 ARKODE_ARK548L2SAb_ERK_8_4_5"
+    " ARKODE_VERNER_10_6_7 ARKODE_VERNER_13_7_8 ARKODE_VERNER_16_8_9 ";
+static const char *const dirk_tables =
+    " ARKODE_SDIRK_2_1_2 ARKODE_BILLINGTON_3_3_2 ARKODE_TRBDF2_3_3_2 ARKODE_KVAERNO_4_2_3"
+    " ARKODE_ARK324L2SA_DIRK_4_2_3 ARKODE_CASH_5_2_4 ARKODE_CASH_5_3_4 ARKODE_SDIRK_5_3_4 ARKODE_KVAERNO_5_3_4"
+    " ARKODE_ARK436L2SA_DIRK_6_3_4 ARKODE_KVAERNO_7_4_5 ARKODE_ARK548L2SA_DIRK_8_4_5 ARKODE_ARK437L2SA_DIRK_7_3_4"
+    " ARKODE_ARK548L2SAb_DIRK_8_4_5 ARKODE_ESDIRK324L2SA_4_2_3 ARKODE_ESDIRK325L2SA_5_2_3"
+    " ARKODE_ESDIRK32I5L2SA_5_2_3 ARKODE_ESDIRK436L2SA_6_3_4 ARKODE_ESDIRK43I6L2SA_6_3_4"
+    " ARKODE_QESDIRK436L2SA_6_3_4 ARKODE_ESDIRK437L2SA_7_3_4 ARKODE_ESDIRK547L2SA_7_4_5"
+    " ARKODE_ESDIRK547L2SA2_7_4_5 ";
+
+static int known_table(const char *list, const char *name)
+{
+    char key[160];
+    if (strchr(name, ' ') || strlen(name) > 128)
+        return 0;
+    snprintf(key, sizeof key, " %s ", name);
+    return strstr(list, key) != NULL;
+}
+
+GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    if (c->transient_max_periods > 0 && c->transient_max_periods < c->transient_periods) {
+        gd_case_key_where(c, "run", "transient_max_periods", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.transient_max_periods: %d is below run.transient_periods = %d "
+                            "(valid: 0, or at least transient_periods)", w, c->transient_max_periods,
+                            c->transient_periods);
+    }
+    /* torque or power */
+    if (gd_case_key_given(c, "operating", "torque_nm") && gd_case_key_given(c, "operating", "power_kw")) {
+        gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
+                            "(valid: one of them; torque = 9550 P / n)", w);
+    }
+    if (gd_case_key_given(c, "operating", "power_kw"))
+        gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
+    else {
+        if (!gd_case_key_given(c, "operating", "torque_nm")) {
+            c->torque_nm = 500.0;
+            c->src[gd_case_key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;
+        }
+        gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
+    }
+    /* static transmission error amplitude */
+    int has_fa = gd_case_key_given(c, "excitation", "base_pitch_deviation_um");
+    int has_fb = gd_case_key_given(c, "excitation", "profile_deviation_um");
+    if (has_fa != has_fb) {
+        gd_case_key_where(c, "excitation", has_fa ? "base_pitch_deviation_um" : "profile_deviation_um", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: give both base_pitch_deviation_um and "
+                            "profile_deviation_um (valid: both, e_r = sqrt(f_a^2 + f_b^2))", w,
+                            has_fa ? "base_pitch_deviation_um" : "profile_deviation_um");
+    }
+    if (has_fa && gd_case_key_given(c, "excitation", "ste_amplitude_um")) {
+        gd_case_key_where(c, "excitation", "ste_amplitude_um", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.ste_amplitude_um: give the amplitude or the two "
+                            "deviations, not both (valid: one way)", w);
+    }
+    if (has_fa)
+        gd_case_key_derive(c, "excitation", "ste_amplitude_um", &c->ste_amplitude_um,
+               hypot(c->base_pitch_deviation_um, c->profile_deviation_um));
+    else if (!gd_case_key_given(c, "excitation", "ste_amplitude_um"))
+        c->ste_amplitude_um = 10.0;
+    /* stiffness harmonics */
+    if (c->n_stiffness_phases > c->n_stiffness_harmonics) {
+        gd_case_key_where(c, "excitation", "stiffness_phases_deg", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_phases_deg: %d phases for %d harmonics "
+                            "(valid: at most one phase per harmonic)", w, c->n_stiffness_phases, c->n_stiffness_harmonics);
+    }
+    if (c->stiffness == GD_STIFF_HARMONIC && c->n_stiffness_harmonics == 0) {
+        c->stiffness_harmonics[0] = 0.1;
+        c->n_stiffness_harmonics = 1;
+    }
+    double asum = 0;
+    for (int j = 0; j < c->n_stiffness_harmonics; j++)
+        asum += c->stiffness_harmonics[j];
+    if (c->stiffness == GD_STIFF_HARMONIC && asum >= 1.0) {
+        gd_case_key_where(c, "excitation", "stiffness_harmonics", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_harmonics: amplitudes sum to %g, the "
+                            "stiffness could become negative (valid: sum below 1)", w, asum);
+    }
+    if (gd_case_key_given(c, "solver", "order") && c->method == GD_METHOD_DIRK && c->order > 5) {
+        gd_case_key_where(c, "solver", "order", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: solver.order: %d for dirk (valid: 2 to 5)", w, c->order);
+    }
+    if (c->lyapunov_exponents > 0 && c->lyapunov_method == GD_LYAP_TANGENT && !c->root_finding) {
+        gd_case_key_where(c, gd_case_key_given(c, "run", "lyapunov_exponents") ? "run" : "solver",
+              gd_case_key_given(c, "run", "lyapunov_exponents") ? "lyapunov_exponents" : "root_finding", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.lyapunov_exponents: the tangent method needs "
+                            "solver.root_finding = on, the variational equations must switch exactly at every "
+                            "contact (valid: lyapunov_exponents = 0, or lyapunov_method = two-trajectory)", w);
+    }
+    if (c->lyapunov_method == GD_LYAP_TWO_TRAJECTORY && c->lyapunov_exponents > 1) {
+        gd_case_key_where(c, "run", "lyapunov_exponents", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.lyapunov_exponents: %d with the two-trajectory method "
+                            "(valid: 1; the tangent method gives more)", w, c->lyapunov_exponents);
+    }
+    if (c->method == GD_METHOD_DIRK && !gd_case_key_given(c, "solver", "order"))
+        c->order = 4;
+    if (c->table[0]) {
+        int dirk = c->method == GD_METHOD_DIRK;
+        if (c->method == GD_METHOD_RK4 || !known_table(dirk ? dirk_tables : erk_tables, c->table)) {
+            gd_case_key_where(c, "solver", "table", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: solver.table: '%s' is not an ARKODE %s table (valid:%s)", w,
+                                c->table, c->method == GD_METHOD_RK4 ? "table for rk4" : dirk ? "DIRK" : "ERK",
+                                c->method == GD_METHOD_RK4 ? " none for rk4, it is the classical RK4"
+                                                          : dirk ? dirk_tables : erk_tables);
+        }
+    }
+    return GD_OK;
+}

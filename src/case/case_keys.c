@@ -1,0 +1,38 @@
+/* Where a key's value came from (src/case/case_keys.h). */
+#include "case_keys.h"
+
+#include <stdio.h>
+
+size_t gd_case_key_index(const char *section, const char *key)
+{
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    return (size_t)(gd_case_find_key(section, key) - s);
+}
+
+int gd_case_key_given(const gd_case *c, const char *section, const char *key)
+{
+    gd_source s = gd_case_source(c, gd_case_key_index(section, key), NULL);
+    return s == GD_SRC_FILE || s == GD_SRC_SET;
+}
+
+void gd_case_key_where(const gd_case *c, const char *section, const char *key, char *buf, size_t len)
+{
+    int line = 0;
+    gd_source s = gd_case_source(c, gd_case_key_index(section, key), &line);
+    if (s == GD_SRC_FILE)
+        snprintf(buf, len, "%s:%d", c->path, line);
+    else if (s == GD_SRC_SET)
+        snprintf(buf, len, "--set #%d", line);
+    else
+        snprintf(buf, len, "%s", c->path[0] ? c->path : "case");
+}
+
+void gd_case_key_derive(gd_case *c, const char *section, const char *key, double *field, double value)
+{
+    size_t i = gd_case_key_index(section, key);
+    if (c->src[i] == GD_SRC_FILE || c->src[i] == GD_SRC_SET)
+        return;
+    *field = value;
+    c->src[i] = GD_SRC_DERIVED;
+}

@@ -1,0 +1,17 @@
+/* Where a key's value came from, for the checks that name it: shared by every layer that checks
+ * keys of a case (the cross-key checks, the scene, the sweep and optimiser sections). Internal. */
+#ifndef GD_CASE_KEYS_H
+#define GD_CASE_KEYS_H
+
+#include "geardyn/gd_case.h"
+
+/* Index of [section] key in the schema (the key must exist). */
+size_t gd_case_key_index(const char *section, const char *key);
+/* 1 when the key was given in the file or by --set. */
+int gd_case_key_given(const gd_case *c, const char *section, const char *key);
+/* "file:line", "--set #N" or the case path when the key was not given. */
+void gd_case_key_where(const gd_case *c, const char *section, const char *key, char *buf, size_t len);
+/* Set a field to a derived value unless the key was given; marks it derived. */
+void gd_case_key_derive(gd_case *c, const char *section, const char *key, double *field, double value);
+
+#endif
