@@ -1,8 +1,34 @@
-/* geardyn run: load the case and run the analysis its scene names. */
+/* geardyn run: load the case and run the analysis its scene names, through the command line's
+ * row of that analysis (each row: the library's analysis, its files and pictures). */
 #include "cli.h"
 
 #include <stdio.h>
 #include <string.h>
+
+typedef int (*cli_runner)(const cli_case_args *a, gd_case *c, const char *dir);
+
+/* One row per analysis of the library's table (gd_analysis.h). */
+static const struct {
+    int analysis;
+    cli_runner run;
+} runners[] = {
+    { GD_ANALYSIS_RESPONSE, run_response },
+    { GD_ANALYSIS_SWEEP, run_sweep },
+    { GD_ANALYSIS_TCA, run_tca },
+    { GD_ANALYSIS_LTCA, run_ltca },
+    { GD_ANALYSIS_OPTIMIZE, run_optimize },
+    { GD_ANALYSIS_COMPARE_OPTIMIZERS, run_compare },
+    { GD_ANALYSIS_WORK_PRECISION, run_work_precision },
+};
+
+/* The runner of a resolved case's analysis (gd_case_resolve refused any other). */
+static cli_runner cli_runner_for(int analysis)
+{
+    for (size_t i = 0; i < sizeof runners / sizeof runners[0]; i++)
+        if (runners[i].analysis == analysis)
+            return runners[i].run;
+    return run_response;
+}
 
 static void default_out_dir(const char *case_path, char *out, size_t len)
 {
@@ -17,15 +43,10 @@ static void default_out_dir(const char *case_path, char *out, size_t len)
 int cmd_run(int argc, char **argv)
 {
     cli_case_args a;
-    int rc = cli_parse_case_args(argc, argv, &a, 1);
+    gd_case c;
+    int rc = cli_open_case(argc, argv, 1, &a, &c);
     if (rc)
         return rc;
-    gd_case c;
-    rc = cli_load_case(&a, &c);
-    if (rc) {
-        gd_case_free(&c);
-        return rc;
-    }
     char dir[GD_PATH_MAX];
     if (a.out_dir)
         snprintf(dir, sizeof dir, "%s", a.out_dir);
@@ -33,18 +54,7 @@ int cmd_run(int argc, char **argv)
         snprintf(dir, sizeof dir, "%s", c.directory);
     else
         default_out_dir(a.case_path, dir, sizeof dir);
-    switch (c.analysis) {
-    case GD_ANALYSIS_SWEEP: rc = run_sweep(&a, &c, dir); break;
-    case GD_ANALYSIS_TCA: rc = run_tca(&a, &c, dir); break;
-    case GD_ANALYSIS_LTCA: rc = run_ltca(&a, &c, dir); break;
-    case GD_ANALYSIS_WORK_PRECISION: rc = run_work_precision(&a, &c, dir); break;
-    case GD_ANALYSIS_OPTIMIZE: rc = run_optimize(&a, &c, dir); break;
-    case GD_ANALYSIS_COMPARE_OPTIMIZERS: rc = run_compare(&a, &c, dir); break;
-    case GD_ANALYSIS_RESPONSE:
-    default:
-        rc = run_response(&a, &c, dir);
-        break;
-    }
+    rc = cli_runner_for(c.analysis)(&a, &c, dir);
     gd_case_free(&c);
     return rc;
 }
