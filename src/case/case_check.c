@@ -7,7 +7,7 @@
 #include <string.h>
 
 /* The Butcher tables of ARKODE 6.4 by name, and Verner's three that geardyn adds under the names
- * of later SUNDIALS (src/dynamics/erk_verner.c); checked here so that ARKODE, which prints to
+ * of later SUNDIALS (src/dynamics/compat/erk_verner.c); checked here so that ARKODE, which prints to
  * stderr on an unknown name, is only ever asked for one it has. */
 static const char *const erk_tables =
     " ARKODE_HEUN_EULER_2_1_2 ARKODE_BOGACKI_SHAMPINE_4_2_3 ARKODE_ARK324L2SA_ERK_4_2_3 ARKODE_ZONNEVELD_5_3_4"

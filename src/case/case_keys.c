@@ -1,7 +1,9 @@
-/* Where a key's value came from (src/case/case_keys.h). */
+/* Where a key's value came from, its range and the names of its values (src/case/case_keys.h). */
 #include "case_keys.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 size_t gd_case_key_index(const char *section, const char *key)
 {
@@ -28,6 +30,17 @@ void gd_case_key_where(const gd_case *c, const char *section, const char *key, c
         snprintf(buf, len, "%s", c->path[0] ? c->path : "case");
 }
 
+int gd_case_key_in_range(const gd_keyspec *k, double v)
+{
+    if (!isfinite(v))
+        return 0;
+    if (k->min_open ? !(v > k->min) : !(v >= k->min))
+        return 0;
+    if (k->max_open ? !(v < k->max) : !(v <= k->max))
+        return 0;
+    return 1;
+}
+
 void gd_case_key_derive(gd_case *c, const char *section, const char *key, double *field, double value)
 {
     size_t i = gd_case_key_index(section, key);
@@ -35,4 +48,16 @@ void gd_case_key_derive(gd_case *c, const char *section, const char *key, double
         return;
     *field = value;
     c->src[i] = GD_SRC_DERIVED;
+}
+
+const char *gd_case_key_choice(const char *section, const char *key, int value, char *buf, size_t len)
+{
+    const char *p = value >= 0 ? gd_case_find_key(section, key)->choices : NULL;
+    for (int j = 0; j < value && p; j++) {
+        p = strchr(p, '|');
+        if (p)
+            p++;
+    }
+    snprintf(buf, len, "%.*s", p ? (int)strcspn(p, "|") : 1, p ? p : "?");
+    return buf;
 }

@@ -1,5 +1,6 @@
 /* Where a key's value came from, for the checks that name it: shared by every layer that checks
- * keys of a case (the cross-key checks, the scene, the sweep and optimiser sections). Internal. */
+ * keys of a case (the cross-key checks, the scene, the sweep and optimiser sections); and the names
+ * of enum values, for the writers. Internal. */
 #ifndef GD_CASE_KEYS_H
 #define GD_CASE_KEYS_H
 
@@ -13,5 +14,10 @@ int gd_case_key_given(const gd_case *c, const char *section, const char *key);
 void gd_case_key_where(const gd_case *c, const char *section, const char *key, char *buf, size_t len);
 /* Set a field to a derived value unless the key was given; marks it derived. */
 void gd_case_key_derive(gd_case *c, const char *section, const char *key, double *field, double value);
+/* 1 when v is finite and within the key's range (open or closed at either end). */
+int gd_case_key_in_range(const gd_keyspec *k, double v);
+/* The name of value among the choices of an enum key (the schema's '|'-separated names, the one
+ * list of them: "torsional" for scene.model 0), "?" when out of range; written to buf, returned. */
+const char *gd_case_key_choice(const char *section, const char *key, int value, char *buf, size_t len);
 
 #endif

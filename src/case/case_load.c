@@ -1,5 +1,6 @@
 /* Reading case files (inih) and --set assignments into a gd_case, strictly. */
 #include "geardyn/gd_case.h"
+#include "case_keys.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -196,17 +197,6 @@ static void describe_range(const gd_keyspec *k, char *buf, size_t len)
     }
 }
 
-static int in_range(const gd_keyspec *k, double v)
-{
-    if (!isfinite(v))
-        return 0;
-    if (k->min_open ? !(v > k->min) : !(v >= k->min))
-        return 0;
-    if (k->max_open ? !(v < k->max) : !(v <= k->max))
-        return 0;
-    return 1;
-}
-
 static int parse_double(const char *s, double *v)
 {
     char *end;
@@ -237,14 +227,14 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
             return bad_value(where, k, value, "not a number:", err);
         if (!isfinite(v))
             return bad_value(where, k, value, "not finite:", err);
-        if (!in_range(k, v))
+        if (!gd_case_key_in_range(k, v))
             return bad_value(where, k, value, "out of range:", err);
         *(double *)field(c, k) = v;
         return GD_OK;
     case GD_KEY_INT:
         if (!parse_double(value, &v) || v != floor(v))
             return bad_value(where, k, value, "not a whole number:", err);
-        if (!in_range(k, v))
+        if (!gd_case_key_in_range(k, v))
             return bad_value(where, k, value, "out of range:", err);
         *(int *)field(c, k) = (int)v;
         return GD_OK;
@@ -291,7 +281,7 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
         for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
             if (count == GD_MAX_HARMONICS)
                 return bad_value(where, k, value, "more than 8 values:", err);
-            if (!parse_double(tok, &v) || !in_range(k, v))
+            if (!parse_double(tok, &v) || !gd_case_key_in_range(k, v))
                 return bad_value(where, k, value, "bad list element in", err);
             arr[count++] = v;
         }
@@ -460,7 +450,7 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
         return gd_error_set(err, GD_ERR_INPUT, "%s: not a numeric key", name);
     if (k->type == GD_KEY_INT && value != floor(value))
         return bad_value("sweep", k, "fractional", "not a whole number:", err);
-    if (!in_range(k, value)) {
+    if (!gd_case_key_in_range(k, value)) {
         char txt[64];
         snprintf(txt, sizeof txt, "%.17g", value);
         return bad_value("sweep", k, txt, "out of range:", err);
@@ -483,17 +473,7 @@ GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t l
     case GD_KEY_DOUBLE: snprintf(buf, len, "%.10g", *(const double *)cfield(c, k)); break;
     case GD_KEY_INT: snprintf(buf, len, "%d", *(const int *)cfield(c, k)); break;
     case GD_KEY_BOOL: snprintf(buf, len, "%s", *(const int *)cfield(c, k) ? "on" : "off"); break;
-    case GD_KEY_ENUM: {
-        int idx = *(const int *)cfield(c, k);
-        const char *p = k->choices;
-        for (int j = 0; j < idx && p; j++) {
-            p = strchr(p, '|');
-            if (p) p++;
-        }
-        size_t l = p ? strcspn(p, "|") : 1;
-        snprintf(buf, len, "%.*s", (int)l, p ? p : "?");
-        break;
-    }
+    case GD_KEY_ENUM: gd_case_key_choice(k->section, k->key, *(const int *)cfield(c, k), buf, len); break;
     case GD_KEY_STRING: snprintf(buf, len, "%s", (const char *)cfield(c, k)); break;
     case GD_KEY_DLIST: {
         const double *arr = cfield(c, k);
