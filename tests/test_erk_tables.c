@@ -2,7 +2,7 @@
  *
  * SUNDIALS 6.4.1's ERKStep reuses the last stage as the next first stage whenever
  * c[s-1] = 1, FSAL or not; classical RK4 and ARKODE_VERNER_8_5_6 then run at order 3.
- * geardyn appends an exact FSAL stage (src/dynamics/erk_table.c). This test measures the
+ * geardyn appends an exact FSAL stage (src/dynamics/compat/erk_fsal.c). This test measures the
  * order on a smooth linear gear response (torsional model in permanent contact) with
  * fixed steps N, 2N, 4N: p = log2(|y_N - y_2N| / |y_2N - y_4N|). */
 #include "geardyn/geardyn.h"
@@ -64,7 +64,7 @@ int main(void)
         {"ARKODE_ARK436L2SA_ERK_6_3_4", GD_METHOD_ERK, 4, 16},
         {"ARKODE_ARK548L2SA_ERK_8_4_5", GD_METHOD_ERK, 5, 40},
         {"ARKODE_FEHLBERG_13_7_8", GD_METHOD_ERK, 8, 6},
-        /* Verner's pairs, which geardyn adds to SUNDIALS 6.4.1 (src/dynamics/erk_verner.c) */
+        /* Verner's pairs, which geardyn adds before SUNDIALS 7.3 (src/dynamics/compat/erk_verner.c) */
         {"ARKODE_VERNER_10_6_7", GD_METHOD_ERK, 7, 8},
         {"ARKODE_VERNER_13_7_8", GD_METHOD_ERK, 8, 6},
         {"ARKODE_VERNER_16_8_9", GD_METHOD_ERK, 9, 5},

@@ -12,7 +12,7 @@
  * Then whole runs: the integrator with the compiled RHS and with the general one, same case,
  * must end in the same state to the tolerance's order and see the same events. */
 #include "physics_util.h"
-#include "rhs_plan.h"
+#include "dynamics/rhs_plan.h"
 #include "tap.h"
 #include "geardyn/gd_scene.h"
 

@@ -1,4 +1,4 @@
-/* geardyn's serial vector kernels (src/dynamics/vector_kernels.c) give the same bits as SUNDIALS'
+/* geardyn's serial vector kernels (src/dynamics/compat/vector_kernels.c) give the same bits as SUNDIALS'
  * own serial kernels, operation by operation and on whole runs.
  *
  * 1. Every overridden operation on seeded random data, for every special case the library
@@ -13,7 +13,8 @@
  *    and every counter (steps, RHS evaluations, events) are identical. */
 #include "geardyn/geardyn.h"
 #include "tap.h"
-#include "vector_kernels.h"
+#include "dynamics/compat/sundials_compat.h"
+#include "dynamics/compat/vector_kernels.h"
 
 #include <gsl/gsl_rng.h>
 #include <stdlib.h>
@@ -283,7 +284,7 @@ int main(void)
     rng = gsl_rng_alloc(gsl_rng_mt19937);
     gsl_rng_set(rng, 20261122);
     SUNContext ctx;
-    if (SUNContext_Create(NULL, &ctx) != 0) {
+    if (SUNContext_Create(GD_SUN_COMM_NULL, &ctx) != 0) {
         tap_ok(0, "SUNContext_Create");
         return 1;
     }

@@ -1,6 +1,7 @@
 /* Evaluating the dimensionless model: excitations, right-hand side, Jacobian, root
  * functions, energy and the static state. The RHS, Jacobian and roots allocate nothing. */
 #include "geardyn/gd_model.h"
+#include "../core/gsl_quiet.h"
 #include "model_internal.h"
 
 #include <gsl/gsl_errno.h>
@@ -379,6 +380,7 @@ GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const g
  * modes are corrected until every spring in contact pushes (never pulls). */
 GD_API gd_status gd_model_static_state(const gd_model *m, double *y, gd_modes *md, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     const int nd = m->ndof;
     int modes[GD_MAX_CLEAR];
     double hsave[GD_MAX_CLEAR];
@@ -509,6 +511,7 @@ GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const do
 
 GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *k, int n, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     if (j < 0 || j >= m->nmesh)
         return gd_error_set(err, GD_ERR_INTERNAL, "stiffness table for mesh %d of %d", j, m->nmesh);
     if (n < 2 || n % 2 || n > 2 * GD_MESH_HARMONICS)

@@ -1,19 +1,24 @@
-/* Verner's "most efficient" explicit Runge-Kutta pairs of orders 7(6), 8(7) and 9(8), which
- * SUNDIALS 6.4.1 (Debian 12) does not carry: their Butcher coefficients as data, turned into
- * ARKODE tables that ERKStep integrates like its own.
+/* Verner's "most efficient" explicit Runge-Kutta pairs of orders 7(6), 8(7) and 9(8) as data,
+ * turned into ARKODE tables that ERKStep integrates like its own (SUNDIALS before 7.3.0 only).
+ *
+ * Unnecessary from SUNDIALS 7.3.0: ARKODE carries the three pairs under the same names from
+ * 6.7.0 (LLNL/sundials PR #359), and from 7.3.0 (PR #675, "improved the precision of the
+ * coefficients") with these digits: its tables loaded by name are these bit for bit, which
+ * tests/test_erk_verner.c checks with a fingerprint of every coefficient. In 6.7.0 to 7.2.x, 15
+ * coefficients of ARKODE_VERNER_10_6_7 and 16 of ARKODE_VERNER_13_7_8 round differently, so that
+ * geardyn keeps its own tables below 7.3 and the results are the same bits on every version.
+ * Compiled only for SUNDIALS < 7.3 (compat/meson.build); erk_verner.h stands in above.
  *
  * Source: J. H. Verner, "Numerically optimal Runge-Kutta pairs with interpolants", Numerical
  * Algorithms 53 (2010) 383-396, doi:10.1007/s11075-009-9290-3, and the coefficient files on
- * Verner's web page; the digits are those that SUNDIALS 6.6 and later load under the same names
- * (ARKODE_VERNER_10_6_7, ARKODE_VERNER_13_7_8, ARKODE_VERNER_16_8_9), so that a case naming one
- * of them means the same method with a newer SUNDIALS. The 8th-order solution of the 8(7) pair
- * advances the step (q = 8) and the 7th-order one estimates its error (p = 7), as in ARKODE.
- * tests/test_erk_tables.c measures the order of each table and checks the order conditions. */
+ * Verner's web page. The 8th-order solution of the 8(7) pair advances the step (q = 8) and the
+ * 7th-order one estimates its error (p = 7), as in ARKODE. tests/test_erk_tables.c measures the
+ * order of each table and tests/test_erk_verner.c checks the order conditions. */
 #include <stdio.h>
 #include <string.h>
 #include <arkode/arkode_butcher.h>
 
-#include "erk_table.h"
+#include "erk_verner.h"
 
 typedef struct {
     int i, j;

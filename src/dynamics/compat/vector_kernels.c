@@ -1,5 +1,11 @@
 /* The serial vector operations ARKODE calls at every step, compiled with geardyn.
  *
+ * Not an API defect but a build one, in compat/ all the same and compiled for every version:
+ * Debian 12's SUNDIALS 6.4.1 runs unoptimised (below). SUNDIALS' CMake added no optimisation
+ * flags unless a build type was given until 7.0.0 made RelWithDebInfo the default build type
+ * (LLNL/sundials PR #422); with an optimised SUNDIALS the file is unnecessary. It stays
+ * selectable at run time: solver.vector_kernels = geardyn (the default) or sundials.
+ *
  * Why this file exists (docs/performance.md, "Where the time goes"): Debian 12's SUNDIALS 6.4.1
  * is built without optimisation (-O0), and its serial vector kernels were 57 % of all
  * instructions of a bta run (N_VLinearCombination_Serial alone 44 %: about 2 300 instructions
@@ -25,21 +31,21 @@
 /* two doubles in one register (GCC and Clang vector extension; SSE2 on x86-64): lane-wise
  * multiply and add are the scalar operations, so the results keep their bits */
 typedef double v2 __attribute__((vector_size(16)));
-_Static_assert(sizeof(realtype) == sizeof(double), "SUNDIALS built with double precision");
-static inline v2 ld2(const realtype *p)
+_Static_assert(sizeof(sunrealtype) == sizeof(double), "SUNDIALS built with double precision");
+static inline v2 ld2(const sunrealtype *p)
 {
     v2 r;
     memcpy(&r, p, sizeof r);
     return r;
 }
-static inline void st2(realtype *p, v2 a) { memcpy(p, &a, sizeof a); }
+static inline void st2(sunrealtype *p, v2 a) { memcpy(p, &a, sizeof a); }
 #define DAT(v) NV_DATA_S(v)
 
 /* z = a x + b y, with the library's special cases (each changes the rounding or the aliasing) */
-static void k_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector z)
+static void k_linearsum(sunrealtype a, N_Vector x, sunrealtype b, N_Vector y, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
     if (z == y && b == 1.0) { /* y += a x */
         if (a == 1.0)
             for (sunindextype i = 0; i < n; i++) yd[i] += xd[i];
@@ -97,24 +103,24 @@ static void k_linearsum(realtype a, N_Vector x, realtype b, N_Vector y, N_Vector
     for (sunindextype i = 0; i < n; i++) zd[i] = (a * xd[i]) + (b * yd[i]);
 }
 
-static void k_const(realtype c, N_Vector z)
+static void k_const(sunrealtype c, N_Vector z)
 {
     const sunindextype n = LEN(z);
-    realtype *zd = DAT(z);
+    sunrealtype *zd = DAT(z);
     for (sunindextype i = 0; i < n; i++) zd[i] = c;
 }
 
 static void k_prod(N_Vector x, N_Vector y, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
     for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] * yd[i];
 }
 
 static void k_div(N_Vector x, N_Vector y, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *yd = DAT(y), *zd = DAT(z);
     for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] / yd[i];
 }
 
@@ -134,10 +140,10 @@ static void k_div(N_Vector x, N_Vector y, N_Vector z)
 #define F_NEG(x) (-(x))
 #define F_INV(x) (1.0 / (x))
 
-static void k_scale(realtype c, N_Vector x, N_Vector z)
+static void k_scale(sunrealtype c, N_Vector x, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *zd = DAT(z);
     if (z == x)
         ELEMENTWISE(n, xd, xd, F_SCALE);
     else if (c == 1.0)
@@ -151,66 +157,66 @@ static void k_scale(realtype c, N_Vector x, N_Vector z)
 static void k_abs(N_Vector x, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *zd = DAT(z);
     for (sunindextype i = 0; i < n; i++) zd[i] = fabs(xd[i]);
 }
 
 static void k_inv(N_Vector x, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *zd = DAT(z);
     ELEMENTWISE(n, xd, zd, F_INV);
 }
 
-static void k_addconst(N_Vector x, realtype b, N_Vector z)
+static void k_addconst(N_Vector x, sunrealtype b, N_Vector z)
 {
     const sunindextype n = LEN(x);
-    realtype *xd = DAT(x), *zd = DAT(z);
+    sunrealtype *xd = DAT(x), *zd = DAT(z);
     for (sunindextype i = 0; i < n; i++) zd[i] = xd[i] + b;
 }
 
-static realtype k_dotprod(N_Vector x, N_Vector y)
+static sunrealtype k_dotprod(N_Vector x, N_Vector y)
 {
     const sunindextype n = LEN(x);
-    const realtype *xd = DAT(x), *yd = DAT(y);
-    realtype s = 0.0;
+    const sunrealtype *xd = DAT(x), *yd = DAT(y);
+    sunrealtype s = 0.0;
     for (sunindextype i = 0; i < n; i++) s += xd[i] * yd[i];
     return s;
 }
 
-static realtype k_maxnorm(N_Vector x)
+static sunrealtype k_maxnorm(N_Vector x)
 {
     const sunindextype n = LEN(x);
-    const realtype *xd = DAT(x);
-    realtype m = 0.0;
+    const sunrealtype *xd = DAT(x);
+    sunrealtype m = 0.0;
     for (sunindextype i = 0; i < n; i++)
         if (fabs(xd[i]) > m)
             m = fabs(xd[i]);
     return m;
 }
 
-static realtype k_wsqrsum(N_Vector x, N_Vector w)
+static sunrealtype k_wsqrsum(N_Vector x, N_Vector w)
 {
     const sunindextype n = LEN(x);
-    const realtype *xd = DAT(x), *wd = DAT(w);
-    realtype s = 0.0;
+    const sunrealtype *xd = DAT(x), *wd = DAT(w);
+    sunrealtype s = 0.0;
     for (sunindextype i = 0; i < n; i++) {
-        const realtype p = xd[i] * wd[i];
+        const sunrealtype p = xd[i] * wd[i];
         s += p * p;
     }
     return s;
 }
 
-static realtype k_wrmsnorm(N_Vector x, N_Vector w)
+static sunrealtype k_wrmsnorm(N_Vector x, N_Vector w)
 {
-    return sqrt(k_wsqrsum(x, w) / (realtype)LEN(x));
+    return sqrt(k_wsqrsum(x, w) / (sunrealtype)LEN(x));
 }
 
-static realtype k_min(N_Vector x)
+static sunrealtype k_min(N_Vector x)
 {
     const sunindextype n = LEN(x);
-    const realtype *xd = DAT(x);
-    realtype m = xd[0];
+    const sunrealtype *xd = DAT(x);
+    sunrealtype m = xd[0];
     for (sunindextype i = 1; i < n; i++)
         if (xd[i] < m)
             m = xd[i];
@@ -221,7 +227,7 @@ static realtype k_min(N_Vector x)
  * when X[0] is z with c[0] = 1), then + c[i] X[i][j] for i = 1, 2, ... in this order. Each element
  * is an independent chain of the scalar operations, so computing several elements at once in the
  * lanes of a register (element-outer loop, one pass over the X[i] per block) keeps the bits. */
-static void lc_sum_sse2(int nvec, const realtype *c, const realtype *const *xs, realtype *zd, sunindextype n,
+static void lc_sum_sse2(int nvec, const sunrealtype *c, const sunrealtype *const *xs, sunrealtype *zd, sunindextype n,
                         int skip)
 {
     sunindextype j = 0;
@@ -230,13 +236,13 @@ static void lc_sum_sse2(int nvec, const realtype *c, const realtype *const *xs, 
         if (skip) {
             a0 = ld2(zd + j), a1 = ld2(zd + j + 2), a2 = ld2(zd + j + 4), a3 = ld2(zd + j + 6);
         } else {
-            const realtype *x0 = xs[0] + j;
+            const sunrealtype *x0 = xs[0] + j;
             const v2 c0 = {c[0], c[0]};
             a0 = c0 * ld2(x0), a1 = c0 * ld2(x0 + 2), a2 = c0 * ld2(x0 + 4), a3 = c0 * ld2(x0 + 6);
         }
         for (int i = 1; i < nvec; i++) {
             const v2 ci = {c[i], c[i]};
-            const realtype *xi = xs[i] + j;
+            const sunrealtype *xi = xs[i] + j;
             a0 += ci * ld2(xi), a1 += ci * ld2(xi + 2), a2 += ci * ld2(xi + 4), a3 += ci * ld2(xi + 6);
         }
         st2(zd + j, a0), st2(zd + j + 2, a1), st2(zd + j + 4, a2), st2(zd + j + 6, a3);
@@ -247,7 +253,7 @@ static void lc_sum_sse2(int nvec, const realtype *c, const realtype *const *xs, 
         st2(zd + j, a0);
     }
     for (; j < n; j++) {
-        realtype acc = skip ? zd[j] : c[0] * xs[0][j];
+        sunrealtype acc = skip ? zd[j] : c[0] * xs[0][j];
         for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
         zd[j] = acc;
     }
@@ -261,8 +267,8 @@ static void lc_sum_sse2(int nvec, const realtype *c, const realtype *const *xs, 
 typedef double v4 __attribute__((vector_size(32)));
 #define LD4(p) (__extension__({ v4 r_; memcpy(&r_, (p), sizeof r_); r_; }))
 #define ST4(p, a) (__extension__({ v4 a_ = (a); memcpy((p), &a_, sizeof a_); }))
-__attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *c, const realtype *const *xs,
-                                                      realtype *zd, sunindextype n, int skip)
+__attribute__((target("avx"))) static void lc_sum_avx(int nvec, const sunrealtype *c, const sunrealtype *const *xs,
+                                                      sunrealtype *zd, sunindextype n, int skip)
 {
     sunindextype j = 0;
     for (; j + 20 <= n; j += 20) { /* the bta state: one pass over the vectors */
@@ -271,14 +277,14 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *
             a0 = LD4(zd + j), a1 = LD4(zd + j + 4), a2 = LD4(zd + j + 8), a3 = LD4(zd + j + 12);
             a4 = LD4(zd + j + 16);
         } else {
-            const realtype *x0 = xs[0] + j;
+            const sunrealtype *x0 = xs[0] + j;
             const v4 c0 = {c[0], c[0], c[0], c[0]};
             a0 = c0 * LD4(x0), a1 = c0 * LD4(x0 + 4), a2 = c0 * LD4(x0 + 8), a3 = c0 * LD4(x0 + 12);
             a4 = c0 * LD4(x0 + 16);
         }
         for (int i = 1; i < nvec; i++) {
             const v4 ci = {c[i], c[i], c[i], c[i]};
-            const realtype *xi = xs[i] + j;
+            const sunrealtype *xi = xs[i] + j;
             a0 += ci * LD4(xi), a1 += ci * LD4(xi + 4), a2 += ci * LD4(xi + 8), a3 += ci * LD4(xi + 12);
             a4 += ci * LD4(xi + 16);
         }
@@ -290,13 +296,13 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *
         if (skip) {
             a0 = LD4(zd + j), a1 = LD4(zd + j + 4), a2 = LD4(zd + j + 8), a3 = LD4(zd + j + 12);
         } else {
-            const realtype *x0 = xs[0] + j;
+            const sunrealtype *x0 = xs[0] + j;
             const v4 c0 = {c[0], c[0], c[0], c[0]};
             a0 = c0 * LD4(x0), a1 = c0 * LD4(x0 + 4), a2 = c0 * LD4(x0 + 8), a3 = c0 * LD4(x0 + 12);
         }
         for (int i = 1; i < nvec; i++) {
             const v4 ci = {c[i], c[i], c[i], c[i]};
-            const realtype *xi = xs[i] + j;
+            const sunrealtype *xi = xs[i] + j;
             a0 += ci * LD4(xi), a1 += ci * LD4(xi + 4), a2 += ci * LD4(xi + 8), a3 += ci * LD4(xi + 12);
         }
         ST4(zd + j, a0), ST4(zd + j + 4, a1), ST4(zd + j + 8, a2), ST4(zd + j + 12, a3);
@@ -316,7 +322,7 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *
         ST4(zd + j, a0);
     }
     for (; j < n; j++) {
-        realtype acc = skip ? zd[j] : c[0] * xs[0][j];
+        sunrealtype acc = skip ? zd[j] : c[0] * xs[0][j];
         for (int i = 1; i < nvec; i++) acc += c[i] * xs[i][j];
         zd[j] = acc;
     }
@@ -325,7 +331,8 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const realtype *
 
 static int lc_narrow; /* 1: two lanes even where AVX is available (gd_vector_kernels_wide(0), for the tests) */
 
-static void lc_sum(int nvec, const realtype *c, const realtype *const *xs, realtype *zd, sunindextype n, int skip)
+static void lc_sum(int nvec, const sunrealtype *c, const sunrealtype *const *xs, sunrealtype *zd, sunindextype n,
+                   int skip)
 {
 #ifdef GD_HAVE_AVX_KERNEL
     if (!lc_narrow && __builtin_cpu_supports("avx")) {
@@ -338,7 +345,7 @@ static void lc_sum(int nvec, const realtype *c, const realtype *const *xs, realt
 
 /* z = sum c[i] X[i]. The vectors are accumulated one after the other (vector-outer loop), as the
  * library does: with z aliasing one of the X[i] this order is part of the result. */
-static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
+static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1)
         return -1;
@@ -351,11 +358,11 @@ static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
         return 0;
     }
     const sunindextype n = LEN(z);
-    realtype *zd = DAT(z);
+    sunrealtype *zd = DAT(z);
     enum { MAXV = 16 };
     int aliased = nvec > MAXV;
     if (!aliased) { /* the data pointers and the aliasing test in one pass */
-        const realtype *xs[MAXV];
+        const sunrealtype *xs[MAXV];
         xs[0] = DAT(X[0]);
         for (int i = 1; i < nvec; i++) {
             aliased |= X[i] == z;
@@ -370,19 +377,19 @@ static int k_linearcombination(int nvec, realtype *c, N_Vector *X, N_Vector z)
         if (c[0] != 1.0)
             for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
     } else {
-        const realtype *x0 = DAT(X[0]);
+        const sunrealtype *x0 = DAT(X[0]);
         for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
     }
     for (int i = 1; i < nvec; i++) {
-        const realtype *xd = DAT(X[i]);
-        const realtype ci = c[i];
+        const sunrealtype *xd = DAT(X[i]);
+        const sunrealtype ci = c[i];
         for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
     }
     return 0;
 }
 
 /* Z[i] = Y[i] + a[i] x */
-static int k_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
+static int k_scaleaddmulti(int nvec, sunrealtype *a, N_Vector x, N_Vector *Y, N_Vector *Z)
 {
     if (nvec < 1)
         return -1;
@@ -391,13 +398,13 @@ static int k_scaleaddmulti(int nvec, realtype *a, N_Vector x, N_Vector *Y, N_Vec
         return 0;
     }
     const sunindextype n = LEN(x);
-    const realtype *xd = DAT(x);
+    const sunrealtype *xd = DAT(x);
     for (int i = 0; i < nvec; i++) {
-        realtype *yd = DAT(Y[i]);
+        sunrealtype *yd = DAT(Y[i]);
         if (Y == Z) {
             for (sunindextype j = 0; j < n; j++) yd[j] += a[i] * xd[j];
         } else {
-            realtype *zd = DAT(Z[i]);
+            sunrealtype *zd = DAT(Z[i]);
             for (sunindextype j = 0; j < n; j++) zd[j] = a[i] * xd[j] + yd[j];
         }
     }
