@@ -68,6 +68,7 @@ int main(void)
     gd_impact_force(2 * im->vs_per_omega * omega1, m.m_ref, im->ks, im->delta_m, 1.5, &F2, &d2);
     gd_impact_force(im->vs_per_omega * omega1, m.m_ref, im->ks, im->delta_m, 1.5, &F, &dur);
     TAP_REL(F2 / F, pow(2.0, 2 * 1.5 / 2.5), 1e-12, "Hertz-like law n = 1.5: F_s grows as v^(2n/(n+1))");
+    gd_ltca_excitation_release(x); /* im pointed into x */
     gd_case_free(&c);
     /* 4. tip relief lowers the impact (aligned pair, same speed and load) */
     double Fun = 0, Frel = 0;

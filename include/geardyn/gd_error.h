@@ -42,12 +42,17 @@ typedef struct gd_error {
 } gd_error;
 
 /* Record an error (the single place to put a breakpoint on). Returns code.
- * A NULL err is allowed: the code is still returned. */
+ * A NULL err is allowed: the code is still returned, and in both cases recorded as this thread's
+ * last status (for gd_error_prefix with err NULL). */
 GD_API gd_status gd_error_set(gd_error *err, gd_status code, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* Prefix the message already in err with more context ("while ...: "). */
+/* Prefix the message already in err with more context ("while ...: "); returns err->code. With
+ * err NULL there is no message, but the status is kept: the status this thread last recorded with
+ * gd_error_set (GD_ERR_INTERNAL when none since gd_error_clear), so that `return gd_error_prefix(err,
+ * ...)` right after a failed call returns that call's status whether or not err is NULL. */
 GD_API gd_status gd_error_prefix(gd_error *err, const char *fmt, ...)
     __attribute__((format(printf, 2, 3)));
+/* Reset err (may be NULL) to GD_OK and forget this thread's last recorded status. */
 GD_API void gd_error_clear(gd_error *err);
 GD_API const char *gd_status_name(gd_status code);
 /* The command-line exit status for an error code: 2 for bad input, 1 otherwise. */

@@ -176,6 +176,11 @@ GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x);
  * LTCA/TCA discretisation keys, with npos (<= 0: the case's ltca_positions_per_cycle). Equal keys:
  * the same LTCA (a sweep over speed at constant torque reuses it). */
 GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos);
+/* The bytes gd_ltca_cache_key hashes, in order: every value above with its key's name, and npos;
+ * exactly what determines the LTCA, so that equal bytes mean the same LTCA even where two hashes
+ * collide. Written to buf as far as they fit in cap (buf may be NULL with cap 0); returns their
+ * count (call once with cap 0 for the size). */
+GD_API size_t gd_ltca_cache_key_bytes(const gd_case *c, int npos, unsigned char *buf, size_t cap);
 
 #ifdef __cplusplus
 }

@@ -1,5 +1,6 @@
 /* Amplitude spectrum: Hann window and GSL's mixed-radix real FFT (any length). */
 #include "geardyn/gd_spectrum.h"
+#include "../core/gsl_quiet.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_fft_real.h>
@@ -10,6 +11,7 @@
 GD_API gd_status gd_amplitude_spectrum(const double *x, size_t n, double dt, double *freq, double *amp,
                                        gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     if (n < 2 || !(dt > 0))
         return gd_error_set(err, GD_ERR_INPUT, "spectrum: need at least 2 samples and a positive step");
     double *w = malloc(sizeof(double) * n);

@@ -5,8 +5,15 @@
 #include <stdio.h>
 #include <string.h>
 
+/* The status of the last error this thread recorded (gd_error_set), so that gd_error_prefix keeps
+ * the code when the caller passed no gd_error: `return gd_error_prefix(err, ...)` right after a
+ * failed call, err NULL, returns the status that call set. Thread-local: a sweep's threads fail
+ * independently. GD_OK: nothing recorded (or cleared by gd_error_clear). */
+static _Thread_local gd_status last_status = GD_OK;
+
 GD_API gd_status gd_error_set(gd_error *err, gd_status code, const char *fmt, ...)
 {
+    last_status = code;
     if (err) {
         va_list ap;
         va_start(ap, fmt);
@@ -19,20 +26,22 @@ GD_API gd_status gd_error_set(gd_error *err, gd_status code, const char *fmt, ..
 
 GD_API gd_status gd_error_prefix(gd_error *err, const char *fmt, ...)
 {
-    if (!err)
-        return GD_ERR_INTERNAL;
+    if (!err) /* nothing to prefix: the status of the error being prefixed is this thread's last */
+        return last_status != GD_OK ? last_status : GD_ERR_INTERNAL;
     char head[GD_ERROR_MSG_MAX], old[GD_ERROR_MSG_MAX];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(head, sizeof head, fmt, ap);
     va_end(ap);
     memcpy(old, err->msg, sizeof old);
+    old[sizeof old - 1] = '\0'; /* a message that filled the buffer stays a string */
     snprintf(err->msg, sizeof err->msg, "%s: %s", head, old);
     return err->code;
 }
 
 GD_API void gd_error_clear(gd_error *err)
 {
+    last_status = GD_OK;
     if (err) {
         err->code = GD_OK;
         err->msg[0] = '\0';

@@ -2,6 +2,7 @@
  * and the checks that refuse impossible geometry (undercut, pointed tip, eps_alpha < 1,
  * involute interference). */
 #include "geardyn/gd_geometry.h"
+#include "../core/gsl_quiet.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
@@ -40,7 +41,8 @@ static gd_status inverse_involute(double target, double *alpha, gd_error *err)
     return GD_OK;
 }
 
-GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err)
+/* Angles, pitches, the working pressure angle, the radii and the centre distance. */
+static gd_status geometry_radii(const gd_case *c, gd_geometry *g, gd_error *err)
 {
     const double deg = M_PI / 180.0;
     g->mn = c->normal_module_mm * 1e-3;
@@ -71,6 +73,14 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
     g->b[0] = c->face_width_pinion_mm * 1e-3;
     g->b[1] = c->face_width_gear_mm * 1e-3;
     g->b_contact = fmin(g->b[0], g->b[1]);
+    return GD_OK;
+}
+
+/* The contact ratios, the start of active profile, the tooth thicknesses and the involute
+ * form circle of each member; returns the length of the line of action between the base
+ * circles' tangent points. */
+static double geometry_contact(const gd_case *c, gd_geometry *g)
+{
     double ga[2];
     for (int i = 0; i < 2; i++)
         ga[i] = sqrt(g->ra[i] * g->ra[i] - g->rb[i] * g->rb[i]);
@@ -98,7 +108,12 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
         g->r_form[i] = sqrt(g->rb[i] * g->rb[i] + (g->rho_form[i] > 0 ? g->rho_form[i] * g->rho_form[i] : 0));
     }
     g->pbn = g->pbt * cos(g->beta_b);
+    return loa;
+}
 
+/* The checks that refuse impossible geometry; g->bad_key names the key to blame. */
+static gd_status geometry_check(const gd_case *c, gd_geometry *g, double loa, gd_error *err)
+{
     static const char *name[2] = {"pinion", "gear"};
     static const char *shift_key[2] = {"profile_shift_pinion", "profile_shift_gear"};
     static const char *teeth_key[2] = {"teeth_pinion", "teeth_gear"};
@@ -121,7 +136,7 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: pointed tip: normal tip thickness %.3g mm below 0.2 m_n = %.3g mm (reduce profile shift or addendum)",
                 name[i], g->tip_thickness_n[i] * 1e3, 0.2 * g->mn * 1e3);
-        if (loa - ga[1 - i] < 0)
+        if (loa - g->rho_a[1 - i] < 0)
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: involute interference: the mating tip reaches below the base circle (start of active profile undefined)",
                 name[i]);
@@ -140,4 +155,14 @@ GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error 
                             g->eps_alpha);
     g->bad_key = NULL;
     return GD_OK;
+}
+
+GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err)
+{
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
+    gd_status st = geometry_radii(c, g, err);
+    if (st != GD_OK)
+        return st;
+    double loa = geometry_contact(c, g);
+    return geometry_check(c, g, loa, err);
 }

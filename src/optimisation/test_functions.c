@@ -2,6 +2,7 @@
  * moved to a point o, and seeded instances with a shifted minimiser (docs/optimisation.md
  * section 6). Domains as Mirjalili 2015, Tables 1-2. */
 #include "geardyn/gd_optimize.h"
+#include "../core/gsl_quiet.h"
 
 #include <gsl/gsl_rng.h>
 #include <math.h>
@@ -87,6 +88,7 @@ GD_API void gd_opt_testfn_free(gd_opt_testfn *t)
 
 GD_API gd_status gd_opt_testfn_init(gd_opt_testfn *t, int fn, int dim, double shift, unsigned long seed, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(t, 0, sizeof *t);
     if (fn < GD_OBJ_SPHERE || fn > GD_OBJ_GRIEWANK)
         return gd_error_set(err, GD_ERR_INPUT, "test function %d (valid: sphere .. griewank)", fn);

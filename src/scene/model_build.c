@@ -64,18 +64,18 @@ static void interleave_rows(gd_nz *list, int n)
 
 static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
 
-GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
+/* The scales and values of the case every model topology uses, dimensionless where stated. */
+typedef struct build_scales {
+    double cb, sb;           /* cos and (with axial coupling) sin of the base helix angle */
+    double mn, km;           /* normal equivalent mass of one half (kg), mesh stiffness (N/m) */
+    double fscale, cscale;   /* N -> dimensionless force, N s/m -> dimensionless damping */
+    double bh, eh;           /* half backlash, half bearing clearance (dimensionless) */
+} build_scales;
+
+/* The reference scales of the model, the mesh frequency and the static load. */
+static void model_scales(const gd_case *c, const gd_geometry *g, gd_model *m, build_scales *b)
 {
-    memset(m, 0, sizeof *m);
-    gd_geometry g;
-    gd_status st = gd_geometry_compute(c, &g, err);
-    if (st != GD_OK)
-        return st;
-    if (c->model == GD_MODEL_TORSIONAL && c->half_phase_deg != 0.0)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with model torsional (valid: 0, "
-                            "the torsional model has one mesh; use torsional-lr)", c->path, c->half_phase_deg);
-    const double deg = M_PI / 180.0;
-    double cb = cos(g.beta_b), sb = c->axial_coupling ? sin(g.beta_b) : 0.0;
+    double cb = cos(g->beta_b), sb = c->axial_coupling ? sin(g->beta_b) : 0.0;
     double me = c->equivalent_mass_kg;
     double mn = me / (cb * cb);          /* normal equivalent mass of one half */
     double km = c->mesh_stiffness_n_per_m;
@@ -88,14 +88,23 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
     m->mesh_freq_hz = omega_m / (2.0 * M_PI);
     m->Omega = omega_m / m->omega_n;
     m->period = 2.0 * M_PI / m->Omega;
-    double fscale = 1.0 / (km * m->bc_m);         /* N -> dimensionless force */
-    double cscale = 1.0 / (mn * m->omega_n);      /* N s/m -> dimensionless damping */
+    b->fscale = 1.0 / (km * m->bc_m);         /* N -> dimensionless force */
+    b->cscale = 1.0 / (mn * m->omega_n);      /* N s/m -> dimensionless damping */
     double T = c->torque_nm;
-    m->static_load_n = T / (2.0 * g.rb[0] * cb);   /* normal force of one half */
-    double bh = 0.5 * c->backlash_um * 1e-6 / m->bc_m;
-    double eh = 0.5 * c->bearing_clearance_um * 1e-6 / m->bc_m;
+    m->static_load_n = T / (2.0 * g->rb[0] * cb);   /* normal force of one half */
+    b->bh = 0.5 * c->backlash_um * 1e-6 / m->bc_m;
+    b->eh = 0.5 * c->bearing_clearance_um * 1e-6 / m->bc_m;
     m->damp_contact_only = c->mesh_damping_mode == GD_DAMP_CONTACT;
+    b->cb = cb;
+    b->sb = sb;
+    b->mn = mn;
+    b->km = km;
+}
 
+/* The excitations of each mesh: stiffness variation and static transmission error. */
+static void model_excitations(const gd_case *c, gd_model *m)
+{
+    const double deg = M_PI / 180.0;
     int nmesh = c->model == GD_MODEL_TORSIONAL ? 1 : 2;
     m->nmesh = nmesh;
     for (int s = 0; s < nmesh; s++) {
@@ -124,139 +133,180 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
         x->ce = cos(x->e_phi);
         x->se = sin(x->e_phi);
     }
+}
 
-    if (c->model == GD_MODEL_TORSIONAL) {
-        m->ndof = 1;
-        name_dof(m, 0, "q");
-        m->mass[0] = 2.0;
-        m->F0[0] = 2.0 * m->static_load_n * fscale;
-        gd_clearance *cl = &m->clear[0];
+/* torsional: one DOF q, one mesh carrying both halves. */
+static void build_torsional(const gd_case *c, gd_model *m, const build_scales *b)
+{
+    m->ndof = 1;
+    name_dof(m, 0, "q");
+    m->mass[0] = 2.0;
+    m->F0[0] = 2.0 * m->static_load_n * b->fscale;
+    gd_clearance *cl = &m->clear[0];
+    cl->kind = GD_CLR_MESH;
+    cl->mesh = 0;
+    cl->nw = 1;
+    cl->widx[0] = 0;
+    cl->wval[0] = 1.0;
+    cl->h = b->bh;
+    cl->k = 2.0;
+    cl->c = 2.0 * 2.0 * c->mesh_damping_ratio;
+    cl->damp_contact_only = m->damp_contact_only;
+    snprintf(cl->name, sizeof cl->name, "mesh");
+    m->nclear = 1;
+    m->mesh_clear[0] = 0;
+    m->q_dof[0] = 0;
+}
+
+/* torsional-lr: one DOF and one mesh per half (qL, qR). */
+static void build_torsional_lr(const gd_case *c, gd_model *m, const build_scales *b)
+{
+    m->ndof = 2;
+    name_dof(m, 0, "qL");
+    name_dof(m, 1, "qR");
+    for (int s = 0; s < 2; s++) {
+        m->mass[s] = 1.0;
+        m->F0[s] = m->static_load_n * b->fscale;
+        gd_clearance *cl = &m->clear[s];
         cl->kind = GD_CLR_MESH;
-        cl->mesh = 0;
+        cl->mesh = s;
         cl->nw = 1;
-        cl->widx[0] = 0;
+        cl->widx[0] = s;
         cl->wval[0] = 1.0;
-        cl->h = bh;
-        cl->k = 2.0;
-        cl->c = 2.0 * 2.0 * c->mesh_damping_ratio;
+        cl->h = b->bh;
+        cl->k = 1.0;
+        cl->c = 2.0 * c->mesh_damping_ratio;
         cl->damp_contact_only = m->damp_contact_only;
-        snprintf(cl->name, sizeof cl->name, "mesh");
-        m->nclear = 1;
-        m->mesh_clear[0] = 0;
-        m->q_dof[0] = 0;
-    } else if (c->model == GD_MODEL_TORSIONAL_LR) {
-        m->ndof = 2;
-        name_dof(m, 0, "qL");
-        name_dof(m, 1, "qR");
-        for (int s = 0; s < 2; s++) {
-            m->mass[s] = 1.0;
-            m->F0[s] = m->static_load_n * fscale;
-            gd_clearance *cl = &m->clear[s];
-            cl->kind = GD_CLR_MESH;
-            cl->mesh = s;
-            cl->nw = 1;
-            cl->widx[0] = s;
-            cl->wval[0] = 1.0;
-            cl->h = bh;
-            cl->k = 1.0;
-            cl->c = 2.0 * c->mesh_damping_ratio;
-            cl->damp_contact_only = m->damp_contact_only;
-            snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
-            m->mesh_clear[s] = s;
-            m->q_dof[s] = s;
-        }
-        m->nclear = 2;
-    } else {
-        m->ndof = 10;
-        double m1 = c->pinion_mass_kg, m2 = c->gear_mass_kg;
-        double k1y = c->radial_stiffness_pinion_n_per_m, k2y = c->radial_stiffness_gear_n_per_m;
-        double k1z = c->axial_stiffness_pinion_n_per_m, k2z = c->axial_stiffness_gear_n_per_m;
-        double k1s = c->shaft_stiffness_pinion_n_per_m, k2s = c->shaft_stiffness_gear_n_per_m;
-        double zs = c->support_damping_ratio, zsh = c->shaft_damping_ratio;
-        static const char *names[5] = {"y1", "z1", "y2", "z2", "q"};
-        int nclr = 0;
-        for (int s = 0; s < 2; s++) {
-            int b0 = 5 * s;
-            double sig = s == 0 ? 1.0 : -1.0;
-            for (int j = 0; j < 5; j++) {
-                char nm[8];
-                snprintf(nm, sizeof nm, "%s%c", names[j], s ? 'R' : 'L');
-                name_dof(m, b0 + j, nm);
-            }
-            m->mass[b0 + 0] = m1 / mn;
-            m->mass[b0 + 1] = m1 / mn;
-            m->mass[b0 + 2] = m2 / mn;
-            m->mass[b0 + 3] = m2 / mn;
-            m->mass[b0 + 4] = 1.0;
-            m->F0[b0 + 4] = m->static_load_n * fscale;
-            /* mesh */
-            gd_clearance *cl = &m->clear[nclr];
-            cl->kind = GD_CLR_MESH;
-            cl->mesh = s;
-            int nw = 0;
-            cl->widx[nw] = b0 + 0; cl->wval[nw++] = cb;
-            cl->widx[nw] = b0 + 2; cl->wval[nw++] = -cb;
-            cl->widx[nw] = b0 + 4; cl->wval[nw++] = 1.0;
-            if (sb != 0.0) {
-                cl->widx[nw] = b0 + 1; cl->wval[nw++] = sig * sb;
-                cl->widx[nw] = b0 + 3; cl->wval[nw++] = -sig * sb;
-            }
-            cl->nw = nw;
-            cl->h = bh;
-            cl->k = 1.0;
-            cl->c = 2.0 * c->mesh_damping_ratio;
-            cl->damp_contact_only = m->damp_contact_only;
-            snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
-            m->mesh_clear[s] = nclr++;
-            m->q_dof[s] = b0 + 4;
-            /* radial supports of both bodies: dead zone or linear */
-            for (int body = 0; body < 2; body++) {
-                int i = b0 + 2 * body;
-                double k = body ? k2y : k1y, mass = body ? m2 : m1;
-                double cy = 2.0 * zs * sqrt(k * mass);
-                if (c->bearing_clearance) {
-                    gd_clearance *bl = &m->clear[nclr++];
-                    bl->kind = GD_CLR_BEARING;
-                    bl->mesh = -1;
-                    bl->nw = 1;
-                    bl->widx[0] = i;
-                    bl->wval[0] = 1.0;
-                    bl->h = eh;
-                    bl->k = k / km;
-                    bl->c = 0.0;
-                    snprintf(bl->name, sizeof bl->name, "bearing-%d%c", body + 1, s ? 'R' : 'L');
-                    add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
-                } else {
-                    spring(m, i, -1, k / km, cy * cscale);
-                }
-            }
-            /* axial supports */
-            spring(m, b0 + 1, -1, k1z / km, 2.0 * zs * sqrt(k1z * m1) * cscale);
-            spring(m, b0 + 3, -1, k2z / km, 2.0 * zs * sqrt(k2z * m2) * cscale);
-        }
-        /* groove shafts couple the axial motion of the two halves of each body */
-        spring(m, 1, 6, k1s / km, 2.0 * zsh * sqrt(k1s * m1 / 2.0) * cscale);
-        spring(m, 3, 8, k2s / km, 2.0 * zsh * sqrt(k2s * m2 / 2.0) * cscale);
-        m->nclear = nclr;
+        snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
+        m->mesh_clear[s] = s;
+        m->q_dof[s] = s;
     }
+    m->nclear = 2;
+}
+
+/* bta: the mesh of half s (DOFs from b0), clearance number *nclr. */
+static void bta_mesh(const gd_case *c, gd_model *m, const build_scales *b, int s, int b0, int *nclr)
+{
+    double cb = b->cb, sb = b->sb;
+    double sig = s == 0 ? 1.0 : -1.0;
+    gd_clearance *cl = &m->clear[*nclr];
+    cl->kind = GD_CLR_MESH;
+    cl->mesh = s;
+    int nw = 0;
+    cl->widx[nw] = b0 + 0; cl->wval[nw++] = cb;
+    cl->widx[nw] = b0 + 2; cl->wval[nw++] = -cb;
+    cl->widx[nw] = b0 + 4; cl->wval[nw++] = 1.0;
+    if (sb != 0.0) {
+        cl->widx[nw] = b0 + 1; cl->wval[nw++] = sig * sb;
+        cl->widx[nw] = b0 + 3; cl->wval[nw++] = -sig * sb;
+    }
+    cl->nw = nw;
+    cl->h = b->bh;
+    cl->k = 1.0;
+    cl->c = 2.0 * c->mesh_damping_ratio;
+    cl->damp_contact_only = m->damp_contact_only;
+    snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
+    m->mesh_clear[s] = (*nclr)++;
+    m->q_dof[s] = b0 + 4;
+}
+
+/* bta: the radial supports of both bodies of half s (dead zone or linear), then the axial ones. */
+static void bta_supports(const gd_case *c, gd_model *m, const build_scales *b, int s, int b0, int *nclr)
+{
+    double m1 = c->pinion_mass_kg, m2 = c->gear_mass_kg;
+    double k1y = c->radial_stiffness_pinion_n_per_m, k2y = c->radial_stiffness_gear_n_per_m;
+    double k1z = c->axial_stiffness_pinion_n_per_m, k2z = c->axial_stiffness_gear_n_per_m;
+    double zs = c->support_damping_ratio, km = b->km, cscale = b->cscale;
+    for (int body = 0; body < 2; body++) {
+        int i = b0 + 2 * body;
+        double k = body ? k2y : k1y, mass = body ? m2 : m1;
+        double cy = 2.0 * zs * sqrt(k * mass);
+        if (c->bearing_clearance) {
+            gd_clearance *bl = &m->clear[(*nclr)++];
+            bl->kind = GD_CLR_BEARING;
+            bl->mesh = -1;
+            bl->nw = 1;
+            bl->widx[0] = i;
+            bl->wval[0] = 1.0;
+            bl->h = b->eh;
+            bl->k = k / km;
+            bl->c = 0.0;
+            snprintf(bl->name, sizeof bl->name, "bearing-%d%c", body + 1, s ? 'R' : 'L');
+            add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
+        } else {
+            spring(m, i, -1, k / km, cy * cscale);
+        }
+    }
+    spring(m, b0 + 1, -1, k1z / km, 2.0 * zs * sqrt(k1z * m1) * cscale);
+    spring(m, b0 + 3, -1, k2z / km, 2.0 * zs * sqrt(k2z * m2) * cscale);
+}
+
+/* bta: per half the pinion and gear (y, z) and the mesh deflection q, ten DOFs; the groove
+ * shafts couple the axial motion of the two halves of each body. */
+static void build_bta(const gd_case *c, gd_model *m, const build_scales *b)
+{
+    m->ndof = 10;
+    double m1 = c->pinion_mass_kg, m2 = c->gear_mass_kg, mn = b->mn, km = b->km, cscale = b->cscale;
+    double k1s = c->shaft_stiffness_pinion_n_per_m, k2s = c->shaft_stiffness_gear_n_per_m;
+    double zsh = c->shaft_damping_ratio;
+    static const char *names[5] = {"y1", "z1", "y2", "z2", "q"};
+    int nclr = 0;
+    for (int s = 0; s < 2; s++) {
+        int b0 = 5 * s;
+        for (int j = 0; j < 5; j++) {
+            char nm[8];
+            snprintf(nm, sizeof nm, "%s%c", names[j], s ? 'R' : 'L');
+            name_dof(m, b0 + j, nm);
+        }
+        m->mass[b0 + 0] = m1 / mn;
+        m->mass[b0 + 1] = m1 / mn;
+        m->mass[b0 + 2] = m2 / mn;
+        m->mass[b0 + 3] = m2 / mn;
+        m->mass[b0 + 4] = 1.0;
+        m->F0[b0 + 4] = m->static_load_n * b->fscale;
+        bta_mesh(c, m, b, s, b0, &nclr);
+        bta_supports(c, m, b, s, b0, &nclr);
+    }
+    /* groove shafts couple the axial motion of the two halves of each body */
+    spring(m, 1, 6, k1s / km, 2.0 * zsh * sqrt(k1s * m1 / 2.0) * cscale);
+    spring(m, 3, 8, k2s / km, 2.0 * zsh * sqrt(k2s * m2 / 2.0) * cscale);
+    m->nclear = nclr;
+}
+
+GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
+{
+    memset(m, 0, sizeof *m);
+    gd_geometry g;
+    gd_status st = gd_geometry_compute(c, &g, err);
+    if (st != GD_OK)
+        return st;
+    if (c->model == GD_MODEL_TORSIONAL && c->half_phase_deg != 0.0)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with model torsional (valid: 0, "
+                            "the torsional model has one mesh; use torsional-lr)", c->path, c->half_phase_deg);
+    build_scales b;
+    model_scales(c, &g, m, &b);
+    model_excitations(c, m);
+    if (c->model == GD_MODEL_TORSIONAL)
+        build_torsional(c, m, &b);
+    else if (c->model == GD_MODEL_TORSIONAL_LR)
+        build_torsional_lr(c, m, &b);
+    else
+        build_bta(c, m, &b);
     m->n = 2 * m->ndof;
     interleave_rows(m->K0, m->nk);
     interleave_rows(m->C0, m->nc);
     for (int i = 0; i < m->ndof; i++)
         m->inv_mass[i] = 1.0 / m->mass[i];
-    m->dte_scale = cb;
+    m->dte_scale = b.cb;
     m->force_share = c->model == GD_MODEL_TORSIONAL ? 0.5 : 1.0;
     return gd_model_apply_ltca(c, m, err);
 }
 
-GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
+/* The LTCA excitation x applied to m; x is only read here (gd_model_set_stiffness_table keeps the
+ * Fourier coefficients of the samples, gd_model_set_impact scalars). */
+static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_excitation *x, gd_error *err)
 {
-    if (c->stiffness != GD_STIFF_LTCA && !c->impact)
-        return GD_OK;
-    const gd_ltca_excitation *x;
-    gd_status st = gd_ltca_excitation_cached(c, &x, err);
-    if (st != GD_OK)
-        return st;
+    gd_status st = GD_OK;
     int two = x->halves > 1 && x->k[1] != NULL;
     if (c->stiffness == GD_STIFF_LTCA) {
         double *buf = malloc(sizeof(double) * (size_t)x->npos);
@@ -292,4 +342,17 @@ GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *er
         }
     }
     return GD_OK;
+}
+
+GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
+{
+    if (c->stiffness != GD_STIFF_LTCA && !c->impact)
+        return GD_OK;
+    const gd_ltca_excitation *x;
+    gd_status st = gd_ltca_excitation_cached(c, &x, err);
+    if (st != GD_OK)
+        return st;
+    st = apply_excitation(c, m, x, err);
+    gd_ltca_excitation_release(x); /* the model keeps no pointer into x */
+    return st;
 }

@@ -11,29 +11,34 @@
 #include <stdio.h>
 #include <string.h>
 
-GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
+/* The geometry of the pair (g), refused with the key to blame, and the bores inside the roots. */
+static gd_status resolve_geometry(gd_case *c, gd_geometry *g, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    /* geometry and what follows from it */
-    gd_geometry g;
-    gd_status st = gd_geometry_compute(c, &g, err);
+    gd_status st = gd_geometry_compute(c, g, err);
     if (st != GD_OK) {
-        if (st == GD_ERR_GEOMETRY && g.bad_key) {
-            gd_case_key_where(c, "gear", g.bad_key, w, sizeof w);
-            return gd_error_prefix(err, "%s: gear.%s", w, g.bad_key);
+        if (st == GD_ERR_GEOMETRY && g->bad_key) {
+            gd_case_key_where(c, "gear", g->bad_key, w, sizeof w);
+            return gd_error_prefix(err, "%s: gear.%s", w, g->bad_key);
         }
         return gd_error_prefix(err, "%s: [gear]", c->path[0] ? c->path : "case");
     }
     for (int i = 0; i < 2; i++) {
         double bore = i == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm;
-        if (bore * 0.5e-3 >= g.rf[i]) {
+        if (bore * 0.5e-3 >= g->rf[i]) {
             const char *k = i == 0 ? "bore_diameter_pinion_mm" : "bore_diameter_gear_mm";
             gd_case_key_where(c, "gear", k, w, sizeof w);
             return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.%s: bore %g mm does not fit inside the root circle "
-                                "(valid: below %.4g mm)", w, k, bore, 2e3 * g.rf[i]);
+                                "(valid: below %.4g mm)", w, k, bore, 2e3 * g->rf[i]);
         }
     }
-    /* arrangement, [modification] on the pinion flank, [misalignment] (docs/geometry.md) */
+    return GD_OK;
+}
+
+/* Arrangement, [modification] on the pinion flank, [misalignment] (docs/geometry.md). */
+static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
     if (c->arrangement == GD_ARR_SPUR && c->helix_angle_deg != 0) {
         gd_case_key_where(c, "gear", "helix_angle_deg", w, sizeof w);
         return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.helix_angle_deg: %g with arrangement = spur (valid: 0)", w,
@@ -52,64 +57,87 @@ GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
         }
     }
     const char *mkey = NULL;
-    if (gd_modification_check(c, &g, &mkey, err) != GD_OK) {
+    if (gd_modification_check(c, g, &mkey, err) != GD_OK) {
         gd_case_key_where(c, "modification", mkey, w, sizeof w);
         return gd_error_prefix(err, "%s: modification.%s", w, mkey);
     }
-    {
-        double sb = g.rb[0] + g.rb[1], aop = g.a + c->centre_distance_error_mm * 1e-3;
-        double ea = (g.rho_a[0] + g.rho_a[1] - sqrt(aop * aop - sb * sb)) / g.pbt;
-        if (ea < 1.0) {
-            double amax = sqrt(sb * sb + pow(g.rho_a[0] + g.rho_a[1] - g.pbt, 2));
-            gd_case_key_where(c, "misalignment", "centre_distance_error_mm", w, sizeof w);
-            return gd_error_set(err, GD_ERR_GEOMETRY, "%s: misalignment.centre_distance_error_mm: transverse contact ratio "
-                                "%.4f below 1 at the operating centre distance %.6g mm (valid: below %.4g mm)", w, ea,
-                                aop * 1e3, (amax - g.a) * 1e3);
-        }
+    double sb = g->rb[0] + g->rb[1], aop = g->a + c->centre_distance_error_mm * 1e-3;
+    double ea = (g->rho_a[0] + g->rho_a[1] - sqrt(aop * aop - sb * sb)) / g->pbt;
+    if (ea < 1.0) {
+        double amax = sqrt(sb * sb + pow(g->rho_a[0] + g->rho_a[1] - g->pbt, 2));
+        gd_case_key_where(c, "misalignment", "centre_distance_error_mm", w, sizeof w);
+        return gd_error_set(err, GD_ERR_GEOMETRY, "%s: misalignment.centre_distance_error_mm: transverse contact ratio "
+                            "%.4f below 1 at the operating centre distance %.6g mm (valid: below %.4g mm)", w, ea,
+                            aop * 1e3, (amax - g->a) * 1e3);
     }
+    return GD_OK;
+}
+
+/* The masses and inertias of the bodies and the equivalent mass, unless given. */
+static void resolve_bodies(gd_case *c, const gd_geometry *g)
+{
     double m1, i1, m2, i2;
-    gd_body_half(c, &g, 0, &m1, &i1);
-    gd_body_half(c, &g, 1, &m2, &i2);
+    gd_body_half(c, g, 0, &m1, &i1);
+    gd_body_half(c, g, 1, &m2, &i2);
     gd_case_key_derive(c, "gear", "pinion_mass_kg", &c->pinion_mass_kg, m1);
     gd_case_key_derive(c, "gear", "gear_mass_kg", &c->gear_mass_kg, m2);
     gd_case_key_derive(c, "gear", "pinion_inertia_kgm2", &c->pinion_inertia_kgm2, i1);
     gd_case_key_derive(c, "gear", "gear_inertia_kgm2", &c->gear_inertia_kgm2, i2);
     double I1 = c->pinion_inertia_kgm2, I2 = c->gear_inertia_kgm2;
     gd_case_key_derive(c, "gear", "equivalent_mass_kg", &c->equivalent_mass_kg,
-           I1 * I2 / (I1 * g.rb[1] * g.rb[1] + I2 * g.rb[0] * g.rb[0]));
+           I1 * I2 / (I1 * g->rb[1] * g->rb[1] + I2 * g->rb[0] * g->rb[0]));
+}
+
+/* The LTCA excitation (stiffness = ltca, or the mesh-in impact): it needs a load; with
+ * stiffness = ltca its mean stiffness is the mesh stiffness. */
+static gd_status resolve_ltca(gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    const char *k = c->stiffness == GD_STIFF_LTCA ? "stiffness" : "impact";
+    if (!(c->torque_nm > 0)) {
+        gd_case_key_where(c, "excitation", k, w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: LTCA needs a load, the torque is %g N m "
+                            "(valid: operating.torque_nm > 0)", w, k, c->torque_nm);
+    }
+    if (c->stiffness == GD_STIFF_LTCA && c->half_phase_deg != 0.0) {
+        gd_case_key_where(c, "excitation", "half_phase_deg", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with stiffness = ltca (valid: 0; "
+                            "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
+    }
+    const gd_ltca_excitation *x;
+    gd_status sx = gd_ltca_excitation_cached(c, &x, err);
+    if (sx != GD_OK)
+        return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
+    if (c->stiffness == GD_STIFF_LTCA)
+        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m,
+               x->halves > 1 && x->k[1] ? 0.5 * (x->k_mean[0] + x->k_mean[1]) : x->k_mean[0]);
+    gd_ltca_excitation_release(x);
+    return GD_OK;
+}
+
+/* The stiffnesses, unless given: mesh (LTCA or ISO 6336), groove shafts, and the high
+ * fraction of the rectangular stiffness, which must leave the low level positive. */
+static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *err)
+{
     if (c->stiffness == GD_STIFF_LTCA || c->impact) {
-        const char *k = c->stiffness == GD_STIFF_LTCA ? "stiffness" : "impact";
-        if (!(c->torque_nm > 0)) {
-            gd_case_key_where(c, "excitation", k, w, sizeof w);
-            return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: LTCA needs a load, the torque is %g N m "
-                                "(valid: operating.torque_nm > 0)", w, k, c->torque_nm);
-        }
-        if (c->stiffness == GD_STIFF_LTCA && c->half_phase_deg != 0.0) {
-            gd_case_key_where(c, "excitation", "half_phase_deg", w, sizeof w);
-            return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with stiffness = ltca (valid: 0; "
-                                "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
-        }
-        const gd_ltca_excitation *x;
-        gd_status sx = gd_ltca_excitation_cached(c, &x, err);
-        if (sx != GD_OK)
-            return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
-        if (c->stiffness == GD_STIFF_LTCA)
-            gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m,
-                   x->halves > 1 && x->k[1] ? 0.5 * (x->k_mean[0] + x->k_mean[1]) : x->k_mean[0]);
+        gd_status st = resolve_ltca(c, err);
+        if (st != GD_OK)
+            return st;
     }
     if (c->stiffness != GD_STIFF_LTCA)
-        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, &g));
+        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, g));
     gd_case_key_derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
-           gd_groove_shaft_stiffness(c, &g, 0));
+           gd_groove_shaft_stiffness(c, g, 0));
     gd_case_key_derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,
-           gd_groove_shaft_stiffness(c, &g, 1));
-    double frac = g.eps_alpha - floor(g.eps_alpha);
+           gd_groove_shaft_stiffness(c, g, 1));
+    double frac = g->eps_alpha - floor(g->eps_alpha);
     if (frac < 0.02 || frac > 0.98)
         frac = 0.5;
     gd_case_key_derive(c, "excitation", "rectangular_high_fraction", &c->rectangular_high_fraction, frac);
     if (c->stiffness == GD_STIFF_RECTANGULAR) {
         double d = c->rectangular_high_fraction;
         if (c->rectangular_variation * d / (1 - d) >= 1.0) {
+            char w[GD_PATH_MAX + 32];
             gd_case_key_where(c, "excitation", "rectangular_variation", w, sizeof w);
             return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.rectangular_variation: %g with high fraction %g "
                                 "makes the low level negative (valid: below %g)", w, c->rectangular_variation, d,
@@ -117,4 +145,16 @@ GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
         }
     }
     return GD_OK;
+}
+
+GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
+{
+    gd_geometry g;
+    gd_status st = resolve_geometry(c, &g, err);
+    if (st == GD_OK)
+        st = resolve_flank(c, &g, err);
+    if (st != GD_OK)
+        return st;
+    resolve_bodies(c, &g);
+    return resolve_stiffness(c, &g, err);
 }
