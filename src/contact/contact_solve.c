@@ -1,7 +1,8 @@
 /* The loaded contact problem (Eq. 11 of the paper) as a strictly convex QP, solved by a primal
  * active-set method in the manner of Lawson & Hanson's NNLS, extended to equality constraints
  * (C. L. Lawson, R. J. Hanson, Solving Least Squares Problems, 1974, ch. 23). */
-#include "geardyn/gd_contact.h"
+#include "contact_internal.h"
+#include "../core/gsl_quiet.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
@@ -21,6 +22,7 @@ struct gd_contact_workspace {
 
 GD_API gd_status gd_contact_workspace_alloc(int nmax, int m, gd_contact_workspace **out, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     *out = NULL;
     if (nmax < 1 || m < 1 || m > GD_CONTACT_MAX_FREEDOMS)
         return gd_error_set(err, GD_ERR_INPUT, "contact workspace: %d points, %d freedoms (valid: >= 1, 1 to %d)",
@@ -134,142 +136,138 @@ static int rebuild_free(gd_contact_workspace *ws, int n)
     return k;
 }
 
-GD_API gd_status gd_contact_solve(const gd_contact_problem *pb, const unsigned char *loaded_hint,
-                                  gd_contact_workspace *ws, gd_contact_solution *sol, gd_error *err)
+int contact_cold_start(const gd_contact_problem *pb, unsigned char *in_free)
 {
     int n = pb->n, m = pb->m;
-    if (n < 1 || n > ws->nmax || m != ws->m)
-        return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: problem %dx%d for a workspace %dx%d", n, m,
-                            ws->nmax, ws->m);
-    double *p = sol->p, *d = sol->d, z[GD_CONTACT_MAX_FREEDOMS] = {0};
-    double wmax = 0;
-    for (int i = 0; i < n; i++) {
-        if (!isfinite(pb->w[i]))
-            return gd_error_set(err, GD_ERR_INPUT, "contact solve: gap %d is not finite", i);
-        wmax = fmax(wmax, fabs(pb->w[i]));
+    memset(in_free, 0, (size_t)n);
+    double basis[GD_CONTACT_MAX_FREEDOMS][GD_CONTACT_MAX_FREEDOMS];
+    int nb = 0;
+    while (nb < m) {
+        int best = -1;
+        double bestv[GD_CONTACT_MAX_FREEDOMS];
+        for (int i = 0; i < n; i++) {
+            if (in_free[i] || (best >= 0 && pb->w[i] >= pb->w[best]))
+                continue;
+            double v[GD_CONTACT_MAX_FREEDOMS], nrm0 = 0, nrm = 0;
+            for (int c = 0; c < m; c++) {
+                v[c] = pb->G[(size_t)i * (size_t)m + (size_t)c];
+                nrm0 += v[c] * v[c];
+            }
+            for (int b = 0; b < nb; b++) { /* Gram-Schmidt against the rows taken */
+                double dot = 0;
+                for (int c = 0; c < m; c++)
+                    dot += v[c] * basis[b][c];
+                for (int c = 0; c < m; c++)
+                    v[c] -= dot * basis[b][c];
+            }
+            for (int c = 0; c < m; c++)
+                nrm += v[c] * v[c];
+            if (nrm > 1e-20 * nrm0 && nrm0 > 0) {
+                best = i;
+                for (int c = 0; c < m; c++)
+                    bestv[c] = v[c] / sqrt(nrm);
+            }
+        }
+        if (best < 0)
+            break;
+        in_free[best] = 1;
+        memcpy(basis[nb++], bestv, sizeof bestv);
     }
-    /* a feasible start (every load positive, equilibrium met): the hint, else one least-gap point
-     * per freedom */
+    return nb;
+}
+
+/* 1 when every load of the free set is positive. */
+static int free_loads_positive(const gd_contact_workspace *ws, int k)
+{
+    int ok = 1;
+    for (int a = 0; a < k; a++)
+        if (!(ws->q[ws->free_idx[a]] > 0))
+            ok = 0;
+    return ok;
+}
+
+/* A feasible start (every load positive, equilibrium met): the hint, else one least-gap point
+ * per freedom. */
+static gd_status find_start(const gd_contact_problem *pb, const unsigned char *loaded_hint,
+                            gd_contact_workspace *ws, double *z, gd_error *err)
+{
+    int n = pb->n, m = pb->m;
     int k = 0, ok = 0;
     memset(ws->in_free, 0, (size_t)n);
     if (loaded_hint) {
         for (int i = 0; i < n; i++)
             ws->in_free[i] = loaded_hint[i] != 0;
         k = rebuild_free(ws, n);
-        if (k > 0 && solve_free(pb, ws, k, z) == 0) {
-            ok = 1;
-            for (int a = 0; a < k; a++)
-                if (!(ws->q[ws->free_idx[a]] > 0))
-                    ok = 0;
-        }
+        if (k > 0 && solve_free(pb, ws, k, z) == 0)
+            ok = free_loads_positive(ws, k);
     }
     if (!ok) {
         /* the least-gap points that make G_F^T regular, one per freedom: with as many points as
          * freedoms the loads follow from equilibrium alone */
-        memset(ws->in_free, 0, (size_t)n);
-        double basis[GD_CONTACT_MAX_FREEDOMS][GD_CONTACT_MAX_FREEDOMS];
-        int nb = 0;
-        while (nb < m) {
-            int best = -1;
-            double bestv[GD_CONTACT_MAX_FREEDOMS];
-            for (int i = 0; i < n; i++) {
-                if (ws->in_free[i] || (best >= 0 && pb->w[i] >= pb->w[best]))
-                    continue;
-                double v[GD_CONTACT_MAX_FREEDOMS], nrm0 = 0, nrm = 0;
-                for (int c = 0; c < m; c++) {
-                    v[c] = pb->G[(size_t)i * (size_t)m + (size_t)c];
-                    nrm0 += v[c] * v[c];
-                }
-                for (int b = 0; b < nb; b++) { /* Gram-Schmidt against the rows taken */
-                    double dot = 0;
-                    for (int c = 0; c < m; c++)
-                        dot += v[c] * basis[b][c];
-                    for (int c = 0; c < m; c++)
-                        v[c] -= dot * basis[b][c];
-                }
-                for (int c = 0; c < m; c++)
-                    nrm += v[c] * v[c];
-                if (nrm > 1e-20 * nrm0 && nrm0 > 0) {
-                    best = i;
-                    for (int c = 0; c < m; c++)
-                        bestv[c] = v[c] / sqrt(nrm);
-                }
-            }
-            if (best < 0)
-                break;
-            ws->in_free[best] = 1;
-            memcpy(basis[nb++], bestv, sizeof bestv);
-        }
+        int nb = contact_cold_start(pb, ws->in_free);
         k = rebuild_free(ws, n);
-        if (nb == m && solve_free(pb, ws, k, z) == 0) {
-            ok = 1;
-            for (int a = 0; a < k; a++)
-                if (!(ws->q[ws->free_idx[a]] > 0))
-                    ok = 0;
-        }
+        if (nb == m && solve_free(pb, ws, k, z) == 0)
+            ok = free_loads_positive(ws, k);
     }
     if (!ok)
         return gd_error_set(err, GD_ERR_PHYSICS, "contact solve: no loaded set carries the load without tension "
                             "(%d points, %d freedoms): the flanks cannot transmit it", n, m);
-    memcpy(p, ws->q, sizeof(double) * (size_t)n);
-    int it = 0, maxit = 10 * n + 50;
-    double tol;
+    return GD_OK;
+}
+
+/* Point j has joined the loaded set: solve on the set; when a load is not positive move towards
+ * the solution up to the first load that reaches zero, unload the points that did, and again. */
+static gd_status enter_point(const gd_contact_problem *pb, gd_contact_workspace *ws, double *p, double *z, int *it,
+                             int maxit, gd_error *err)
+{
+    int n = pb->n;
     for (;;) {
-        gaps(pb, p, z, ws->Lp, d);
-        double lmax = 0;
-        for (int i = 0; i < n; i++)
-            lmax = fmax(lmax, fabs(ws->Lp[i]));
-        tol = 1e-12 * (wmax + lmax);
-        /* the most penetrating unloaded point joins the loaded set */
-        int j = -1;
-        for (int i = 0; i < n; i++)
-            if (!ws->in_free[i] && d[i] < -tol && (j < 0 || d[i] < d[j]))
-                j = i;
-        if (j < 0)
-            break;
-        if (++it > maxit)
-            return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: no convergence in %d iterations", maxit);
-        ws->in_free[j] = 1;
-        for (;;) {
-            k = rebuild_free(ws, n);
-            if (solve_free(pb, ws, k, z) != 0)
-                return gd_error_set(err, GD_ERR_PHYSICS, "contact solve: singular loaded set (%d points)", k);
-            /* feasible: accept; else move towards it up to the first load that reaches zero,
-             * and unload the points that did */
-            double alpha = 1.0;
-            int any = 0, jhit = -1;
-            for (int a = 0; a < k; a++) {
-                int i = ws->free_idx[a];
-                if (ws->q[i] <= 0) {
-                    any = 1;
-                    double t = p[i] / (p[i] - ws->q[i]);
-                    if (t < alpha || jhit < 0) {
-                        alpha = t < alpha ? t : alpha;
-                        jhit = t <= alpha ? i : jhit;
-                    }
+        int k = rebuild_free(ws, n);
+        if (solve_free(pb, ws, k, z) != 0)
+            return gd_error_set(err, GD_ERR_PHYSICS, "contact solve: singular loaded set (%d points)", k);
+        /* feasible: accept; else move towards it up to the first load that reaches zero,
+         * and unload the points that did */
+        double alpha = 1.0;
+        int any = 0, jhit = -1;
+        for (int a = 0; a < k; a++) {
+            int i = ws->free_idx[a];
+            if (ws->q[i] <= 0) {
+                any = 1;
+                double t = p[i] / (p[i] - ws->q[i]);
+                if (t < alpha || jhit < 0) {
+                    alpha = t < alpha ? t : alpha;
+                    jhit = t <= alpha ? i : jhit;
                 }
             }
-            if (!any) {
-                memcpy(p, ws->q, sizeof(double) * (size_t)n);
-                break;
-            }
-            double pmax = 0;
-            for (int i = 0; i < n; i++) {
-                p[i] += alpha * (ws->q[i] - p[i]);
-                pmax = fmax(pmax, fabs(p[i]));
-            }
-            if (jhit >= 0)
-                p[jhit] = 0.0;
-            for (int i = 0; i < n; i++)
-                if (ws->in_free[i] && p[i] <= 1e-14 * pmax) {
-                    p[i] = 0;
-                    ws->in_free[i] = 0;
-                }
-            if (++it > maxit)
-                return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: no convergence in %d iterations", maxit);
         }
+        if (!any) {
+            memcpy(p, ws->q, sizeof(double) * (size_t)n);
+            break;
+        }
+        double pmax = 0;
+        for (int i = 0; i < n; i++) {
+            p[i] += alpha * (ws->q[i] - p[i]);
+            pmax = fmax(pmax, fabs(p[i]));
+        }
+        if (jhit >= 0)
+            p[jhit] = 0.0;
+        for (int i = 0; i < n; i++)
+            if (ws->in_free[i] && p[i] <= 1e-14 * pmax) {
+                p[i] = 0;
+                ws->in_free[i] = 0;
+            }
+        if (++*it > maxit)
+            return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: no convergence in %d iterations", maxit);
     }
-    /* report */
+    return GD_OK;
+}
+
+/* The report: loads off the set zeroed, loaded count and residual. */
+static void report_solution(const gd_contact_problem *pb, const gd_contact_workspace *ws, double wmax,
+                            const double *z, int it, gd_contact_solution *sol)
+{
+    int n = pb->n, m = pb->m;
+    double *p = sol->p, *d = sol->d;
     double res = 0;
     int loaded = 0;
     for (int i = 0; i < n; i++) {
@@ -294,5 +292,49 @@ GD_API gd_status gd_contact_solve(const gd_contact_problem *pb, const unsigned c
     sol->loaded = loaded;
     sol->iterations = it;
     sol->residual = res;
+}
+
+GD_API gd_status gd_contact_solve(const gd_contact_problem *pb, const unsigned char *loaded_hint,
+                                  gd_contact_workspace *ws, gd_contact_solution *sol, gd_error *err)
+{
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
+    int n = pb->n, m = pb->m;
+    if (n < 1 || n > ws->nmax || m != ws->m)
+        return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: problem %dx%d for a workspace %dx%d", n, m,
+                            ws->nmax, ws->m);
+    double *p = sol->p, *d = sol->d, z[GD_CONTACT_MAX_FREEDOMS] = {0};
+    double wmax = 0;
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(pb->w[i]))
+            return gd_error_set(err, GD_ERR_INPUT, "contact solve: gap %d is not finite", i);
+        wmax = fmax(wmax, fabs(pb->w[i]));
+    }
+    gd_status st = find_start(pb, loaded_hint, ws, z, err);
+    if (st != GD_OK)
+        return st;
+    memcpy(p, ws->q, sizeof(double) * (size_t)n);
+    int it = 0, maxit = 10 * n + 50;
+    double tol;
+    for (;;) {
+        gaps(pb, p, z, ws->Lp, d);
+        double lmax = 0;
+        for (int i = 0; i < n; i++)
+            lmax = fmax(lmax, fabs(ws->Lp[i]));
+        tol = 1e-12 * (wmax + lmax);
+        /* the most penetrating unloaded point joins the loaded set */
+        int j = -1;
+        for (int i = 0; i < n; i++)
+            if (!ws->in_free[i] && d[i] < -tol && (j < 0 || d[i] < d[j]))
+                j = i;
+        if (j < 0)
+            break;
+        if (++it > maxit)
+            return gd_error_set(err, GD_ERR_INTERNAL, "contact solve: no convergence in %d iterations", maxit);
+        ws->in_free[j] = 1;
+        st = enter_point(pb, ws, p, z, &it, maxit, err);
+        if (st != GD_OK)
+            return st;
+    }
+    report_solution(pb, ws, wmax, z, it, sol);
     return GD_OK;
 }

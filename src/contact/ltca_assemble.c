@@ -215,8 +215,6 @@ static gd_status reserve(gd_ltca *w, int n, gd_error *err)
     return GD_OK;
 }
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-
 /* Largest principal curvature of the relative curvature tensor K1 + K2 in the tangent plane:
  * the curvature across the contact line (both flanks convex). */
 static double relative_curvature(const gd_tca_line_point *lp)
@@ -228,11 +226,11 @@ static double relative_curvature(const gd_tca_line_point *lp)
     e2[2] = lp->normal[0] * e1[1] - lp->normal[1] * e1[0];
     double M[3] = {0, 0, 0}; /* 11, 12, 22 */
     for (int a = 0; a < 2; a++) {
-        double p1 = dot3(lp->dir1[a], e1), p2 = dot3(lp->dir1[a], e2);
+        double p1 = tca_dot3(lp->dir1[a], e1), p2 = tca_dot3(lp->dir1[a], e2);
         M[0] += lp->k1[a] * p1 * p1;
         M[1] += lp->k1[a] * p1 * p2;
         M[2] += lp->k1[a] * p2 * p2;
-        double q1 = dot3(lp->dir2[a], e1), q2 = dot3(lp->dir2[a], e2);
+        double q1 = tca_dot3(lp->dir2[a], e1), q2 = tca_dot3(lp->dir2[a], e2);
         M[0] += lp->k2[a] * q1 * q1;
         M[1] += lp->k2[a] * q1 * q2;
         M[2] += lp->k2[a] * q2 * q2;

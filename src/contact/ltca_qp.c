@@ -8,6 +8,7 @@
  * A warm start whose loads are not all positive is pruned (its non-positive loads dropped and the
  * subspace problem solved again) instead of being thrown away. Convergence criterion and report
  * as gd_contact_solve (gd_contact.h); the tests check both solvers give the same loads. */
+#include "contact_internal.h"
 #include "ltca_internal.h"
 
 #include <math.h>
@@ -247,8 +248,9 @@ int ltca_qp_start(const gd_contact_problem *pb, unsigned char *loaded)
     return 1;
 }
 
-gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
-                        const unsigned char *hint, gd_contact_solution *sol, gd_error *err)
+/* Sizes of the problem against the workspace, and the gaps finite; *wmax the largest |gap|. */
+static gd_status check_problem(const ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
+                               double *wmax, gd_error *err)
 {
     int n = pb->n, m = pb->m;
     if (n < 1 || n > q->nmax || m != q->m)
@@ -258,91 +260,146 @@ gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const 
         if (bstart[b + 1] - bstart[b] > q->bmax)
             return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: block of %d points (at most %d)",
                                 bstart[b + 1] - bstart[b], q->bmax);
-    double *p = sol->p, *d = sol->d, z[GD_CONTACT_MAX_FREEDOMS] = {0};
-    double wmax = 0;
+    *wmax = 0;
     for (int i = 0; i < n; i++) {
         if (!isfinite(pb->w[i]))
             return gd_error_set(err, GD_ERR_INPUT, "LTCA solver: gap %d is not finite", i);
-        wmax = fmax(wmax, fabs(pb->w[i]));
+        *wmax = fmax(*wmax, fabs(pb->w[i]));
     }
-    int ok = 0, rc;
-    /* warm start: the hint, pruned of the loads that turn non-positive */
-    if (hint) {
-        for (int i = 0; i < n; i++)
-            q->in_free[i] = hint[i] != 0;
-        for (int round = 0; round < 50; round++) {
-            rc = solve_free(q, pb, nb, bstart, z);
-            if (rc == 2)
-                return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: a block of the flexibility matrix is not "
-                                    "positive definite");
-            if (rc)
-                break;
-            if (all_positive(q, n)) {
-                ok = 1;
-                break;
-            }
-            for (int i = 0; i < n; i++)
-                if (q->in_free[i] && !(q->q[i] > 0))
-                    q->in_free[i] = 0;
-        }
-    }
-    if (!ok && m == 2 && ltca_qp_start(pb, q->in_free)) {
-        rc = solve_free(q, pb, nb, bstart, z);
+    return GD_OK;
+}
+
+static gd_status not_positive_definite(gd_error *err)
+{
+    return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: a block of the flexibility matrix is not "
+                        "positive definite");
+}
+
+/* Warm start: the hint, pruned of the loads that turn non-positive. */
+static gd_status start_warm(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
+                            const unsigned char *hint, double *z, int *ok, gd_error *err)
+{
+    int n = pb->n;
+    for (int i = 0; i < n; i++)
+        q->in_free[i] = hint[i] != 0;
+    for (int round = 0; round < 50; round++) {
+        int rc = solve_free(q, pb, nb, bstart, z);
         if (rc == 2)
-            return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: a block of the flexibility matrix is not "
-                                "positive definite");
+            return not_positive_definite(err);
+        if (rc)
+            break;
+        if (all_positive(q, n)) {
+            *ok = 1;
+            break;
+        }
+        for (int i = 0; i < n; i++)
+            if (q->in_free[i] && !(q->q[i] > 0))
+                q->in_free[i] = 0;
+    }
+    return GD_OK;
+}
+
+/* Cold start: the least-gap points whose rows of G are independent, one per freedom. */
+static gd_status start_cold(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart, double *z, int *ok,
+                            gd_error *err)
+{
+    int n = pb->n, m = pb->m;
+    int nbas = contact_cold_start(pb, q->in_free);
+    if (nbas == m) {
+        int rc = solve_free(q, pb, nb, bstart, z);
+        if (rc == 2)
+            return not_positive_definite(err);
+        *ok = rc == 0 && all_positive(q, n);
+    }
+    return GD_OK;
+}
+
+/* A feasible loaded set to start from: the warm start, the two-point start, or the cold start. */
+static gd_status find_start(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
+                            const unsigned char *hint, double *z, gd_error *err)
+{
+    int n = pb->n, m = pb->m;
+    int ok = 0;
+    gd_status st;
+    if (hint && (st = start_warm(q, pb, nb, bstart, hint, z, &ok, err)) != GD_OK)
+        return st;
+    if (!ok && m == 2 && ltca_qp_start(pb, q->in_free)) {
+        int rc = solve_free(q, pb, nb, bstart, z);
+        if (rc == 2)
+            return not_positive_definite(err);
         ok = rc == 0 && all_positive(q, n);
     }
-    if (!ok) {
-        /* cold start: the least-gap points whose rows of G are independent, one per freedom */
-        memset(q->in_free, 0, (size_t)n);
-        double basis[GD_CONTACT_MAX_FREEDOMS][GD_CONTACT_MAX_FREEDOMS];
-        int nbas = 0;
-        while (nbas < m) {
-            int best = -1;
-            double bestv[GD_CONTACT_MAX_FREEDOMS];
-            for (int i = 0; i < n; i++) {
-                if (q->in_free[i] || (best >= 0 && pb->w[i] >= pb->w[best]))
-                    continue;
-                double v[GD_CONTACT_MAX_FREEDOMS], nrm0 = 0, nrm = 0;
-                for (int c = 0; c < m; c++) {
-                    v[c] = pb->G[(size_t)i * (size_t)m + (size_t)c];
-                    nrm0 += v[c] * v[c];
-                }
-                for (int b = 0; b < nbas; b++) {
-                    double dot = 0;
-                    for (int c = 0; c < m; c++)
-                        dot += v[c] * basis[b][c];
-                    for (int c = 0; c < m; c++)
-                        v[c] -= dot * basis[b][c];
-                }
-                for (int c = 0; c < m; c++)
-                    nrm += v[c] * v[c];
-                if (nrm > 1e-20 * nrm0 && nrm0 > 0) {
-                    best = i;
-                    for (int c = 0; c < m; c++)
-                        bestv[c] = v[c] / sqrt(nrm);
-                }
-            }
-            if (best < 0)
-                break;
-            q->in_free[best] = 1;
-            memcpy(basis[nbas++], bestv, sizeof bestv);
-        }
-        if (nbas == m) {
-            rc = solve_free(q, pb, nb, bstart, z);
-            if (rc == 2)
-                return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: a block of the flexibility matrix is not "
-                                    "positive definite");
-            ok = rc == 0 && all_positive(q, n);
-        }
-    }
+    if (!ok && (st = start_cold(q, pb, nb, bstart, z, &ok, err)) != GD_OK)
+        return st;
     if (!ok)
         return gd_error_set(err, GD_ERR_PHYSICS, "LTCA solver: no loaded set carries the load without tension "
                             "(%d points, %d freedoms): the flanks cannot transmit it", n, m);
-    memcpy(p, q->q, sizeof(double) * (size_t)n);
-    memset(q->tabu, 0, (size_t)n);
-    int it = 0, maxit = 10 * n + 50;
+    return GD_OK;
+}
+
+/* Point j enters the loaded set: solve on the set, stepping back towards the previous loads and
+ * dropping the point that reaches zero first until all loads are positive. */
+static gd_status enter_point(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart, int j, double *p,
+                             double *z, int *it, int maxit, gd_error *err)
+{
+    int n = pb->n;
+    q->in_free[j] = 1;
+    for (int first = 1;; first = 0) {
+        int rc = solve_free(q, pb, nb, bstart, z);
+        if (rc)
+            return gd_error_set(err, rc == 2 ? GD_ERR_INTERNAL : GD_ERR_PHYSICS,
+                                "LTCA solver: %s loaded set", rc == 2 ? "indefinite block in the" : "singular");
+        double alpha = 1.0;
+        int anyneg = 0, jhit = -1;
+        for (int i = 0; i < n; i++) {
+            if (!q->in_free[i] || q->q[i] > 0)
+                continue;
+            anyneg = 1;
+            double t = p[i] / (p[i] - q->q[i]);
+            if (jhit < 0 || t < alpha) {
+                alpha = fmin(t, alpha);
+                jhit = i;
+            }
+        }
+        if (!anyneg) {
+            memcpy(p, q->q, sizeof(double) * (size_t)n);
+            break;
+        }
+        if (first && jhit == j && !(alpha > 0)) {
+            /* the entering point would take no load: in exact arithmetic the most penetrating
+             * point always takes a positive load (Lawson & Hanson), so its penetration is
+             * rounding; refuse it for the rest of the solve instead of cycling */
+            q->in_free[j] = 0;
+            q->tabu[j] = 1;
+            rc = solve_free(q, pb, nb, bstart, z);
+            if (rc)
+                return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: lost the loaded set");
+            memcpy(p, q->q, sizeof(double) * (size_t)n);
+            break;
+        }
+        double pmax = 0;
+        for (int i = 0; i < n; i++) {
+            p[i] += alpha * (q->q[i] - p[i]);
+            pmax = fmax(pmax, fabs(p[i]));
+        }
+        p[jhit] = 0.0;
+        for (int i = 0; i < n; i++)
+            if (q->in_free[i] && p[i] <= 1e-14 * pmax) {
+                p[i] = 0;
+                q->in_free[i] = 0;
+            }
+        if (++*it > maxit)
+            return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: no convergence in %d iterations", maxit);
+    }
+    return GD_OK;
+}
+
+/* The active-set iterations from the start: the most penetrating free point enters until none
+ * penetrates beyond the tolerance. */
+static gd_status active_set(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart, double wmax,
+                            double *p, double *d, double *z, int *it, gd_error *err)
+{
+    int n = pb->n, maxit = 10 * n + 50;
     for (;;) {
         gaps(pb, nb, bstart, q->in_free, p, z, q->Lp, d);
         double lmax = 0;
@@ -355,57 +412,21 @@ gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const 
                 j = i;
         if (j < 0)
             break;
-        if (++it > maxit)
+        if (++*it > maxit)
             return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: no convergence in %d iterations", maxit);
-        q->in_free[j] = 1;
-        for (int first = 1;; first = 0) {
-            rc = solve_free(q, pb, nb, bstart, z);
-            if (rc)
-                return gd_error_set(err, rc == 2 ? GD_ERR_INTERNAL : GD_ERR_PHYSICS,
-                                    "LTCA solver: %s loaded set", rc == 2 ? "indefinite block in the" : "singular");
-            double alpha = 1.0;
-            int anyneg = 0, jhit = -1;
-            for (int i = 0; i < n; i++) {
-                if (!q->in_free[i] || q->q[i] > 0)
-                    continue;
-                anyneg = 1;
-                double t = p[i] / (p[i] - q->q[i]);
-                if (jhit < 0 || t < alpha) {
-                    alpha = fmin(t, alpha);
-                    jhit = i;
-                }
-            }
-            if (!anyneg) {
-                memcpy(p, q->q, sizeof(double) * (size_t)n);
-                break;
-            }
-            if (first && jhit == j && !(alpha > 0)) {
-                /* the entering point would take no load: in exact arithmetic the most penetrating
-                 * point always takes a positive load (Lawson & Hanson), so its penetration is
-                 * rounding; refuse it for the rest of the solve instead of cycling */
-                q->in_free[j] = 0;
-                q->tabu[j] = 1;
-                rc = solve_free(q, pb, nb, bstart, z);
-                if (rc)
-                    return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: lost the loaded set");
-                memcpy(p, q->q, sizeof(double) * (size_t)n);
-                break;
-            }
-            double pmax = 0;
-            for (int i = 0; i < n; i++) {
-                p[i] += alpha * (q->q[i] - p[i]);
-                pmax = fmax(pmax, fabs(p[i]));
-            }
-            p[jhit] = 0.0;
-            for (int i = 0; i < n; i++)
-                if (q->in_free[i] && p[i] <= 1e-14 * pmax) {
-                    p[i] = 0;
-                    q->in_free[i] = 0;
-                }
-            if (++it > maxit)
-                return gd_error_set(err, GD_ERR_INTERNAL, "LTCA solver: no convergence in %d iterations", maxit);
-        }
+        gd_status st = enter_point(q, pb, nb, bstart, j, p, z, it, maxit, err);
+        if (st != GD_OK)
+            return st;
     }
+    return GD_OK;
+}
+
+/* The report of gd_contact.h: loads off the set zeroed, loaded count and residual. */
+static void report_solution(const ltca_qp *q, const gd_contact_problem *pb, double wmax, const double *z, int it,
+                            gd_contact_solution *sol)
+{
+    int n = pb->n, m = pb->m;
+    double *p = sol->p, *d = sol->d;
     double res = 0;
     int loaded = 0;
     for (int i = 0; i < n; i++) {
@@ -433,5 +454,26 @@ gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const 
     sol->loaded = loaded;
     sol->iterations = it;
     sol->residual = res;
+}
+
+gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
+                        const unsigned char *hint, gd_contact_solution *sol, gd_error *err)
+{
+    double z[GD_CONTACT_MAX_FREEDOMS] = {0};
+    double wmax = 0;
+    gd_status st = check_problem(q, pb, nb, bstart, &wmax, err);
+    if (st != GD_OK)
+        return st;
+    st = find_start(q, pb, nb, bstart, hint, z, err);
+    if (st != GD_OK)
+        return st;
+    int n = pb->n;
+    memcpy(sol->p, q->q, sizeof(double) * (size_t)n);
+    memset(q->tabu, 0, (size_t)n);
+    int it = 0;
+    st = active_set(q, pb, nb, bstart, wmax, sol->p, sol->d, z, &it, err);
+    if (st != GD_OK)
+        return st;
+    report_solution(q, pb, wmax, z, it, sol);
     return GD_OK;
 }

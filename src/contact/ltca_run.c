@@ -3,20 +3,14 @@
  * contact pressure, edge loading; the mesh-in impact of each half; the excitations of the dynamic
  * model and their cache key. */
 #include "ltca_internal.h"
+#include "../core/clock.h"
+#include "../core/hash.h"
 
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define ARCSEC (180.0 * 3600.0 / M_PI)
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 GD_API void gd_ltca_result_free(gd_ltca_result *r)
 {
@@ -118,16 +112,12 @@ static gd_status pair_curve(gd_ltca *w, int half, int pair, double fref, double 
     return st;
 }
 
-static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double torque, gd_ltca_impact *imp,
-                         gd_error *err)
+/* The pair that comes into mesh over the cycle: the position kin where the least loaded pair
+ * label of the half drops (at phi1 + tau every label is one less). *kin_out = -1: no regular entry. */
+static gd_status entry_pair(const gd_ltca_result *r, int half, int *pair, int *kin_out, gd_error *err)
 {
-    memset(imp, 0, sizeof *imp);
-    double nan = NAN;
-    imp->phi1 = imp->phase = imp->rho1 = imp->z1 = imp->offset_loa = imp->vs_per_omega = nan;
-    imp->delta_m = imp->ks = imp->fit_c = imp->fit_n = nan;
-    const gd_tca *t = w->t;
-    const double tau = t->tau1;
     int npos = r->npos;
+    *kin_out = -1;
     /* the least loaded pair label of each position; at phi1 + tau every label is one less */
     int *pmin = malloc(sizeof(int) * (size_t)(npos + 1));
     if (!pmin)
@@ -154,14 +144,21 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
         free(pmin);
         return GD_OK;
     }
-    int pair = pmin[kin];
+    *pair = pmin[kin];
+    *kin_out = kin;
     free(pmin);
-    double a = r->phi1[kin - 1], b = kin < npos ? r->phi1[kin] : tau;
-    gd_ltca_position pos;
+    return GD_OK;
+}
+
+/* The moment the pair touches, bracketed in [*a, *b] (*a: still open, *b: loaded). */
+static gd_status bracket_touch(gd_ltca *w, double tau, int half, int pair, double torque, double *a_io,
+                               double *b_io, gd_ltca_position *pos, gd_error *err)
+{
+    double a = *a_io, b = *b_io;
     entry_eval ea, eb, ec;
-    gd_status st = eval_entry(w, a, torque, half, pair, &pos, &ea, err);
+    gd_status st = eval_entry(w, a, torque, half, pair, pos, &ea, err);
     if (st == GD_OK)
-        st = eval_entry(w, b, torque, half, pair, &pos, &eb, err);
+        st = eval_entry(w, b, torque, half, pair, pos, &eb, err);
     if (st != GD_OK)
         return st;
     if (!(ea.s > 0) || eb.s > 0)
@@ -174,7 +171,7 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
         double c = b - fb * (b - a) / (fb - fa);
         if (!(c > a && c < b))
             c = 0.5 * (a + b);
-        st = eval_entry(w, c, torque, half, pair, &pos, &ec, err);
+        st = eval_entry(w, c, torque, half, pair, pos, &ec, err);
         if (st != GD_OK)
             return st;
         if (ec.s > 0) {
@@ -191,19 +188,16 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
             side = 1;
         }
     }
-    /* the state just before the touch: the mesh-in point is the pair's least deformed gap */
-    st = eval_entry(w, a, torque, half, pair, &pos, &ea, err);
-    if (st != GD_OK)
-        return st;
-    if (ea.imin < 0)
-        return gd_error_set(err, GD_ERR_INTERNAL, "LTCA mesh-in: lost the incoming pair");
-    const gd_ltca_point *P = &w->pts[ea.imin];
-    imp->found = 1;
-    imp->phi1 = fmod(a, tau);
-    if (imp->phi1 < 0)
-        imp->phi1 += tau;
-    imp->phase = imp->phi1 / tau;
-    imp->pair = pair;
+    *a_io = a;
+    *b_io = b;
+    return GD_OK;
+}
+
+/* Where and how the pair meets: the mesh-in point P, the flanks' relative velocity there, its
+ * offset from the ideal plane of action, and the start of active profile. */
+static void impact_geometry(const gd_ltca *w, const gd_ltca_point *P, gd_ltca_impact *imp)
+{
+    const gd_tca *t = w->t;
     memcpy(imp->pos, P->pos, sizeof imp->pos);
     memcpy(imp->normal, P->normal, sizeof imp->normal);
     imp->rho1 = P->rho1;
@@ -227,17 +221,22 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
     imp->offset_loa = X[0] * cos(ang) + X[1] * sin(ang) - w->g.rb[0];
     double aop = t->C[0];
     imp->rho_sap = aop * sin(t->alpha_op) - sqrt(w->g.ra[1] * w->g.ra[1] - w->g.rb[1] * w->g.rb[1]);
-    /* how early the pair meets: the loaded deflection of the half at that moment */
-    imp->delta_m = pos.approach_half[half] - pos.geometric[half];
-    /* k_s: secant stiffness of the incoming pair at delta_m, from its own load-approach curve */
-    enum { NF = 10 };
+}
+
+enum { NF = 10 }; /* solves on the incoming pair's load-approach curve */
+
+/* k_s: secant stiffness of the incoming pair at delta_m, from its own load-approach curve, and the
+ * power law fitted to that curve. */
+static gd_status impact_stiffness(gd_ltca *w, const gd_ltca_result *r, int half, int pair, double torque,
+                                  const gd_ltca_position *pos, gd_ltca_impact *imp, gd_error *err)
+{
     double F[NF], D[NF];
     double pairs = r->pairs_mean[half] > 0 ? r->pairs_mean[half] : 1.0;
-    double fref = 2.0 * pos.load[half] / pairs;
+    double fref = 2.0 * pos->load[half] / pairs;
     if (!(fref > 0))
         fref = gd_ltca_normal_force(w, torque);
     for (int tries = 0; tries < 30; tries++) {
-        st = pair_curve(w, half, pair, fref, F, D, NF, err);
+        gd_status st = pair_curve(w, half, pair, fref, F, D, NF, err);
         if (st != GD_OK)
             return gd_error_prefix(err, "LTCA mesh-in stiffness");
         if (D[0] >= imp->delta_m)
@@ -276,30 +275,48 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
     return GD_OK;
 }
 
-/* ---- the analysis ------------------------------------------------------------------------------ */
-
-GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, gd_ltca_result *r, gd_error *err)
+static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double torque, gd_ltca_impact *imp,
+                         gd_error *err)
 {
-    memset(r, 0, sizeof *r);
-    double t0 = now_s();
-    if (npos <= 0)
-        npos = c->ltca_positions_per_cycle;
-    if (npos < 2)
-        return gd_error_set(err, GD_ERR_INPUT, "LTCA: %d positions per mesh cycle (valid: >= 2)", npos);
-    if (!(c->torque_nm > 0))
-        return gd_error_set(err, GD_ERR_INPUT, "operating.torque_nm: %g N m for LTCA (valid: > 0)", c->torque_nm);
-    gd_ltca *w;
-    gd_status st = gd_ltca_create(c, &w, err);
+    memset(imp, 0, sizeof *imp);
+    double nan = NAN;
+    imp->phi1 = imp->phase = imp->rho1 = imp->z1 = imp->offset_loa = imp->vs_per_omega = nan;
+    imp->delta_m = imp->ks = imp->fit_c = imp->fit_n = nan;
+    const double tau = w->t->tau1;
+    int npos = r->npos;
+    int pair = 0, kin;
+    gd_status st = entry_pair(r, half, &pair, &kin, err);
+    if (st != GD_OK || kin < 0)
+        return st;
+    double a = r->phi1[kin - 1], b = kin < npos ? r->phi1[kin] : tau;
+    gd_ltca_position pos;
+    st = bracket_touch(w, tau, half, pair, torque, &a, &b, &pos, err);
     if (st != GD_OK)
         return st;
-    int H = w->halves;
-    r->halves = H;
-    r->npos = npos;
-    r->nslices = w->nslices;
-    r->floating = w->floating;
-    r->torque_nm = c->torque_nm;
-    r->normal_force_n = gd_ltca_normal_force(w, c->torque_nm);
-    r->cache_key = gd_ltca_cache_key(c, npos);
+    /* the state just before the touch: the mesh-in point is the pair's least deformed gap */
+    entry_eval ea;
+    st = eval_entry(w, a, torque, half, pair, &pos, &ea, err);
+    if (st != GD_OK)
+        return st;
+    if (ea.imin < 0)
+        return gd_error_set(err, GD_ERR_INTERNAL, "LTCA mesh-in: lost the incoming pair");
+    imp->found = 1;
+    imp->phi1 = fmod(a, tau);
+    if (imp->phi1 < 0)
+        imp->phi1 += tau;
+    imp->phase = imp->phi1 / tau;
+    imp->pair = pair;
+    impact_geometry(w, &w->pts[ea.imin], imp);
+    /* how early the pair meets: the loaded deflection of the half at that moment */
+    imp->delta_m = pos.approach_half[half] - pos.geometric[half];
+    return impact_stiffness(w, r, half, pair, torque, &pos, imp, err);
+}
+
+/* ---- the analysis ------------------------------------------------------------------------------ */
+
+/* The arrays of the result for H halves and npos positions; on failure the caller frees r. */
+static gd_status result_alloc(gd_ltca_result *r, int H, int npos, gd_error *err)
+{
     size_t N = (size_t)npos;
     r->phi1 = malloc(N * sizeof *r->phi1);
     r->lte_arcsec = malloc(N * sizeof *r->lte_arcsec);
@@ -317,19 +334,24 @@ GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, g
         ok = r->gte_arcsec[h] && r->lte_half_arcsec[h] && r->load[h] && r->stiffness[h] && r->max_pressure[h] &&
              r->pairs_loaded[h] && r->edge_loaded[h];
     }
-    if (!ok) {
-        st = gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory for %d positions", npos);
-        goto fail;
-    }
+    if (!ok)
+        return gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory for %d positions", npos);
+    return GD_OK;
+}
+
+/* Solve the contact at every position of the cycle, keeping its results and its points. */
+static gd_status sweep_positions(gd_ltca *w, const gd_case *c, gd_ltca_result *r, gd_error *err)
+{
+    const int H = r->halves, npos = r->npos;
     int cap = 0, np = 0;
     const double tau = w->t->tau1;
     r->min_load = INFINITY;
     for (int k = 0; k < npos; k++) {
         double phi1 = tau * k / npos;
         gd_ltca_position pos;
-        st = gd_ltca_solve_at(w, phi1, c->torque_nm, &pos, err);
+        gd_status st = gd_ltca_solve_at(w, phi1, c->torque_nm, &pos, err);
         if (st != GD_OK)
-            goto fail;
+            return st;
         r->phi1[k] = phi1;
         r->lte_arcsec[k] = pos.lte * ARCSEC;
         r->axial_shift[k] = pos.axial_shift;
@@ -352,10 +374,8 @@ GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, g
             while (nc < np + w->n)
                 nc *= 2;
             gd_ltca_point *pp = realloc(r->points, (size_t)nc * sizeof *pp);
-            if (!pp) {
-                st = gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory for the contact points");
-                goto fail;
-            }
+            if (!pp)
+                return gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory for the contact points");
             r->points = pp;
             cap = nc;
         }
@@ -374,7 +394,14 @@ GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, g
         np += w->n;
     }
     r->first[npos] = np;
-    /* statistics over the cycle */
+    return GD_OK;
+}
+
+/* Statistics over the cycle: of the transmission error, and of each half's stiffness, load share,
+ * pressure and edge loading. */
+static void cycle_statistics(gd_ltca_result *r)
+{
+    const int H = r->halves, npos = r->npos;
     double lo = INFINITY, hi = -INFINITY, mean = 0;
     for (int k = 0; k < npos; k++) {
         lo = fmin(lo, r->lte_arcsec[k]);
@@ -416,13 +443,43 @@ GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, g
         r->load_share[h] = share;
         r->pairs_mean[h] = pairs;
     }
+}
+
+GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, gd_ltca_result *r, gd_error *err)
+{
+    memset(r, 0, sizeof *r);
+    double t0 = gd_clock_wall_s();
+    if (npos <= 0)
+        npos = c->ltca_positions_per_cycle;
+    if (npos < 2)
+        return gd_error_set(err, GD_ERR_INPUT, "LTCA: %d positions per mesh cycle (valid: >= 2)", npos);
+    if (!(c->torque_nm > 0))
+        return gd_error_set(err, GD_ERR_INPUT, "operating.torque_nm: %g N m for LTCA (valid: > 0)", c->torque_nm);
+    gd_ltca *w;
+    gd_status st = gd_ltca_create(c, &w, err);
+    if (st != GD_OK)
+        return st;
+    int H = w->halves;
+    r->halves = H;
+    r->npos = npos;
+    r->nslices = w->nslices;
+    r->floating = w->floating;
+    r->torque_nm = c->torque_nm;
+    r->normal_force_n = gd_ltca_normal_force(w, c->torque_nm);
+    r->cache_key = gd_ltca_cache_key(c, npos);
+    st = result_alloc(r, H, npos, err);
+    if (st == GD_OK)
+        st = sweep_positions(w, c, r, err);
+    if (st != GD_OK)
+        goto fail;
+    cycle_statistics(r);
     if (with_impact)
         for (int h = 0; h < H; h++) {
             st = mesh_in(w, r, h, c->torque_nm, &r->impact[h], err);
             if (st != GD_OK)
                 goto fail;
         }
-    r->wall_s = now_s() - t0;
+    r->wall_s = gd_clock_wall_s() - t0;
     gd_ltca_free(w);
     return GD_OK;
 fail:
@@ -516,17 +573,23 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_case *c, int npos, gd_ltca_
 
 /* ---- cache key -------------------------------------------------------------------------------- */
 
-static uint64_t fnv(uint64_t h, const void *data, size_t len)
+/* The key's bytes as they are produced: hashed (FNV-1a, byte after byte, so the hash of the whole
+ * is the hash of the pieces in turn) and copied to buf as far as cap goes; len counts them all. */
+typedef struct key_sink {
+    uint64_t h;
+    unsigned char *buf;
+    size_t cap, len;
+} key_sink;
+
+static void key_put(key_sink *k, const void *data, size_t len)
 {
-    const unsigned char *p = data;
-    for (size_t i = 0; i < len; i++) {
-        h ^= p[i];
-        h *= 1099511628211ull;
-    }
-    return h;
+    k->h = gd_fnv1a(k->h, data, len);
+    if (k->buf && k->len < k->cap)
+        memcpy(k->buf + k->len, data, len < k->cap - k->len ? len : k->cap - k->len);
+    k->len += len;
 }
 
-GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos)
+static void key_stream(const gd_case *c, int npos, key_sink *k)
 {
     /* every key LTCA reads; keep in step with gd_ltca_create and gd_tca_create */
     static const char *const keys[] = {
@@ -542,8 +605,9 @@ GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos)
         "misalignment.axis_cross_plane_arcmin", "misalignment.centre_distance_error_mm", "operating.torque_nm",
         "support.pinion_axial", "solver.tca_profile_points", "solver.tca_refine", "solver.ltca_face_slices",
     };
-    uint64_t h = 14695981039346656037ull;
-    h = fnv(h, "geardyn-ltca-1", 14);
+    k->h = GD_FNV1A_OFFSET_BASIS;
+    k->len = 0;
+    key_put(k, "geardyn-ltca-1", 14);
     for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
         char sec[32];
         const char *dot = strchr(keys[i], '.');
@@ -553,19 +617,32 @@ GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos)
         const gd_keyspec *s = gd_case_find_key(sec, dot + 1);
         if (!s)
             continue;
-        h = fnv(h, keys[i], strlen(keys[i]) + 1);
+        key_put(k, keys[i], strlen(keys[i]) + 1);
         const char *fp = (const char *)c + s->offset;
         if (s->type == GD_KEY_DOUBLE) {
             double v = *(const double *)fp;
             if (v == 0)
                 v = 0; /* -0 and +0 alike */
-            h = fnv(h, &v, sizeof v);
+            key_put(k, &v, sizeof v);
         } else {
             int v = *(const int *)fp;
-            h = fnv(h, &v, sizeof v);
+            key_put(k, &v, sizeof v);
         }
     }
     int np = npos > 0 ? npos : c->ltca_positions_per_cycle;
-    h = fnv(h, &np, sizeof np);
-    return h;
+    key_put(k, &np, sizeof np);
+}
+
+GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos)
+{
+    key_sink k = {0};
+    key_stream(c, npos, &k);
+    return k.h;
+}
+
+GD_API size_t gd_ltca_cache_key_bytes(const gd_case *c, int npos, unsigned char *buf, size_t cap)
+{
+    key_sink k = {.buf = buf, .cap = cap};
+    key_stream(c, npos, &k);
+    return k.len;
 }

@@ -82,6 +82,8 @@ void tca_constraint(const gd_tca *t, int half, const tca_local *L, int k, double
 int tca_feasible(const gd_tca *t, int half, const tca_local *L, double tol);
 unsigned tca_edge_bit(int constraint);
 void tca_mat_vec(const double A[9], const double x[3], double y[3]);
+/* a . b of two 3-vectors */
+double tca_dot3(const double a[3], const double b[3]);
 void tca_fixed_point(const gd_tca *t, int half, double phi1, int pair, const double x[3], double X[3]);
 void tca_fixed_vector(const gd_tca *t, double phi1, int pair, const double v[3], double V[3]);
 /* Gear half-frame vector -> fixed frame (no translation), and gear half-frame point -> fixed frame. */

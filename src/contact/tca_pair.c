@@ -91,7 +91,7 @@ void tca_pair_range(const gd_tca *t, int half, double phi1, int *lo, int *hi)
     *hi = (int)floor(b / t->tau1);
 }
 
-static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double tca_dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 void tca_local_eval(const gd_tca *t, int half, const tca_pose *P, double u, double z, int order, tca_local *L)
 {
@@ -128,11 +128,11 @@ void tca_local_eval(const gd_tca *t, int half, const tca_pose *P, double u, doub
     double gth[3] = {-Q[1] / r2, Q[0] / r2, 0};
     double gg[3] = {gth[0] + Fp * gr[0], gth[1] + Fp * gr[1], -f2->k};
     double gz[3] = {0, 0, 1};
-    double gu = dot3(gg, Qu), gzz1 = dot3(gg, Qz);
+    double gu = tca_dot3(gg, Qu), gzz1 = tca_dot3(gg, Qz);
     L->g_r = gu / rb1;
     L->g_z = gzz1;
-    L->R_r = dot3(gr, Qu) / rb1;
-    L->R_z = dot3(gr, Qz);
+    L->R_r = tca_dot3(gr, Qu) / rb1;
+    L->R_z = tca_dot3(gr, Qz);
     L->Z_r = Qu[2] / rb1;
     L->Z_z = Qz[2];
     (void)gz;
@@ -150,15 +150,15 @@ void tca_local_eval(const gd_tca *t, int half, const tca_pose *P, double u, doub
     double Hg[3] = {Ht[0] + Fpp * gr[0] * gr[0] + Fp * Hr[0], Ht[1] + Fpp * gr[0] * gr[1] + Fp * Hr[1],
                     Ht[2] + Fpp * gr[1] * gr[1] + Fp * Hr[2]};
 #define QF(H, a, b) ((H)[0] * (a)[0] * (b)[0] + (H)[1] * ((a)[0] * (b)[1] + (a)[1] * (b)[0]) + (H)[2] * (a)[1] * (b)[1])
-    double guu = QF(Hg, Qu, Qu) + dot3(gg, Quu);
-    double guz = QF(Hg, Qu, Qz) + dot3(gg, Quz);
-    double gzz = QF(Hg, Qz, Qz) + dot3(gg, Qzz);
+    double guu = QF(Hg, Qu, Qu) + tca_dot3(gg, Quu);
+    double guz = QF(Hg, Qu, Qz) + tca_dot3(gg, Quz);
+    double gzz = QF(Hg, Qz, Qz) + tca_dot3(gg, Qzz);
     L->g_rr = guu / (rb1 * rb1);
     L->g_rz = guz / rb1;
     L->g_zz = gzz;
-    L->R_rr = (QF(Hr, Qu, Qu) + dot3(gr, Quu)) / (rb1 * rb1);
-    L->R_rz = (QF(Hr, Qu, Qz) + dot3(gr, Quz)) / rb1;
-    L->R_zz = QF(Hr, Qz, Qz) + dot3(gr, Qzz);
+    L->R_rr = (QF(Hr, Qu, Qu) + tca_dot3(gr, Quu)) / (rb1 * rb1);
+    L->R_rz = (QF(Hr, Qu, Qz) + tca_dot3(gr, Quz)) / rb1;
+    L->R_zz = QF(Hr, Qz, Qz) + tca_dot3(gr, Qzz);
     L->Z_rr = Quu[2] / (rb1 * rb1);
     L->Z_rz = Quz[2] / rb1;
     L->Z_zz = Qzz[2];

@@ -2,13 +2,14 @@
  * positions of both halves: transmission error (paper Eq. 10), contact path, edge contact,
  * contact pattern and separation topography (docs/tca.md). */
 #include "tca_internal.h"
+#include "../core/gsl_quiet.h"
 #include "geardyn/gd_geometry.h"
+#include "../core/clock.h"
 
 #include <gsl/gsl_errno.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define ARCSEC (180.0 * 3600.0 / M_PI)
 #define MAX_PAIRS_WS 64
@@ -53,8 +54,93 @@ GD_API void gd_tca_topography_reset(gd_tca *t)
             t->h[h].sep[n] = t->h[h].ease[n] = NAN;
 }
 
+/* Frames of the pair: phase offsets, gear centre with the centre-distance error, the misalignment
+ * rotation of the gear axis, pitches, operating pressure angle and the gap tolerances. */
+static void set_frames(gd_tca *t, const gd_case *c)
+{
+    const gd_geometry *g = &t->g;
+    t->theta1 = g->eta_b[0] + gd_involute(g->alpha_wt);
+    t->theta2 = g->eta_b[1] + gd_involute(g->alpha_wt);
+    double dE = c->centre_distance_error_mm * 1e-3;
+    t->C[0] = g->a + dE;
+    t->C[1] = 0;
+    t->C[2] = 0;
+    const double arcmin = M_PI / (180.0 * 60.0);
+    double di = c->axis_in_plane_arcmin * arcmin, dc = c->axis_cross_plane_arcmin * arcmin;
+    /* M = Rx(dc) Ry(di) */
+    double ci = cos(di), si = sin(di), cc = cos(dc), sc = sin(dc);
+    double Ry[9] = {ci, 0, si, 0, 1, 0, -si, 0, ci};
+    double Rx[9] = {1, 0, 0, 0, cc, -sc, 0, sc, cc};
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            t->M[3 * i + j] = Rx[3 * i] * Ry[j] + Rx[3 * i + 1] * Ry[3 + j] + Rx[3 * i + 2] * Ry[6 + j];
+    t->ratio = (double)g->z[0] / g->z[1];
+    t->tau1 = 2 * M_PI / g->z[0];
+    t->tau2 = 2 * M_PI / g->z[1];
+    double cw = (g->rb[0] + g->rb[1]) / (g->a + dE);
+    t->alpha_op = acos(fmin(1.0, cw));
+    t->refine = c->tca_refine;
+    t->tol_edge = t->tol_contact = 1e-9 / (g->rb[1] * cos(g->beta_b));
+}
+
+/* The grid on the pinion flank, uniform in roll length and in face position, the node buffers of
+ * the pairs and the node positions of each half. */
+static gd_status make_grid(gd_tca *t, const gd_case *c, gd_error *err)
+{
+    t->nprof = c->tca_profile_points;
+    t->nface = c->tca_face_points;
+    int nn = t->nprof * t->nface;
+    const gd_flank *f1 = &t->h[0].f1;
+    t->rho = malloc((size_t)t->nprof * sizeof *t->rho);
+    t->z = malloc((size_t)t->nface * sizeof *t->z);
+    double span = f1->u_max - f1->u_min;
+    double width = (span + 2 * (0.15 * span + 1e-3) + fabs(f1->k) * (f1->z_max - f1->z_min)) / t->tau1 + 3;
+    int maxpairs = (int)fmin(ceil(width), MAX_PAIRS_WS);
+    t->maxpairs = maxpairs;
+    t->gbuf = malloc((size_t)maxpairs * nn * sizeof *t->gbuf);
+    t->fbuf = malloc((size_t)maxpairs * nn);
+    t->sg = malloc((size_t)t->nprof * sizeof *t->sg);
+    t->sf = malloc((size_t)t->nprof);
+    if (!t->rho || !t->z || !t->gbuf || !t->fbuf || !t->sg || !t->sf)
+        return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for a %d x %d grid", t->nprof, t->nface);
+    for (int i = 0; i < t->nprof; i++)
+        t->rho[i] = f1->rb * (f1->u_min + span * i / (t->nprof - 1));
+    for (int j = 0; j < t->nface; j++)
+        t->z[j] = f1->z_min + (f1->z_max - f1->z_min) * j / (t->nface - 1);
+    t->rho[t->nprof - 1] = f1->rb * f1->u_max;
+    t->z[t->nface - 1] = f1->z_max;
+    for (int h = 0; h < t->halves; h++) {
+        tca_half *H = &t->h[h];
+        H->x1 = malloc((size_t)3 * nn * sizeof *H->x1);
+        H->sep = malloc((size_t)nn * sizeof *H->sep);
+        H->ease = malloc((size_t)nn * sizeof *H->ease);
+        if (!H->x1 || !H->sep || !H->ease)
+            return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for the flank grid");
+        for (int j = 0; j < t->nface; j++)
+            for (int i = 0; i < t->nprof; i++) {
+                gd_flank_eval e;
+                gd_flank_eval_at(&H->f1, t->rho[i] / H->f1.rb, t->z[j], 0, &e);
+                memcpy(H->x1 + 3 * ((size_t)j * t->nprof + i), e.r, sizeof e.r);
+            }
+    }
+    return GD_OK;
+}
+
+/* GSL's hybridsj solvers for 1 to TCA_MAX_N unknowns. */
+static gd_status alloc_solvers(gd_tca *t, gd_error *err)
+{
+    for (int n = 1; n <= TCA_MAX_N; n++) {
+        t->solver[n] = gsl_multiroot_fdfsolver_alloc(gsl_multiroot_fdfsolver_hybridsj, (size_t)n);
+        t->xv[n] = gsl_vector_alloc((size_t)n);
+        if (!t->solver[n] || !t->xv[n])
+            return gd_error_set(err, GD_ERR_GSL, "gsl_multiroot_fdfsolver_alloc (hybridsj, %d unknowns) failed", n);
+    }
+    return GD_OK;
+}
+
 GD_API gd_status gd_tca_create(const gd_case *c, gd_tca **out, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     *out = NULL;
     gd_tca *t = calloc(1, sizeof *t);
     if (!t)
@@ -85,77 +171,17 @@ GD_API gd_status gd_tca_create(const gd_case *c, gd_tca **out, gd_error *err)
         double zc = 0.5 * (c->groove_width_mm * 1e-3 + g->b[0]);
         t->h[h].zc = t->halves == 1 ? 0 : (h == 0 ? -zc : zc);
     }
-    t->theta1 = g->eta_b[0] + gd_involute(g->alpha_wt);
-    t->theta2 = g->eta_b[1] + gd_involute(g->alpha_wt);
-    double dE = c->centre_distance_error_mm * 1e-3;
-    t->C[0] = g->a + dE;
-    t->C[1] = 0;
-    t->C[2] = 0;
-    const double arcmin = M_PI / (180.0 * 60.0);
-    double di = c->axis_in_plane_arcmin * arcmin, dc = c->axis_cross_plane_arcmin * arcmin;
-    /* M = Rx(dc) Ry(di) */
-    double ci = cos(di), si = sin(di), cc = cos(dc), sc = sin(dc);
-    double Ry[9] = {ci, 0, si, 0, 1, 0, -si, 0, ci};
-    double Rx[9] = {1, 0, 0, 0, cc, -sc, 0, sc, cc};
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 3; j++)
-            t->M[3 * i + j] = Rx[3 * i] * Ry[j] + Rx[3 * i + 1] * Ry[3 + j] + Rx[3 * i + 2] * Ry[6 + j];
-    t->ratio = (double)g->z[0] / g->z[1];
-    t->tau1 = 2 * M_PI / g->z[0];
-    t->tau2 = 2 * M_PI / g->z[1];
-    double cw = (g->rb[0] + g->rb[1]) / (g->a + dE);
-    t->alpha_op = acos(fmin(1.0, cw));
-    t->refine = c->tca_refine;
-    t->tol_edge = t->tol_contact = 1e-9 / (g->rb[1] * cos(g->beta_b));
-    /* the grid on the pinion flank: uniform in roll length and in face position */
-    t->nprof = c->tca_profile_points;
-    t->nface = c->tca_face_points;
-    int nn = t->nprof * t->nface;
-    const gd_flank *f1 = &t->h[0].f1;
-    t->rho = malloc((size_t)t->nprof * sizeof *t->rho);
-    t->z = malloc((size_t)t->nface * sizeof *t->z);
-    double span = f1->u_max - f1->u_min;
-    double width = (span + 2 * (0.15 * span + 1e-3) + fabs(f1->k) * (f1->z_max - f1->z_min)) / t->tau1 + 3;
-    int maxpairs = (int)fmin(ceil(width), MAX_PAIRS_WS);
-    t->maxpairs = maxpairs;
-    t->gbuf = malloc((size_t)maxpairs * nn * sizeof *t->gbuf);
-    t->fbuf = malloc((size_t)maxpairs * nn);
-    t->sg = malloc((size_t)t->nprof * sizeof *t->sg);
-    t->sf = malloc((size_t)t->nprof);
-    if (!t->rho || !t->z || !t->gbuf || !t->fbuf || !t->sg || !t->sf) {
+    set_frames(t, c);
+    st = make_grid(t, c, err);
+    if (st != GD_OK) {
         gd_tca_free(t);
-        return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for a %d x %d grid", t->nprof, t->nface);
-    }
-    for (int i = 0; i < t->nprof; i++)
-        t->rho[i] = f1->rb * (f1->u_min + span * i / (t->nprof - 1));
-    for (int j = 0; j < t->nface; j++)
-        t->z[j] = f1->z_min + (f1->z_max - f1->z_min) * j / (t->nface - 1);
-    t->rho[t->nprof - 1] = f1->rb * f1->u_max;
-    t->z[t->nface - 1] = f1->z_max;
-    for (int h = 0; h < t->halves; h++) {
-        tca_half *H = &t->h[h];
-        H->x1 = malloc((size_t)3 * nn * sizeof *H->x1);
-        H->sep = malloc((size_t)nn * sizeof *H->sep);
-        H->ease = malloc((size_t)nn * sizeof *H->ease);
-        if (!H->x1 || !H->sep || !H->ease) {
-            gd_tca_free(t);
-            return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for the flank grid");
-        }
-        for (int j = 0; j < t->nface; j++)
-            for (int i = 0; i < t->nprof; i++) {
-                gd_flank_eval e;
-                gd_flank_eval_at(&H->f1, t->rho[i] / H->f1.rb, t->z[j], 0, &e);
-                memcpy(H->x1 + 3 * ((size_t)j * t->nprof + i), e.r, sizeof e.r);
-            }
+        return st;
     }
     gd_tca_topography_reset(t);
-    for (int n = 1; n <= TCA_MAX_N; n++) {
-        t->solver[n] = gsl_multiroot_fdfsolver_alloc(gsl_multiroot_fdfsolver_hybridsj, (size_t)n);
-        t->xv[n] = gsl_vector_alloc((size_t)n);
-        if (!t->solver[n] || !t->xv[n]) {
-            gd_tca_free(t);
-            return gd_error_set(err, GD_ERR_GSL, "gsl_multiroot_fdfsolver_alloc (hybridsj, %d unknowns) failed", n);
-        }
+    st = alloc_solvers(t, err);
+    if (st != GD_OK) {
+        gd_tca_free(t);
+        return st;
     }
     *out = t;
     return GD_OK;
@@ -244,22 +270,9 @@ GD_API void gd_tca_result_free(gd_tca_result *r)
     memset(r, 0, sizeof *r);
 }
 
-static double now_s(void)
+/* The arrays of the result for npos positions of every half; 0 when out of memory. */
+static int alloc_result(const gd_tca *t, const gd_case *c, int npos, gd_tca_result *r)
 {
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
-{
-    memset(r, 0, sizeof *r);
-    double t0 = now_s();
-    gd_tca *t;
-    gd_status st = gd_tca_create(c, &t, err);
-    if (st != GD_OK)
-        return st;
-    int npos = c->tca_positions_per_cycle * c->tca_cycles;
     int nn = t->nprof * t->nface;
     r->halves = t->halves;
     r->npos = npos;
@@ -280,7 +293,92 @@ GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
             ok = r->contact_a[h] != NULL;
         }
     }
-    if (!ok) {
+    return ok;
+}
+
+/* The contact of half h at position k by the formulation of the case (separation always, for the
+ * topography), and with both the largest difference of their transmission errors. */
+static gd_status contact_at_position(gd_tca *t, const gd_case *c, int h, int k, gd_tca_result *r, gd_error *err)
+{
+    gd_tca_contact cb;
+    gd_status st = tca_separation(t, h, r->phi1[k], &cb, err);
+    if (st != GD_OK)
+        return st;
+    if (c->tca_formulation == GD_TCA_TANGENCY) {
+        st = tca_tangency(t, h, r->phi1[k], &r->contact[h][k], err);
+        if (st != GD_OK)
+            return st;
+        if (!r->contact[h][k].converged)
+            return gd_error_set(err, GD_ERR_SOLVER, "TCA (a): no contact found at phi1 = %.6g deg (%s half): the "
+                                "tangency systems are singular for line contact; use tca_formulation = separation",
+                                r->phi1[k] * 180 / M_PI, h ? "right" : "left");
+    } else {
+        r->contact[h][k] = cb;
+        if (c->tca_formulation == GD_TCA_BOTH) {
+            st = tca_tangency(t, h, r->phi1[k], &r->contact_a[h][k], err);
+            if (st != GD_OK)
+                return st;
+            if (r->contact_a[h][k].converged) {
+                double d = fabs(r->contact_a[h][k].te - cb.te) * ARCSEC;
+                if (d > r->max_diff_arcsec)
+                    r->max_diff_arcsec = d;
+                r->compared++;
+            }
+        }
+    }
+    return GD_OK;
+}
+
+/* Every position of half h: the contacts, edge kinds, pairs in contact, the transmission error
+ * and the topography; the operating pressure angles summed into *asum, *acount. */
+static gd_status run_half(gd_tca *t, const gd_case *c, int h, int npos, gd_tca_result *r, double *asum,
+                          long *acount, gd_error *err)
+{
+    int nn = t->nprof * t->nface;
+    r->pairs_min[h] = 1 << 30;
+    double psum = 0;
+    for (int k = 0; k < npos; k++) {
+        gd_status st = contact_at_position(t, c, h, k, r, err);
+        if (st != GD_OK)
+            return st;
+        const gd_tca_contact *ck = &r->contact[h][k];
+        r->edge_kinds[h] |= ck->edge;
+        if (ck->edge)
+            r->edge_positions[h]++;
+        psum += ck->pairs_in_contact;
+        if (ck->pairs_in_contact < r->pairs_min[h])
+            r->pairs_min[h] = ck->pairs_in_contact;
+        if (ck->pairs_in_contact > r->pairs_max[h])
+            r->pairs_max[h] = ck->pairs_in_contact;
+        *asum += ck->alpha_op;
+        (*acount)++;
+    }
+    r->pairs_mean[h] = psum / npos;
+    double lo = INFINITY, hi = -INFINITY, mean = 0;
+    for (int k = 0; k < npos; k++) {
+        double te = r->contact[h][k].te;
+        r->gte_arcsec[h][k] = (te - r->contact[h][0].te) * ARCSEC;
+        lo = fmin(lo, r->gte_arcsec[h][k]);
+        hi = fmax(hi, r->gte_arcsec[h][k]);
+        mean += te * ARCSEC / npos;
+    }
+    r->gte_pp_arcsec[h] = hi - lo;
+    r->te_mean_arcsec[h] = mean;
+    memcpy(r->sep[h], t->h[h].sep, (size_t)nn * sizeof *r->sep[h]);
+    memcpy(r->ease_off[h], t->h[h].ease, (size_t)nn * sizeof *r->ease_off[h]);
+    return GD_OK;
+}
+
+GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
+{
+    memset(r, 0, sizeof *r);
+    double t0 = gd_clock_wall_s();
+    gd_tca *t;
+    gd_status st = gd_tca_create(c, &t, err);
+    if (st != GD_OK)
+        return st;
+    int npos = c->tca_positions_per_cycle * c->tca_cycles;
+    if (!alloc_result(t, c, npos, r)) {
         gd_tca_free(t);
         gd_tca_result_free(r);
         return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for %d positions", npos);
@@ -292,62 +390,12 @@ GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
     double asum = 0;
     long acount = 0;
     for (int h = 0; h < t->halves; h++) {
-        r->pairs_min[h] = 1 << 30;
-        double psum = 0;
-        for (int k = 0; k < npos; k++) {
-            gd_tca_contact cb;
-            st = tca_separation(t, h, r->phi1[k], &cb, err);
-            if (st != GD_OK)
-                goto fail;
-            if (c->tca_formulation == GD_TCA_TANGENCY) {
-                st = tca_tangency(t, h, r->phi1[k], &r->contact[h][k], err);
-                if (st != GD_OK)
-                    goto fail;
-                if (!r->contact[h][k].converged) {
-                    st = gd_error_set(err, GD_ERR_SOLVER, "TCA (a): no contact found at phi1 = %.6g deg (%s half): the "
-                                      "tangency systems are singular for line contact; use tca_formulation = separation",
-                                      r->phi1[k] * 180 / M_PI, h ? "right" : "left");
-                    goto fail;
-                }
-            } else {
-                r->contact[h][k] = cb;
-                if (c->tca_formulation == GD_TCA_BOTH) {
-                    st = tca_tangency(t, h, r->phi1[k], &r->contact_a[h][k], err);
-                    if (st != GD_OK)
-                        goto fail;
-                    if (r->contact_a[h][k].converged) {
-                        double d = fabs(r->contact_a[h][k].te - cb.te) * ARCSEC;
-                        if (d > r->max_diff_arcsec)
-                            r->max_diff_arcsec = d;
-                        r->compared++;
-                    }
-                }
-            }
-            const gd_tca_contact *ck = &r->contact[h][k];
-            r->edge_kinds[h] |= ck->edge;
-            if (ck->edge)
-                r->edge_positions[h]++;
-            psum += ck->pairs_in_contact;
-            if (ck->pairs_in_contact < r->pairs_min[h])
-                r->pairs_min[h] = ck->pairs_in_contact;
-            if (ck->pairs_in_contact > r->pairs_max[h])
-                r->pairs_max[h] = ck->pairs_in_contact;
-            asum += ck->alpha_op;
-            acount++;
+        st = run_half(t, c, h, npos, r, &asum, &acount, err);
+        if (st != GD_OK) {
+            gd_tca_free(t);
+            gd_tca_result_free(r);
+            return st;
         }
-        r->pairs_mean[h] = psum / npos;
-        double lo = INFINITY, hi = -INFINITY, mean = 0;
-        for (int k = 0; k < npos; k++) {
-            double te = r->contact[h][k].te;
-            r->gte_arcsec[h][k] = (te - r->contact[h][0].te) * ARCSEC;
-            lo = fmin(lo, r->gte_arcsec[h][k]);
-            hi = fmax(hi, r->gte_arcsec[h][k]);
-            mean += te * ARCSEC / npos;
-        }
-        r->gte_pp_arcsec[h] = hi - lo;
-        r->te_mean_arcsec[h] = mean;
-        memcpy(r->sep[h], t->h[h].sep, (size_t)nn * sizeof *r->sep[h]);
-        memcpy(r->ease_off[h], t->h[h].ease, (size_t)nn * sizeof *r->ease_off[h]);
     }
     r->alpha_op_mean = acount ? asum / acount : NAN;
     {
@@ -358,11 +406,7 @@ GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
         r->contact_ratio_overlap = g->eps_beta;
     }
     r->iterations = t->iterations;
-    r->wall_s = now_s() - t0;
+    r->wall_s = gd_clock_wall_s() - t0;
     gd_tca_free(t);
     return GD_OK;
-fail:
-    gd_tca_free(t);
-    gd_tca_result_free(r);
-    return st;
 }

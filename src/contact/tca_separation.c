@@ -178,6 +178,133 @@ static gd_status slice_min_z(gd_tca *t, int half, const tca_pose *P, double z, c
     return slice_min_hint(t, half, P, z, gv, fv, i0, NULL, NULL, -1, NAN, out, mp, mpp, iters, err);
 }
 
+/* The feasible run of profile nodes [lo, hi] a slice minimum is sought in, its least node imin
+ * and the violated constraints just outside its ends (1 + constraint, 0 at the flank's edge). */
+typedef struct slice_run {
+    int lo, hi, imin, flo, fhi;
+} slice_run;
+
+/* The run of grid slice jh nearest to the hint, its ends checked at z; 0 when there is none. */
+static int run_from_hint(gd_tca *t, int half, const tca_pose *P, double z, const double *gp, const unsigned char *fp,
+                         int jh, double rho_hint, slice_run *r)
+{
+    int np = t->nprof;
+    const double *rho = t->rho;
+    int lo, hi;
+    const unsigned char *fj = fp + (size_t)jh * np;
+    int start = -1;
+    double dbest = INFINITY;
+    for (int i = 0; i < np; i++)
+        if (fj[i] == 0) {
+            double d = isfinite(rho_hint) ? fabs(rho[i] - rho_hint) : gp[(size_t)jh * np + i];
+            if (d < dbest) {
+                dbest = d;
+                start = i;
+            }
+        }
+    if (start < 0)
+        return 0;
+    lo = hi = start;
+    while (lo > 0 && fj[lo - 1] == 0)
+        lo--;
+    while (hi < np - 1 && fj[hi + 1] == 0)
+        hi++;
+    double gg;
+    /* move the ends to where the nodes are feasible at z */
+    while (lo <= hi && node_at(t, half, P, lo, z, &gg))
+        lo++;
+    while (hi >= lo && node_at(t, half, P, hi, z, &gg))
+        hi--;
+    if (lo > hi)
+        return 0;
+    while (lo > 0 && (r->flo = node_at(t, half, P, lo - 1, z, &gg)) == 0)
+        lo--;
+    while (hi < np - 1 && (r->fhi = node_at(t, half, P, hi + 1, z, &gg)) == 0)
+        hi++;
+    int imin = -1;
+    if (isfinite(rho_hint)) {
+        imin = lo;
+        for (int i = lo; i <= hi; i++)
+            if (fabs(rho[i] - rho_hint) < fabs(rho[imin] - rho_hint))
+                imin = i;
+    } else {
+        imin = start < lo ? lo : start > hi ? hi : start;
+    }
+    r->lo = lo;
+    r->hi = hi;
+    r->imin = imin;
+    return 1;
+}
+
+/* The run of the slice's node values (gv, fv; computed here when NULL) that holds node i0, or the
+ * least node when i0 is not feasible; 0 when no node of the slice is feasible. */
+static int run_from_slice(gd_tca *t, int half, const tca_pose *P, double z, const double *gv,
+                          const unsigned char *fv, int i0, slice_run *r)
+{
+    int np = t->nprof;
+    int lo, hi;
+    if (!gv) {
+        for (int i = 0; i < np; i++)
+            t->sf[i] = (unsigned char)node_at(t, half, P, i, z, &t->sg[i]);
+        gv = t->sg;
+        fv = t->sf;
+    }
+    if (i0 < 0 || fv[i0] != 0) {
+        i0 = -1;
+        for (int i = 0; i < np; i++)
+            if (fv[i] == 0 && (i0 < 0 || gv[i] < gv[i0]))
+                i0 = i;
+        if (i0 < 0)
+            return 0;
+    }
+    lo = hi = i0;
+    while (lo > 0 && fv[lo - 1] == 0)
+        lo--;
+    while (hi < np - 1 && fv[hi + 1] == 0)
+        hi++;
+    int imin = lo;
+    for (int i = lo; i <= hi; i++)
+        if (gv[i] < gv[imin])
+            imin = i;
+    if (lo > 0)
+        r->flo = fv[lo - 1];
+    if (hi < np - 1)
+        r->fhi = fv[hi + 1];
+    r->lo = lo;
+    r->hi = hi;
+    r->imin = imin;
+    return 1;
+}
+
+/* The slope m' of the slice minimum (along the gear boundary when it sits on one) and its
+ * curvature m'' when the minimum is interior or on a pinion profile edge. */
+static void slice_slopes(gd_tca *t, int half, const tca_pose *P, double z, const cand *best, double *mp, double *mpp)
+{
+    tca_local L;
+    tca_local_eval(t, half, P, best->u, z, 2, &L);
+    unsigned gear = best->bits & (tca_edge_bit(TCA_C_G_ROOT) | tca_edge_bit(TCA_C_G_TIP) | tca_edge_bit(TCA_C_G_LO) |
+                                  tca_edge_bit(TCA_C_G_HI));
+    unsigned prof = best->bits & (tca_edge_bit(TCA_C_P_ROOT) | tca_edge_bit(TCA_C_P_TIP));
+    double d1 = L.g_z, d2 = NAN;
+    if (gear) {
+        int k = 0;
+        while (!(gear & tca_edge_bit(k)))
+            k++;
+        double h, hr, hz, hrr, hrz, hzz;
+        tca_constraint(t, half, &L, k, &h, &hr, &hz, &hrr, &hrz, &hzz);
+        if (fabs(hr) > 0)
+            d1 = L.g_z - L.g_r * hz / hr;
+    } else if (prof) {
+        d2 = L.g_zz;
+    } else if (L.g_rr > 0) {
+        d2 = L.g_zz - L.g_rz * L.g_rz / L.g_rr;
+    }
+    if (mp)
+        *mp = d1;
+    if (mpp)
+        *mpp = d2;
+}
+
 /* As slice_min_z; at an axial position z between grid slices (gv == NULL) the feasible run is
  * taken from grid slice jh of the pair's node arrays (gp, fp) and corrected by evaluating only the
  * nodes at its ends, and Newton starts from rho_hint (the slice minimum of a neighbouring z). */
@@ -188,100 +315,33 @@ static gd_status slice_min_hint(gd_tca *t, int half, const tca_pose *P, double z
     int np = t->nprof;
     const double *rho = t->rho;
     const double rb1 = t->h[half].f1.rb;
-    int lo, hi, imin, flo = 0, fhi = 0;
+    slice_run r = {0, 0, 0, 0, 0};
     if (!gv && gp && jh >= 0) {
-        /* the run of grid slice jh nearest to the hint, its ends checked at z */
-        const unsigned char *fj = fp + (size_t)jh * np;
-        int start = -1;
-        double dbest = INFINITY;
-        for (int i = 0; i < np; i++)
-            if (fj[i] == 0) {
-                double d = isfinite(rho_hint) ? fabs(rho[i] - rho_hint) : gp[(size_t)jh * np + i];
-                if (d < dbest) {
-                    dbest = d;
-                    start = i;
-                }
-            }
-        if (start < 0) {
+        if (!run_from_hint(t, half, P, z, gp, fp, jh, rho_hint, &r)) {
             cand none = {0};
             *out = none;
             return GD_OK;
         }
-        lo = hi = start;
-        while (lo > 0 && fj[lo - 1] == 0)
-            lo--;
-        while (hi < np - 1 && fj[hi + 1] == 0)
-            hi++;
-        double gg;
-        /* move the ends to where the nodes are feasible at z */
-        while (lo <= hi && node_at(t, half, P, lo, z, &gg))
-            lo++;
-        while (hi >= lo && node_at(t, half, P, hi, z, &gg))
-            hi--;
-        if (lo > hi) {
-            cand none = {0};
-            *out = none;
-            return GD_OK;
-        }
-        while (lo > 0 && (flo = node_at(t, half, P, lo - 1, z, &gg)) == 0)
-            lo--;
-        while (hi < np - 1 && (fhi = node_at(t, half, P, hi + 1, z, &gg)) == 0)
-            hi++;
-        imin = -1;
-        if (isfinite(rho_hint)) {
-            imin = lo;
-            for (int i = lo; i <= hi; i++)
-                if (fabs(rho[i] - rho_hint) < fabs(rho[imin] - rho_hint))
-                    imin = i;
-        } else {
-            imin = start < lo ? lo : start > hi ? hi : start;
-        }
-    } else {
-        if (!gv) {
-            for (int i = 0; i < np; i++)
-                t->sf[i] = (unsigned char)node_at(t, half, P, i, z, &t->sg[i]);
-            gv = t->sg;
-            fv = t->sf;
-        }
-        if (i0 < 0 || fv[i0] != 0) {
-            i0 = -1;
-            for (int i = 0; i < np; i++)
-                if (fv[i] == 0 && (i0 < 0 || gv[i] < gv[i0]))
-                    i0 = i;
-            if (i0 < 0) {
-                cand none = {0};
-                *out = none;
-                if (mp)
-                    *mp = NAN;
-                if (mpp)
-                    *mpp = NAN;
-                return GD_OK;
-            }
-        }
-        lo = hi = i0;
-        while (lo > 0 && fv[lo - 1] == 0)
-            lo--;
-        while (hi < np - 1 && fv[hi + 1] == 0)
-            hi++;
-        imin = lo;
-        for (int i = lo; i <= hi; i++)
-            if (gv[i] < gv[imin])
-                imin = i;
-        if (lo > 0)
-            flo = fv[lo - 1];
-        if (hi < np - 1)
-            fhi = fv[hi + 1];
+    } else if (!run_from_slice(t, half, P, z, gv, fv, i0, &r)) {
+        cand none = {0};
+        *out = none;
+        if (mp)
+            *mp = NAN;
+        if (mpp)
+            *mpp = NAN;
+        return GD_OK;
     }
+    const int lo = r.lo, hi = r.hi;
     double rlo = rho[lo], rhi = rho[hi];
     if (lo > 0) {
         double a[2] = {rho[lo], z}, b[2] = {rho[lo - 1], z};
-        rlo = rho[lo] + boundary_between(t, half, P, flo - 1, a, b) * (rho[lo - 1] - rho[lo]);
+        rlo = rho[lo] + boundary_between(t, half, P, r.flo - 1, a, b) * (rho[lo - 1] - rho[lo]);
     }
     if (hi < np - 1) {
         double a[2] = {rho[hi], z}, b[2] = {rho[hi + 1], z};
-        rhi = rho[hi] + boundary_between(t, half, P, fhi - 1, a, b) * (rho[hi + 1] - rho[hi]);
+        rhi = rho[hi] + boundary_between(t, half, P, r.fhi - 1, a, b) * (rho[hi + 1] - rho[hi]);
     }
-    double rstart = isfinite(rho_hint) ? fmin(fmax(rho_hint, rlo), rhi) : rho[imin];
+    double rstart = isfinite(rho_hint) ? fmin(fmax(rho_hint, rlo), rhi) : rho[r.imin];
     cand best = {0}, c;
     if (mp)
         *mp = NAN;
@@ -307,31 +367,8 @@ static gd_status slice_min_hint(gd_tca *t, int half, const tca_pose *P, double z
         }
     }
     *out = best;
-    if (best.ok && (mp || mpp)) {
-        tca_local L;
-        tca_local_eval(t, half, P, best.u, z, 2, &L);
-        unsigned gear = best.bits & (tca_edge_bit(TCA_C_G_ROOT) | tca_edge_bit(TCA_C_G_TIP) | tca_edge_bit(TCA_C_G_LO) |
-                                     tca_edge_bit(TCA_C_G_HI));
-        unsigned prof = best.bits & (tca_edge_bit(TCA_C_P_ROOT) | tca_edge_bit(TCA_C_P_TIP));
-        double d1 = L.g_z, d2 = NAN;
-        if (gear) {
-            int k = 0;
-            while (!(gear & tca_edge_bit(k)))
-                k++;
-            double h, hr, hz, hrr, hrz, hzz;
-            tca_constraint(t, half, &L, k, &h, &hr, &hz, &hrr, &hrz, &hzz);
-            if (fabs(hr) > 0)
-                d1 = L.g_z - L.g_r * hz / hr;
-        } else if (prof) {
-            d2 = L.g_zz;
-        } else if (L.g_rr > 0) {
-            d2 = L.g_zz - L.g_rz * L.g_rz / L.g_rr;
-        }
-        if (mp)
-            *mp = d1;
-        if (mpp)
-            *mpp = d2;
-    }
+    if (best.ok && (mp || mpp))
+        slice_slopes(t, half, P, z, &best, mp, mpp);
     return GD_OK;
 }
 
@@ -437,6 +474,195 @@ static void add_tie(pair_out *po, const cand *c)
     }
 }
 
+/* A bracket of the minimum of the slice minimum m(z): from grid slice j0 (slope mp0, candidate c0)
+ * walk slice by slice downhill until the slope changes sign or the face ends. (za, ma, ca): the
+ * last slice walked with the starting sign; (zb, mb, cb): the first with the other sign, zb NaN
+ * when the walk ended without one. */
+typedef struct z_bracket {
+    double za, ma;
+    cand ca;
+    double zb, mb;
+    cand cb;
+} z_bracket;
+
+static gd_status bracket_downhill(gd_tca *t, int half, const tca_pose *P, const double *gv, const unsigned char *fv,
+                                  int j0, double mp0, const cand *c0, double flat, pair_out *po, z_bracket *br,
+                                  int *iters, gd_error *err)
+{
+    int np = t->nprof, nz = t->nface;
+    int dir = mp0 > 0 ? -1 : 1;
+    int j = j0;
+    br->za = t->z[j0];
+    br->ma = mp0;
+    br->ca = *c0;
+    br->zb = NAN;
+    br->mb = NAN;
+    br->cb = (cand){0};
+    while (1) {
+        int jn = j + dir;
+        if (jn < 0 || jn >= nz)
+            break; /* the face end is the minimum of m: ca */
+        cand cn;
+        double mpn;
+        gd_status st = slice_min_z(t, half, P, t->z[jn], gv + (size_t)jn * np, fv + (size_t)jn * np, -1, &cn, &mpn,
+                                   NULL, iters, err);
+        if (st != GD_OK)
+            return st;
+        if (!cn.ok)
+            break;
+        keep_best(&po->best, &cn);
+        if (dir * mpn >= 0 || fabs(mpn) <= flat) {
+            br->zb = t->z[jn];
+            br->mb = mpn;
+            br->cb = cn;
+            break;
+        }
+        j = jn;
+        br->za = t->z[jn];
+        br->ma = mpn;
+        br->ca = cn;
+    }
+    return GD_OK;
+}
+
+/* Safeguarded Newton on m'(z) in the bracket [lo, hi] with m'(lo) < 0 < m'(hi); the last iterate's
+ * candidate in *cz. */
+static gd_status newton_on_slope(gd_tca *t, int half, const tca_pose *P, const double *gv, const unsigned char *fv,
+                                 const z_bracket *br, double flat, pair_out *po, cand *cz_out, int *iters,
+                                 gd_error *err)
+{
+    int nz = t->nface;
+    const double rb1 = t->h[half].f1.rb;
+    double lo = br->za, hi = br->zb, mlo = br->ma, mhi = br->mb;
+    cand clo = br->ca, chi = br->cb;
+    if (lo > hi) {
+        double tz = lo; lo = hi; hi = tz;
+        double tm = mlo; mlo = mhi; mhi = tm;
+        cand tc = clo; clo = chi; chi = tc;
+    }
+    (void)mhi;
+    double z = fabs(mlo) < fabs(br->mb) ? lo : hi;
+    double mz = z == lo ? mlo : mhi, mzz = NAN, zprev = NAN, mprev = NAN;
+    cand cz = z == lo ? clo : chi;
+    for (int it = 0; it < 60 && hi - lo > 1e-12; it++) {
+        double zn;
+        if (isfinite(mzz) && mzz > 0)
+            zn = z - mz / mzz;
+        else if (isfinite(mprev) && mz != mprev)
+            zn = z - mz * (z - zprev) / (mz - mprev);
+        else
+            zn = 0.5 * (lo + hi);
+        if (!(zn > lo && zn < hi))
+            zn = 0.5 * (lo + hi);
+        double step = fabs(zn - z);
+        zprev = z;
+        mprev = mz;
+        cand cn;
+        double mpn, mppn;
+        int jh = nz > 1 ? (int)lround((zn - t->z[0]) / (t->z[1] - t->z[0])) : 0;
+        jh = jh < 0 ? 0 : jh >= nz ? nz - 1 : jh;
+        gd_status st = slice_min_hint(t, half, P, zn, NULL, NULL, -1, gv, fv, jh, cz.u * rb1, &cn, &mpn, &mppn, iters,
+                                      err);
+        if (st != GD_OK)
+            return st;
+        if (!cn.ok || !isfinite(mpn))
+            break;
+        z = zn;
+        mz = mpn;
+        mzz = mppn;
+        cz = cn;
+        keep_best(&po->best, &cn);
+        if (mz < 0)
+            lo = z;
+        else
+            hi = z;
+        if (step < 1e-12 || fabs(mz) <= flat)
+            break;
+    }
+    *cz_out = cz;
+    return GD_OK;
+}
+
+/* Every edge of a flat minimum: the face ends, the tip and root edges, the gear boundaries. */
+static gd_status examine_edges(gd_tca *t, int half, const tca_pose *P, const double *gv, const unsigned char *fv,
+                               pair_out *po, int *iters, gd_error *err)
+{
+    int np = t->nprof, nz = t->nface;
+    gd_status st;
+    cand c;
+    for (int e = 0; e < 2; e++) {
+        int j = e == 0 ? 0 : nz - 1;
+        st = slice_min(t, half, P, j, -1, gv, fv, &c, iters, err);
+        if (st != GD_OK)
+            return st;
+        keep_best(&po->best, &c);
+        add_tie(po, &c);
+    }
+    for (int e = 0; e < 2; e++) {
+        int i = e == 0 ? np - 1 : 0;
+        int jb = -1;
+        for (int j = 0; j < nz; j++)
+            if (fv[(size_t)j * np + i] == 0 && (jb < 0 || gv[(size_t)j * np + i] < gv[(size_t)jb * np + i]))
+                jb = j;
+        if (jb < 0)
+            continue;
+        st = along_min(t, half, P, t->rho[i], t->z[jb], &c, iters, err);
+        if (st != GD_OK)
+            return st;
+        keep_best(&po->best, &c);
+        add_tie(po, &c);
+    }
+    for (int k = TCA_C_G_ROOT; k <= TCA_C_G_HI; k++) {
+        int best_n = -1;
+        for (int j = 0; j < nz; j++)
+            for (int i = 0; i < np; i++) {
+                size_t n = (size_t)j * np + i;
+                if (fv[n] != 0)
+                    continue;
+                int adj = (i > 0 && fv[n - 1] == 1 + k) || (i < np - 1 && fv[n + 1] == 1 + k);
+                if (adj && (best_n < 0 || gv[n] < gv[best_n]))
+                    best_n = (int)n;
+            }
+        if (best_n < 0)
+            continue;
+        st = lagrange_min(t, half, P, k, t->rho[best_n % np], t->z[best_n / np], &c, iters, err);
+        if (st != GD_OK)
+            return st;
+        keep_best(&po->best, &c);
+        add_tie(po, &c);
+    }
+    return GD_OK;
+}
+
+/* The minimum along z of the slice minimum from grid slice j0 (slope mp0, candidate c0): the
+ * bracket, then Newton in it; *line_like when m is flat at j0 (line contact). */
+static gd_status refine_along_face(gd_tca *t, int half, const tca_pose *P, const double *gv, const unsigned char *fv,
+                                   int j0, double mp0, const cand *c0, double flat, pair_out *po, int *line_like,
+                                   int *iters, gd_error *err)
+{
+    *line_like = 0;
+    if (fabs(mp0) <= flat) {
+        *line_like = 1;
+        return GD_OK;
+    }
+    z_bracket br;
+    gd_status st = bracket_downhill(t, half, P, gv, fv, j0, mp0, c0, flat, po, &br, iters, err);
+    if (st != GD_OK)
+        return st;
+    if (isfinite(br.zb)) {
+        cand cz;
+        st = newton_on_slope(t, half, P, gv, fv, &br, flat, po, &cz, iters, err);
+        if (st != GD_OK)
+            return st;
+        keep_best(&po->best, &cz);
+        add_tie(po, &cz);
+    } else {
+        keep_best(&po->best, &br.ca);
+        add_tie(po, &br.ca);
+    }
+    return GD_OK;
+}
+
 /* The exact minimum of one pair from its best grid node (i0, j0). The pair's minimum is the
  * minimum over z of the slice minimum m(z) = min over rho of g(rho, z), each slice exact over its
  * feasible rho interval (so that the pinion tip and root edges and the gear boundaries are part of
@@ -449,9 +675,8 @@ static gd_status refine_from_grid(gd_tca *t, int half, const tca_pose *P, const 
                                   int *iters, gd_error *err)
 {
     int np = t->nprof, nz = t->nface;
-    const double rb1 = t->h[half].f1.rb;
     memset(po, 0, sizeof *po);
-    cand c0, c;
+    cand c0;
     double mp0, mpp0;
     gd_status st = GD_OK;
     if (pre) {
@@ -465,147 +690,20 @@ static gd_status refine_from_grid(gd_tca *t, int half, const tca_pose *P, const 
     }
     keep_best(&po->best, &c0);
     add_tie(po, &c0);
-    if (!t->refine || !c0.ok)
-        goto done;
-    /* flatness scale: a slope below this over the face is rounding (line contact) */
-    double face = t->z[nz - 1] - t->z[0];
-    double flat = 1e-13 / (t->h[half].f2.rb * face);
-    int line_like = 0;
-    if (fabs(mp0) <= flat) {
-        line_like = 1;
-    } else {
-        /* bracket: walk slice by slice downhill until the slope changes sign or the face ends */
-        int dir = mp0 > 0 ? -1 : 1;
-        int j = j0;
-        double za = t->z[j0], ma = mp0;
-        cand ca = c0;
-        double zb = NAN, mb = NAN;
-        cand cb = {0};
-        while (1) {
-            int jn = j + dir;
-            if (jn < 0 || jn >= nz)
-                break; /* the face end is the minimum of m: ca */
-            cand cn;
-            double mpn;
-            st = slice_min_z(t, half, P, t->z[jn], gv + (size_t)jn * np, fv + (size_t)jn * np, -1, &cn, &mpn, NULL,
-                             iters, err);
+    if (t->refine && c0.ok) {
+        /* flatness scale: a slope below this over the face is rounding (line contact) */
+        double face = t->z[nz - 1] - t->z[0];
+        double flat = 1e-13 / (t->h[half].f2.rb * face);
+        int line_like;
+        st = refine_along_face(t, half, P, gv, fv, j0, mp0, &c0, flat, po, &line_like, iters, err);
+        if (st != GD_OK)
+            return st;
+        if (line_like || all_edges) {
+            st = examine_edges(t, half, P, gv, fv, po, iters, err);
             if (st != GD_OK)
                 return st;
-            if (!cn.ok)
-                break;
-            keep_best(&po->best, &cn);
-            if (dir * mpn >= 0 || fabs(mpn) <= flat) {
-                zb = t->z[jn];
-                mb = mpn;
-                cb = cn;
-                break;
-            }
-            j = jn;
-            za = t->z[jn];
-            ma = mpn;
-            ca = cn;
-        }
-        if (isfinite(zb)) {
-            /* safeguarded Newton on m'(z) in [lo, hi] with m'(lo) < 0 < m'(hi) */
-            double lo = za, hi = zb, mlo = ma, mhi = mb;
-            cand clo = ca, chi = cb;
-            if (lo > hi) {
-                double tz = lo; lo = hi; hi = tz;
-                double tm = mlo; mlo = mhi; mhi = tm;
-                cand tc = clo; clo = chi; chi = tc;
-            }
-            (void)mhi;
-            double z = fabs(mlo) < fabs(mb) ? lo : hi;
-            double mz = z == lo ? mlo : mhi, mzz = NAN, zprev = NAN, mprev = NAN;
-            cand cz = z == lo ? clo : chi;
-            for (int it = 0; it < 60 && hi - lo > 1e-12; it++) {
-                double zn;
-                if (isfinite(mzz) && mzz > 0)
-                    zn = z - mz / mzz;
-                else if (isfinite(mprev) && mz != mprev)
-                    zn = z - mz * (z - zprev) / (mz - mprev);
-                else
-                    zn = 0.5 * (lo + hi);
-                if (!(zn > lo && zn < hi))
-                    zn = 0.5 * (lo + hi);
-                double step = fabs(zn - z);
-                zprev = z;
-                mprev = mz;
-                cand cn;
-                double mpn, mppn;
-                int jh = nz > 1 ? (int)lround((zn - t->z[0]) / (t->z[1] - t->z[0])) : 0;
-                jh = jh < 0 ? 0 : jh >= nz ? nz - 1 : jh;
-                st = slice_min_hint(t, half, P, zn, NULL, NULL, -1, gv, fv, jh, cz.u * rb1, &cn, &mpn, &mppn, iters,
-                                    err);
-                if (st != GD_OK)
-                    return st;
-                if (!cn.ok || !isfinite(mpn))
-                    break;
-                z = zn;
-                mz = mpn;
-                mzz = mppn;
-                cz = cn;
-                keep_best(&po->best, &cn);
-                if (mz < 0)
-                    lo = z;
-                else
-                    hi = z;
-                if (step < 1e-12 || fabs(mz) <= flat)
-                    break;
-            }
-            keep_best(&po->best, &cz);
-            add_tie(po, &cz);
-        } else {
-            keep_best(&po->best, &ca);
-            add_tie(po, &ca);
         }
     }
-    if (line_like || all_edges) {
-        /* every edge of a flat minimum: the face ends, the tip and root edges, the gear boundaries */
-        for (int e = 0; e < 2; e++) {
-            int j = e == 0 ? 0 : nz - 1;
-            st = slice_min(t, half, P, j, -1, gv, fv, &c, iters, err);
-            if (st != GD_OK)
-                return st;
-            keep_best(&po->best, &c);
-            add_tie(po, &c);
-        }
-        for (int e = 0; e < 2; e++) {
-            int i = e == 0 ? np - 1 : 0;
-            int jb = -1;
-            for (int j = 0; j < nz; j++)
-                if (fv[(size_t)j * np + i] == 0 && (jb < 0 || gv[(size_t)j * np + i] < gv[(size_t)jb * np + i]))
-                    jb = j;
-            if (jb < 0)
-                continue;
-            st = along_min(t, half, P, t->rho[i], t->z[jb], &c, iters, err);
-            if (st != GD_OK)
-                return st;
-            keep_best(&po->best, &c);
-            add_tie(po, &c);
-        }
-        for (int k = TCA_C_G_ROOT; k <= TCA_C_G_HI; k++) {
-            int best_n = -1;
-            for (int j = 0; j < nz; j++)
-                for (int i = 0; i < np; i++) {
-                    size_t n = (size_t)j * np + i;
-                    if (fv[n] != 0)
-                        continue;
-                    int adj = (i > 0 && fv[n - 1] == 1 + k) || (i < np - 1 && fv[n + 1] == 1 + k);
-                    if (adj && (best_n < 0 || gv[n] < gv[best_n]))
-                        best_n = (int)n;
-                }
-            if (best_n < 0)
-                continue;
-            st = lagrange_min(t, half, P, k, t->rho[best_n % np], t->z[best_n / np], &c, iters, err);
-            if (st != GD_OK)
-                return st;
-            keep_best(&po->best, &c);
-            add_tie(po, &c);
-        }
-    }
-    (void)rb1;
-done:
     for (int i = 0; i < po->ntie; i++)
         if (po->tie_g[i] <= po->best.g + t->tol_edge)
             po->tie_bits |= po->tie_b[i];
@@ -693,139 +791,153 @@ typedef struct pair_scan {
 
 #define MAX_PAIRS 64
 
-static gd_status scan_and_refine(gd_tca *t, int half, double phi1, int accumulate, gd_tca_contact *out,
-                                 double *gstar_out, gd_error *err)
-{
-    tca_half *H = &t->h[half];
-    int nn = t->nprof * t->nface;
-    double phi2 = tca_phi2_nominal(t, phi1);
-    int lo, hi;
-    tca_pair_range(t, half, phi1, &lo, &hi);
-    if (hi - lo + 1 > t->maxpairs)
-        hi = lo + t->maxpairs - 1;
+/* The state of one position through its phases: the grid of every pair, the estimates, the
+ * refined minimum of each pair and the least of them. */
+typedef struct scan_state {
+    int half, lo, hi, nn;
+    double phi1, phi2;
     pair_scan ps[MAX_PAIRS];
-    int np_ = 0;
-    double gridmin = INFINITY;
-    for (int m = lo; m <= hi; m++) {
-        tca_pose P;
-        tca_pose_at(t, half, phi1, phi2, m, &P);
-        double *gv = t->gbuf + (size_t)(m - lo) * nn;
-        unsigned char *fv = t->fbuf + (size_t)(m - lo) * nn;
-        int b = grid_pair(t, half, &P, gv, fv);
-        if (b < 0)
-            continue;
-        ps[np_].pair = m;
-        ps[np_].best = b;
-        ps[np_].gmin = gv[b];
-        if (gv[b] < gridmin)
-            gridmin = gv[b];
-        np_++;
-    }
-    if (np_ == 0)
-        return gd_error_set(err, GD_ERR_INTERNAL, "TCA: no tooth pair meets at phi1 = %.6g rad (half %d)", phi1, half);
-    /* refine the pairs whose grid minimum may hide the least gap: within the grid resolution of
-     * the least one (the gap a node half a cell away from a line contact can show) */
-    const gd_flank *f1 = &H->f1;
-    double hr = t->nprof > 1 ? (t->rho[1] - t->rho[0]) : 0;
-    double hz = t->nface > 1 ? (t->z[1] - t->z[0]) : 0;
-    double kap = 1.0 / (f1->rb * f1->u_min) + 1.0 / (H->f2.rb * H->f2.u_min);
-    double scale = 1.0 / (H->f2.rb * H->f2.cos_bb);
-    double window = scale * (0.5 * kap * (0.36 * hr * hr + 0.36 * hz * hz * f1->sin_bb * f1->sin_bb) + 2e-6);
-    double gstar = INFINITY;
-    cand best = {0};
-    int best_pair = 0, iters = 0;
+    int np_;
+    double gridmin;
+    double hz;               /* slice spacing */
+    double gstar;
+    cand best;
+    int best_pair, iters;
     double pair_g[MAX_PAIRS], lb[MAX_PAIRS], mp0[MAX_PAIRS];
     unsigned pair_bits[MAX_PAIRS];
     cand c0s[MAX_PAIRS];
-    int order[MAX_PAIRS], nord = 0;
-    /* the exact minimum in the best node's slice of each pair within the window; the pairs are then
-     * refined in the order of that estimate (each one fully: the slice of the grid's least node need
-     * not be the slice nearest the pair's minimum, so no pair is skipped on its estimate) */
-    for (int q = 0; q < np_; q++) {
-        pair_g[q] = INFINITY;
-        pair_bits[q] = 0;
-        lb[q] = INFINITY;
-        if (ps[q].gmin > gridmin + window)
+    int order[MAX_PAIRS], nord;
+} scan_state;
+
+/* Gap at every node of every candidate pair; the pairs that meet, with their least node. */
+static gd_status scan_grid(gd_tca *t, scan_state *S, gd_error *err)
+{
+    S->np_ = 0;
+    S->gridmin = INFINITY;
+    for (int m = S->lo; m <= S->hi; m++) {
+        tca_pose P;
+        tca_pose_at(t, S->half, S->phi1, S->phi2, m, &P);
+        double *gv = t->gbuf + (size_t)(m - S->lo) * S->nn;
+        unsigned char *fv = t->fbuf + (size_t)(m - S->lo) * S->nn;
+        int b = grid_pair(t, S->half, &P, gv, fv);
+        if (b < 0)
+            continue;
+        S->ps[S->np_].pair = m;
+        S->ps[S->np_].best = b;
+        S->ps[S->np_].gmin = gv[b];
+        if (gv[b] < S->gridmin)
+            S->gridmin = gv[b];
+        S->np_++;
+    }
+    if (S->np_ == 0)
+        return gd_error_set(err, GD_ERR_INTERNAL, "TCA: no tooth pair meets at phi1 = %.6g rad (half %d)", S->phi1,
+                            S->half);
+    return GD_OK;
+}
+
+/* The exact minimum in the best node's slice of each pair within the window; the pairs are then
+ * refined in the order of that estimate (each one fully: the slice of the grid's least node need
+ * not be the slice nearest the pair's minimum, so no pair is skipped on its estimate). */
+static gd_status estimate_pairs(gd_tca *t, scan_state *S, double window, gd_error *err)
+{
+    S->nord = 0;
+    for (int q = 0; q < S->np_; q++) {
+        S->pair_g[q] = INFINITY;
+        S->pair_bits[q] = 0;
+        S->lb[q] = INFINITY;
+        if (S->ps[q].gmin > S->gridmin + window)
             continue;
         if (!t->refine) {
-            lb[q] = ps[q].gmin;
-            order[nord++] = q;
+            S->lb[q] = S->ps[q].gmin;
+            S->order[S->nord++] = q;
             continue;
         }
-        int m = ps[q].pair, j0 = ps[q].best / t->nprof;
+        int m = S->ps[q].pair, j0 = S->ps[q].best / t->nprof;
         tca_pose P;
-        tca_pose_at(t, half, phi1, phi2, m, &P);
-        const double *gv = t->gbuf + (size_t)(m - lo) * nn;
-        const unsigned char *fv = t->fbuf + (size_t)(m - lo) * nn;
+        tca_pose_at(t, S->half, S->phi1, S->phi2, m, &P);
+        const double *gv = t->gbuf + (size_t)(m - S->lo) * S->nn;
+        const unsigned char *fv = t->fbuf + (size_t)(m - S->lo) * S->nn;
         double mpp;
-        gd_status st = slice_min_z(t, half, &P, t->z[j0], gv + (size_t)j0 * t->nprof, fv + (size_t)j0 * t->nprof,
-                                   ps[q].best % t->nprof, &c0s[q], &mp0[q], &mpp, &iters, err);
+        gd_status st = slice_min_z(t, S->half, &P, t->z[j0], gv + (size_t)j0 * t->nprof, fv + (size_t)j0 * t->nprof,
+                                   S->ps[q].best % t->nprof, &S->c0s[q], &S->mp0[q], &mpp, &S->iters, err);
         if (st != GD_OK)
             return st;
-        if (!c0s[q].ok)
+        if (!S->c0s[q].ok)
             continue;
-        lb[q] = c0s[q].g - (isfinite(mp0[q]) ? fabs(mp0[q]) * hz : 0);
-        order[nord++] = q;
+        S->lb[q] = S->c0s[q].g - (isfinite(S->mp0[q]) ? fabs(S->mp0[q]) * S->hz : 0);
+        S->order[S->nord++] = q;
     }
-    for (int a = 1; a < nord; a++)
-        for (int b = a; b > 0 && lb[order[b]] < lb[order[b - 1]]; b--) {
-            int tmp = order[b];
-            order[b] = order[b - 1];
-            order[b - 1] = tmp;
+    for (int a = 1; a < S->nord; a++)
+        for (int b = a; b > 0 && S->lb[S->order[b]] < S->lb[S->order[b - 1]]; b--) {
+            int tmp = S->order[b];
+            S->order[b] = S->order[b - 1];
+            S->order[b - 1] = tmp;
         }
-    for (int oq = 0; oq < nord; oq++) {
-        int q = order[oq];
-        int m = ps[q].pair;
+    return GD_OK;
+}
+
+/* Refine the estimated pairs in order; the least of their minima. */
+static gd_status refine_pairs(gd_tca *t, scan_state *S, gd_error *err)
+{
+    for (int oq = 0; oq < S->nord; oq++) {
+        int q = S->order[oq];
+        int m = S->ps[q].pair;
         tca_pose P;
-        tca_pose_at(t, half, phi1, phi2, m, &P);
-        const double *gv = t->gbuf + (size_t)(m - lo) * nn;
-        const unsigned char *fv = t->fbuf + (size_t)(m - lo) * nn;
+        tca_pose_at(t, S->half, S->phi1, S->phi2, m, &P);
+        const double *gv = t->gbuf + (size_t)(m - S->lo) * S->nn;
+        const unsigned char *fv = t->fbuf + (size_t)(m - S->lo) * S->nn;
         pair_out po;
-        gd_status st = refine_from_grid(t, half, &P, gv, fv, ps[q].best % t->nprof, ps[q].best / t->nprof, 0,
-                                        t->refine ? &c0s[q] : NULL, t->refine ? mp0[q] : 0, &po, &iters, err);
+        gd_status st = refine_from_grid(t, S->half, &P, gv, fv, S->ps[q].best % t->nprof, S->ps[q].best / t->nprof,
+                                        0, t->refine ? &S->c0s[q] : NULL, t->refine ? S->mp0[q] : 0, &po, &S->iters,
+                                        err);
         if (st != GD_OK)
             return st;
         if (!po.best.ok)
             continue;
-        pair_g[q] = po.best.g;
-        pair_bits[q] = po.tie_bits;
-        if (po.best.g < gstar) {
-            gstar = po.best.g;
-            best = po.best;
-            best_pair = m;
+        S->pair_g[q] = po.best.g;
+        S->pair_bits[q] = po.tie_bits;
+        if (po.best.g < S->gstar) {
+            S->gstar = po.best.g;
+            S->best = po.best;
+            S->best_pair = m;
         }
     }
-    if (!best.ok) {
+    if (!S->best.ok) {
         /* no refinement succeeded: the grid minimum */
-        for (int q = 0; q < np_; q++)
-            if (ps[q].gmin <= gridmin) {
-                best_pair = ps[q].pair;
-                int n = ps[q].best;
-                best.u = t->rho[n % t->nprof] / f1->rb;
-                best.z = t->z[n / t->nprof];
-                best.g = ps[q].gmin;
-                best.ok = 1;
-                gstar = best.g;
+        for (int q = 0; q < S->np_; q++)
+            if (S->ps[q].gmin <= S->gridmin) {
+                S->best_pair = S->ps[q].pair;
+                int n = S->ps[q].best;
+                S->best.u = t->rho[n % t->nprof] / t->h[S->half].f1.rb;
+                S->best.z = t->z[n / t->nprof];
+                S->best.g = S->ps[q].gmin;
+                S->best.ok = 1;
+                S->gstar = S->best.g;
             }
     }
-    /* pairs in contact and edge contact (ties within the tolerances) */
-    int in_contact = 0;
+    return GD_OK;
+}
+
+/* Pairs in contact and edge contact (ties within the tolerances); without refinement the grid
+ * definition: a least node on the boundary of the flank or of the feasible set. */
+static unsigned contact_edges(const gd_tca *t, const scan_state *S, int *in_contact)
+{
     unsigned edge = 0;
-    for (int q = 0; q < np_; q++) {
-        if (pair_g[q] <= gstar + t->tol_contact) {
-            in_contact++;
-            if (pair_g[q] <= gstar + t->tol_edge)
-                edge |= pair_bits[q];
+    *in_contact = 0;
+    for (int q = 0; q < S->np_; q++) {
+        if (S->pair_g[q] <= S->gstar + t->tol_contact) {
+            (*in_contact)++;
+            if (S->pair_g[q] <= S->gstar + t->tol_edge)
+                edge |= S->pair_bits[q];
         }
     }
     if (!t->refine) {
-        /* grid definition: a least node on the boundary of the flank or of the feasible set */
         edge = 0;
-        for (int q = 0; q < np_; q++) {
-            if (ps[q].gmin > gstar + t->tol_edge)
+        for (int q = 0; q < S->np_; q++) {
+            if (S->ps[q].gmin > S->gstar + t->tol_edge)
                 continue;
-            int n = ps[q].best, i = n % t->nprof, j = n / t->nprof;
-            const unsigned char *fv = t->fbuf + (size_t)(ps[q].pair - lo) * nn;
+            int n = S->ps[q].best, i = n % t->nprof, j = n / t->nprof;
+            const unsigned char *fv = t->fbuf + (size_t)(S->ps[q].pair - S->lo) * S->nn;
             if (i == 0) edge |= tca_edge_bit(TCA_C_P_ROOT);
             if (i == t->nprof - 1) edge |= tca_edge_bit(TCA_C_P_TIP);
             if (j == 0) edge |= tca_edge_bit(TCA_C_P_LO);
@@ -834,32 +946,77 @@ static gd_status scan_and_refine(gd_tca *t, int half, double phi1, int accumulat
             if (i < t->nprof - 1 && fv[n + 1]) edge |= tca_edge_bit(fv[n + 1] - 1);
         }
     }
-    if (accumulate) {
-        double s = H->f2.rb * H->f2.cos_bb;
-        for (int q = 0; q < np_; q++) {
-            int m = ps[q].pair;
-            const double *gv = t->gbuf + (size_t)(m - lo) * nn;
-            const unsigned char *fv = t->fbuf + (size_t)(m - lo) * nn;
-            for (int n = 0; n < nn; n++) {
-                if (fv[n])
-                    continue;
-                double sep = (gv[n] - gstar) * s, ease = gv[n] * s;
-                if (!(H->sep[n] <= sep))
-                    H->sep[n] = sep;
-                if (!(H->ease[n] <= ease))
-                    H->ease[n] = ease;
-            }
+    return edge;
+}
+
+/* The topography: least separation and ease-off of every node over the positions. */
+static void accumulate_topography(gd_tca *t, const scan_state *S)
+{
+    tca_half *H = &t->h[S->half];
+    double s = H->f2.rb * H->f2.cos_bb;
+    for (int q = 0; q < S->np_; q++) {
+        int m = S->ps[q].pair;
+        const double *gv = t->gbuf + (size_t)(m - S->lo) * S->nn;
+        const unsigned char *fv = t->fbuf + (size_t)(m - S->lo) * S->nn;
+        for (int n = 0; n < S->nn; n++) {
+            if (fv[n])
+                continue;
+            double sep = (gv[n] - S->gstar) * s, ease = gv[n] * s;
+            if (!(H->sep[n] <= sep))
+                H->sep[n] = sep;
+            if (!(H->ease[n] <= ease))
+                H->ease[n] = ease;
         }
     }
+}
+
+static gd_status scan_and_refine(gd_tca *t, int half, double phi1, int accumulate, gd_tca_contact *out,
+                                 double *gstar_out, gd_error *err)
+{
+    tca_half *H = &t->h[half];
+    scan_state S;
+    S.half = half;
+    S.phi1 = phi1;
+    S.nn = t->nprof * t->nface;
+    S.phi2 = tca_phi2_nominal(t, phi1);
+    tca_pair_range(t, half, phi1, &S.lo, &S.hi);
+    if (S.hi - S.lo + 1 > t->maxpairs)
+        S.hi = S.lo + t->maxpairs - 1;
+    gd_status st = scan_grid(t, &S, err);
+    if (st != GD_OK)
+        return st;
+    /* refine the pairs whose grid minimum may hide the least gap: within the grid resolution of
+     * the least one (the gap a node half a cell away from a line contact can show) */
+    const gd_flank *f1 = &H->f1;
+    double hr = t->nprof > 1 ? (t->rho[1] - t->rho[0]) : 0;
+    double hz = t->nface > 1 ? (t->z[1] - t->z[0]) : 0;
+    double kap = 1.0 / (f1->rb * f1->u_min) + 1.0 / (H->f2.rb * H->f2.u_min);
+    double scale = 1.0 / (H->f2.rb * H->f2.cos_bb);
+    double window = scale * (0.5 * kap * (0.36 * hr * hr + 0.36 * hz * hz * f1->sin_bb * f1->sin_bb) + 2e-6);
+    S.hz = hz;
+    S.gstar = INFINITY;
+    S.best = (cand){0};
+    S.best_pair = 0;
+    S.iters = 0;
+    st = estimate_pairs(t, &S, window, err);
+    if (st != GD_OK)
+        return st;
+    st = refine_pairs(t, &S, err);
+    if (st != GD_OK)
+        return st;
+    int in_contact;
+    unsigned edge = contact_edges(t, &S, &in_contact);
+    if (accumulate)
+        accumulate_topography(t, &S);
     if (out) {
-        tca_fill_contact(t, half, phi1, best_pair, best.u, best.z, -gstar, out);
+        tca_fill_contact(t, half, phi1, S.best_pair, S.best.u, S.best.z, -S.gstar, out);
         out->edge = edge;
         out->pairs_in_contact = in_contact;
-        out->iterations = iters;
+        out->iterations = S.iters;
         out->converged = 1;
     }
     if (gstar_out)
-        *gstar_out = gstar;
+        *gstar_out = S.gstar;
     return GD_OK;
 }
 

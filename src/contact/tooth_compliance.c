@@ -2,6 +2,7 @@
  * with exact influence coefficients from tabulated cumulative integrals, Sainsot's fillet
  * foundation, linear Hertz, and the face coupling kernel. */
 #include "geardyn/gd_compliance.h"
+#include "../core/gsl_quiet.h"
 #include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_errno.h>
@@ -10,13 +11,11 @@
 #include <math.h>
 #include <string.h>
 
-static double involute(double a) { return tan(a) - a; }
-
 /* angle of the half thickness at radius r: the involute above the base circle, the radial line
  * of the base angle below it (Tian 2004) */
 static double half_angle(const gd_tooth *t, double r)
 {
-    return r > t->rb ? t->psi_b - involute(acos(t->rb / r)) : t->psi_b;
+    return r > t->rb ? t->psi_b - gd_involute(acos(t->rb / r)) : t->psi_b;
 }
 
 /* centre-line coordinate x(r), its derivative, and the half thickness y(r) */
@@ -112,6 +111,7 @@ GD_API void gd_tooth_free(gd_tooth *t)
 
 GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body, gd_tooth *t, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(t, 0, sizeof *t);
     t->E = c->youngs_modulus_gpa * 1e9;
     t->nu = c->poisson_ratio;
@@ -119,7 +119,7 @@ GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body,
     t->rf = g->rf[body];
     t->ra = g->ra[body];
     double s_t = g->mt * (M_PI / 2 + 2 * g->x[body] * tan(g->alpha_n)); /* transverse reference thickness */
-    t->psi_b = s_t / (2 * g->r[body]) + involute(g->alpha_t);
+    t->psi_b = s_t / (2 * g->r[body]) + gd_involute(g->alpha_t);
     t->theta_f = half_angle(t, t->rf);
     t->x_root = t->rf * cos(t->theta_f);
     double rbore = 0.5e-3 * (body == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm);
@@ -135,6 +135,7 @@ GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body,
 GD_API gd_status gd_tooth_init_beam(gd_tooth *t, double E, double nu, double x_root, double x_tip, double y,
                                     gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(t, 0, sizeof *t);
     t->E = E;
     t->nu = nu;
