@@ -119,6 +119,11 @@ GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p,
  * and summary.json (which lists files[0..nfiles-1] as the files of the run). */
 GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
                                        gd_error *err);
+/* summary.json of a sweep: the settings, failed points, motion tallies, branches and the
+ * hysteresis intervals (gd_sweep_hysteresis). */
+GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
+                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
+                                        gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -151,10 +151,21 @@ GD_API gd_status gd_sweep_run(const gd_case *base, const gd_sweep_plan *p, gd_sw
 /* Points not yet done or failed. */
 GD_API int gd_sweep_pending(const gd_sweep_plan *p, const gd_sweep_point *pts);
 
+/* A hysteresis interval: consecutive values of the first parameter, in increasing order, at
+ * which the up and down branches of one row differ (both points done, and the motion class
+ * differs or the combined RMS acceleration by more than 5 % of the larger). */
+typedef struct gd_sweep_interval {
+    int row;                 /* index along parameter2 (0 for a one-parameter sweep) */
+    int from, to;            /* indices into plan->values[0] of the smallest and largest value */
+    int points;              /* grid points in the interval */
+} gd_sweep_interval;
 
-GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
-                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
-                                        gd_error *err);
+/* The hysteresis intervals of a continuation sweep in both directions, row by row, each row
+ * in increasing parameter order: *iv (malloc'd, free it; NULL when none) and *niv. Any other
+ * sweep has none. Pending and failed points never differ. */
+GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, gd_sweep_interval **iv,
+                                     int *niv, gd_error *err);
+
 
 #ifdef __cplusplus
 }

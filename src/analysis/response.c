@@ -1,13 +1,13 @@
 /* The `response` analysis of one operating point. */
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_scene.h"
+#include "../core/clock.h"
 #include "../dynamics/model_internal.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 GD_API const char *gd_impact_regime_name(int regime)
 {
@@ -219,17 +219,48 @@ static int settle_extend(settle_ctx *sc, const double *y, double tol, long left)
     return 0; /* nothing converges: chaotic, quasi-periodic, or a period above SETTLE_PMAX */
 }
 
-GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
-                                 const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err)
+/* One response run: its simulators, the adaptive transient, the Poincare points of the
+ * window and the two-trajectory exponent's sum. */
+typedef struct resp_run {
+    const gd_case *c;
+    const gd_model *m;
+    const gd_response_hooks *hooks;
+    void *user;
+    gd_solver_opts so;
+    gd_sim *s, *s2;          /* the trajectory and its two-trajectory companion (or NULL) */
+    settle_ctx *sc;          /* the adaptive transient (or NULL) */
+    double *pts;             /* the Poincare points of the window */
+    long npts;
+    long ntrans, max_trans, total;
+    double ptol, d0, lsum, lt0;
+    run_ctx r;
+} resp_run;
+
+/* The companion trajectory of the two-trajectory exponent: displaced by d0 along a fixed
+ * generic direction. */
+static gd_status companion_create(const gd_model *m, const gd_solver_opts *so, const double *y0,
+                                  const gd_modes *md0, double d0, gd_sim **s2, gd_error *err)
 {
-    struct timespec w0, w1;
-    clock_gettime(CLOCK_MONOTONIC, &w0);
-    memset(res, 0, sizeof *res);
-    gd_response_opts dflt;
-    if (!opts) {
-        gd_response_opts_default(&dflt);
-        opts = &dflt;
+    double y2[GD_MAX_STATE], nrm = 0;
+    for (int i = 0; i < m->n; i++) {
+        y2[i] = sin(1.0 + 2.3 * i);
+        nrm += y2[i] * y2[i];
     }
+    for (int i = 0; i < m->n; i++)
+        y2[i] = y0[i] + d0 * y2[i] / sqrt(nrm);
+    gd_modes md2 = *md0;
+    gd_status st = gd_model_consistent_modes(m, 0.0, y2, &md2, err);
+    if (st == GD_OK)
+        st = gd_sim_create(m, so, y2, &md2, s2, err);
+    return st;
+}
+
+/* The simulators from the start state (opts->y0 or the case's), the sampling of the window
+ * and the buffers. Nothing to free on failure. */
+static gd_status response_setup(resp_run *x, const gd_response_opts *opts, gd_error *err)
+{
+    const gd_case *c = x->c;
+    const gd_model *m = x->m;
     double y0[GD_MAX_STATE];
     gd_modes md0;
     gd_status st;
@@ -238,187 +269,217 @@ GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_r
         md0 = *opts->md0;
     } else if ((st = gd_initial_state(c, m, y0, &md0, err)) != GD_OK)
         return st;
-    gd_solver_opts so;
-    gd_solver_opts_from_case(c, &so);
+    gd_solver_opts_from_case(c, &x->so);
     int two = c->lyapunov_exponents > 0 && c->lyapunov_method == GD_LYAP_TWO_TRAJECTORY;
-    so.n_tangent = two ? 0 : (c->lyapunov_exponents < m->n ? c->lyapunov_exponents : m->n);
-    gd_sim *s = NULL, *s2 = NULL;
-    if ((st = gd_sim_create(m, &so, y0, &md0, &s, err)) != GD_OK)
+    x->so.n_tangent = two ? 0 : (c->lyapunov_exponents < m->n ? c->lyapunov_exponents : m->n);
+    if ((st = gd_sim_create(m, &x->so, y0, &md0, &x->s, err)) != GD_OK)
         return st;
-    double d0 = c->lyapunov_separation, lsum = 0.0, lt0 = 0.0;
-    if (two) {
-        /* the companion trajectory: displaced by d0 along a fixed generic direction */
-        double y2[GD_MAX_STATE], nrm = 0;
-        for (int i = 0; i < m->n; i++) {
-            y2[i] = sin(1.0 + 2.3 * i);
-            nrm += y2[i] * y2[i];
-        }
-        for (int i = 0; i < m->n; i++)
-            y2[i] = y0[i] + d0 * y2[i] / sqrt(nrm);
-        gd_modes md2 = md0;
-        if ((st = gd_model_consistent_modes(m, 0.0, y2, &md2, err)) != GD_OK ||
-            (st = gd_sim_create(m, &so, y2, &md2, &s2, err)) != GD_OK) {
-            gd_sim_free(s);
-            return st;
-        }
+    x->d0 = c->lyapunov_separation;
+    if (two && (st = companion_create(m, &x->so, y0, &md0, x->d0, &x->s2, err)) != GD_OK) {
+        gd_sim_free(x->s);
+        return st;
     }
-    run_ctx r;
-    memset(&r, 0, sizeof r);
-    r.m = m;
-    r.hooks = hooks;
-    r.user = user;
-    long ntrans = c->transient_periods;
-    long max_trans = c->transient_max_periods > ntrans ? c->transient_max_periods : ntrans;
-    double ptol = opts->periodicity_tol > 0 ? opts->periodicity_tol : c->periodicity_tol;
-    settle_ctx *sc = NULL;
-    if (max_trans > ntrans && !(sc = calloc(1, sizeof *sc))) {
-        gd_sim_free(s);
-        gd_sim_free(s2);
+    x->r.m = m;
+    x->r.hooks = x->hooks;
+    x->r.user = x->user;
+    x->ntrans = c->transient_periods;
+    x->max_trans = c->transient_max_periods > x->ntrans ? c->transient_max_periods : x->ntrans;
+    x->ptol = opts->periodicity_tol > 0 ? opts->periodicity_tol : c->periodicity_tol;
+    if (x->max_trans > x->ntrans && !(x->sc = calloc(1, sizeof *x->sc))) {
+        gd_sim_free(x->s);
+        gd_sim_free(x->s2);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the adaptive transient");
     }
-    if (sc)
-        sc->n = m->n;
-    r.t_record = (double)ntrans * m->period;
-    r.dt_sample = m->period / c->samples_per_period;
-    r.nsamples = (long)c->record_periods * c->samples_per_period;
-    r.sec = 1.0 / m->omega_n;
-    r.len_um = m->bc_m * 1e6;
-    gd_sim_set_hooks(s, on_step, on_event, &r);
-    long total = ntrans + c->record_periods;
-    double *pts = malloc(sizeof(double) * (size_t)m->n * (size_t)(c->record_periods + 1));
-    if (!pts) {
-        free(sc);
-        gd_sim_free(s);
-        gd_sim_free(s2);
+    if (x->sc)
+        x->sc->n = m->n;
+    x->r.t_record = (double)x->ntrans * m->period;
+    x->r.dt_sample = m->period / c->samples_per_period;
+    x->r.nsamples = (long)c->record_periods * c->samples_per_period;
+    x->r.sec = 1.0 / m->omega_n;
+    x->r.len_um = m->bc_m * 1e6;
+    gd_sim_set_hooks(x->s, on_step, on_event, &x->r);
+    x->total = x->ntrans + c->record_periods;
+    x->pts = malloc(sizeof(double) * (size_t)m->n * (size_t)(c->record_periods + 1));
+    if (!x->pts) {
+        free(x->sc);
+        gd_sim_free(x->s);
+        gd_sim_free(x->s2);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for %d Poincare points", c->record_periods);
     }
-    long npts = 0;
-    for (long k = 0; k < total; k++) {
-        if (k == ntrans) {
-            if (so.n_tangent > 0)
-                gd_sim_lyapunov_start(s);
-            lsum = 0.0;
-            lt0 = gd_sim_time(s);
-            const gd_modes *md = gd_sim_modes(s);
-            for (int j = 0; j < m->nmesh; j++)
-                r.visited[j][md->mode[m->mesh_clear[j]] + 1] = 1;
-            const double *y = gd_sim_state(s);
-            memcpy(pts + npts * m->n, y, sizeof(double) * (size_t)m->n);
-            npts++;
-            if (hooks && hooks->poincare && hooks->poincare(user, k, gd_sim_time(s) * r.sec, y)) {
-                st = gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the Poincare hook");
-                goto done;
-            }
-            /* the sample at the very start of the window */
-            on_step(s, gd_sim_time(s), gd_sim_time(s), &r);
-            if (c->exact_samples) /* samples on step ends: the method's states, not the interpolant's */
-                gd_sim_set_sample_grid(s, r.t_record, r.dt_sample);
-        }
-        st = gd_sim_period(s, err);
+    return GD_OK;
+}
+
+/* Keep the state at the end of period k (the window's Poincare point) and hand it to the hook. */
+static gd_status window_point(resp_run *x, long k, gd_error *err)
+{
+    const double *y = gd_sim_state(x->s);
+    memcpy(x->pts + x->npts * x->m->n, y, sizeof(double) * (size_t)x->m->n);
+    x->npts++;
+    if (x->hooks && x->hooks->poincare && x->hooks->poincare(x->user, k, gd_sim_time(x->s) * x->r.sec, y))
+        return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the Poincare hook");
+    return GD_OK;
+}
+
+/* The start of the recorded window (after period k = ntrans - 1): the exponents start, the
+ * contact modes held now count as visited, the first Poincare point and the first sample. */
+static gd_status window_open(resp_run *x, long k, gd_error *err)
+{
+    const gd_model *m = x->m;
+    gd_sim *s = x->s;
+    if (x->so.n_tangent > 0)
+        gd_sim_lyapunov_start(s);
+    x->lsum = 0.0;
+    x->lt0 = gd_sim_time(s);
+    const gd_modes *md = gd_sim_modes(s);
+    for (int j = 0; j < m->nmesh; j++)
+        x->r.visited[j][md->mode[m->mesh_clear[j]] + 1] = 1;
+    gd_status st = window_point(x, k, err);
+    if (st != GD_OK)
+        return st;
+    /* the sample at the very start of the window */
+    on_step(s, gd_sim_time(s), gd_sim_time(s), &x->r);
+    if (x->c->exact_samples) /* samples on step ends: the method's states, not the interpolant's */
+        gd_sim_set_sample_grid(s, x->r.t_record, x->r.dt_sample);
+    return GD_OK;
+}
+
+/* Period k of the companion trajectory: its separation from the trajectory (summed in the
+ * window), then renormalised to d0 along the same direction. */
+static gd_status companion_period(resp_run *x, long k, gd_error *err)
+{
+    const gd_model *m = x->m;
+    gd_status st = gd_sim_period(x->s2, err);
+    if (st != GD_OK) {
+        gd_error_prefix(err, "two-trajectory Lyapunov exponent, companion trajectory");
+        return st;
+    }
+    const double *ya = gd_sim_state(x->s), *yb = gd_sim_state(x->s2);
+    double d = 0, y2[GD_MAX_STATE];
+    for (int i = 0; i < m->n; i++)
+        d += (yb[i] - ya[i]) * (yb[i] - ya[i]);
+    d = sqrt(d);
+    if (!(d > 0) || !isfinite(d))
+        return gd_error_set(err, GD_ERR_SOLVER, "two-trajectory Lyapunov exponent: the trajectories %s",
+                            d > 0 ? "diverged" : "coincide");
+    if (k >= x->ntrans)
+        x->lsum += log(d / x->d0);
+    for (int i = 0; i < m->n; i++)
+        y2[i] = ya[i] + (yb[i] - ya[i]) * x->d0 / d;
+    return gd_sim_set_state(x->s2, y2, err);
+}
+
+/* Integrate the transient (extended while the section still converges) and the window. */
+static gd_status response_periods(resp_run *x, gd_error *err)
+{
+    gd_status st = GD_OK;
+    for (long k = 0; k < x->total; k++) {
+        if (k == x->ntrans && (st = window_open(x, k, err)) != GD_OK)
+            return st;
+        st = gd_sim_period(x->s, err);
         if (st != GD_OK) {
-            if (r.st != GD_OK) {
-                st = r.st;
+            if (x->r.st != GD_OK) {
+                st = x->r.st;
                 if (err)
-                    *err = r.hook_err;
+                    *err = x->r.hook_err;
             }
-            goto done;
+            return st;
         }
-        if (s2) {
-            st = gd_sim_period(s2, err);
-            if (st != GD_OK) {
-                gd_error_prefix(err, "two-trajectory Lyapunov exponent, companion trajectory");
-                goto done;
-            }
-            const double *ya = gd_sim_state(s), *yb = gd_sim_state(s2);
-            double d = 0, y2[GD_MAX_STATE];
-            for (int i = 0; i < m->n; i++)
-                d += (yb[i] - ya[i]) * (yb[i] - ya[i]);
-            d = sqrt(d);
-            if (!(d > 0) || !isfinite(d)) {
-                st = gd_error_set(err, GD_ERR_SOLVER, "two-trajectory Lyapunov exponent: the trajectories %s",
-                                  d > 0 ? "diverged" : "coincide");
-                goto done;
-            }
-            if (k >= ntrans)
-                lsum += log(d / d0);
-            for (int i = 0; i < m->n; i++)
-                y2[i] = ya[i] + (yb[i] - ya[i]) * d0 / d;
-            if ((st = gd_sim_set_state(s2, y2, err)) != GD_OK)
-                goto done;
+        if (x->s2 && (st = companion_period(x, k, err)) != GD_OK)
+            return st;
+        if (k < x->ntrans && x->sc &&
+            settle_extend(x->sc, gd_sim_state(x->s), x->ptol, k + 1 < x->ntrans ? 1 : x->max_trans - x->ntrans) &&
+            k + 1 == x->ntrans) {
+            x->ntrans++; /* one more transient period: the section is still converging */
+            x->total++;
+            x->r.t_record = (double)x->ntrans * x->m->period;
         }
-        if (k < ntrans && sc && settle_extend(sc, gd_sim_state(s), ptol, k + 1 < ntrans ? 1 : max_trans - ntrans) &&
-            k + 1 == ntrans) {
-            ntrans++; /* one more transient period: the section is still converging */
-            total++;
-            r.t_record = (double)ntrans * m->period;
-        }
-        if (k >= ntrans) {
-            const double *y = gd_sim_state(s);
-            memcpy(pts + npts * m->n, y, sizeof(double) * (size_t)m->n);
-            npts++;
-            if (hooks && hooks->poincare && hooks->poincare(user, k + 1, gd_sim_time(s) * r.sec, y)) {
-                st = gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the Poincare hook");
-                goto done;
-            }
-        }
-        if (hooks && hooks->progress && hooks->progress(user, k + 1, total)) {
-            st = gd_error_set(err, GD_ERR_INTERRUPTED, "interrupted");
-            goto done;
-        }
+        if (k >= x->ntrans && (st = window_point(x, k + 1, err)) != GD_OK)
+            return st;
+        if (x->hooks && x->hooks->progress && x->hooks->progress(x->user, k + 1, x->total))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "interrupted");
     }
-    /* results */
-    {
-        double nrm = r.count > 0 ? 1.0 / (double)r.count : 0.0;
-        for (int i = 0; i < 3; i++)
-            res->rms_accel_mps2[i] = sqrt(r.sum_a2[i] * nrm);
-        for (int j = 0; j < 2; j++) {
-            double mean = r.sum_dte[j] * nrm;
-            res->dte_mean_um[j] = mean;
-            res->dte_rms_um[j] = sqrt(fmax(0.0, r.sum_dte2[j] * nrm - mean * mean));
-            res->dte_pp_um[j] = r.dte_max[j] - r.dte_min[j];
-            res->lambda_min_um[j] = r.lam_min[j];
-            res->lambda_max_um[j] = r.lam_max[j];
-        }
-        /* the last point closes the window; periodicity is judged over all of them */
-        res->poincare_count = npts;
-        res->transient_periods = ntrans;
-        res->period_n = gd_poincare_period(pts, npts, m->n, ptol, opts->max_period);
-        res->poincare_distinct = res->period_n > 0 ? res->period_n : gd_poincare_distinct(pts, npts, m->n, ptol);
-        int worst = 0;
-        for (int j = 0; j < 2; j++) {
-            int jj = j < m->nmesh ? j : 0;
-            int reg = r.visited[jj][0] ? GD_IMPACT_DOUBLE : r.visited[jj][1] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
-            res->impact_regime[j] = reg;
-            if (reg > worst)
-                worst = reg;
-        }
-        res->impact_regime[2] = worst;
-        res->record_events = r.rec_events;
-        memcpy(res->record_events_by_kind, r.rec_by_kind, sizeof r.rec_by_kind);
-        if (so.n_tangent > 0) {
-            res->n_lyapunov = gd_sim_lyapunov(s, res->lyapunov, NULL);
-        } else if (s2) {
-            res->n_lyapunov = 1;
-            res->lyapunov[0] = lsum / (gd_sim_time(s) - lt0);
-        }
-        if (res->n_lyapunov > 0) {
-            res->mle_per_period = res->lyapunov[0] * m->period;
-            res->mle_per_s = res->lyapunov[0] * m->omega_n;
-        } else {
-            res->mle_per_period = res->mle_per_s = NAN;
-        }
-        gd_motion_classify(res->period_n, res->n_lyapunov > 0, res->mle_per_period, c->chaos_threshold_per_period,
-                           res->motion, sizeof res->motion);
-        memcpy(res->y_final, gd_sim_state(s), sizeof(double) * (size_t)m->n);
-        res->md_final = *gd_sim_modes(s);
+    return st;
+}
+
+/* The results of a completed run from the accumulators, the Poincare points and the
+ * exponents. */
+static void response_results(const resp_run *x, const gd_response_opts *opts, gd_response_result *res)
+{
+    const gd_model *m = x->m;
+    const run_ctx *r = &x->r;
+    double nrm = r->count > 0 ? 1.0 / (double)r->count : 0.0;
+    for (int i = 0; i < 3; i++)
+        res->rms_accel_mps2[i] = sqrt(r->sum_a2[i] * nrm);
+    for (int j = 0; j < 2; j++) {
+        double mean = r->sum_dte[j] * nrm;
+        res->dte_mean_um[j] = mean;
+        res->dte_rms_um[j] = sqrt(fmax(0.0, r->sum_dte2[j] * nrm - mean * mean));
+        res->dte_pp_um[j] = r->dte_max[j] - r->dte_min[j];
+        res->lambda_min_um[j] = r->lam_min[j];
+        res->lambda_max_um[j] = r->lam_max[j];
     }
-done:
-    gd_sim_get_stats(s, &res->stats);
-    gd_sim_free(s);
-    gd_sim_free(s2);
-    free(pts);
-    free(sc);
-    clock_gettime(CLOCK_MONOTONIC, &w1);
-    res->wall_s = (double)(w1.tv_sec - w0.tv_sec) + 1e-9 * (double)(w1.tv_nsec - w0.tv_nsec);
+    /* the last point closes the window; periodicity is judged over all of them */
+    res->poincare_count = x->npts;
+    res->transient_periods = x->ntrans;
+    res->period_n = gd_poincare_period(x->pts, x->npts, m->n, x->ptol, opts->max_period);
+    res->poincare_distinct =
+        res->period_n > 0 ? res->period_n : gd_poincare_distinct(x->pts, x->npts, m->n, x->ptol);
+    int worst = 0;
+    for (int j = 0; j < 2; j++) {
+        int jj = j < m->nmesh ? j : 0;
+        int reg = r->visited[jj][0] ? GD_IMPACT_DOUBLE : r->visited[jj][1] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
+        res->impact_regime[j] = reg;
+        if (reg > worst)
+            worst = reg;
+    }
+    res->impact_regime[2] = worst;
+    res->record_events = r->rec_events;
+    memcpy(res->record_events_by_kind, r->rec_by_kind, sizeof r->rec_by_kind);
+    if (x->so.n_tangent > 0) {
+        res->n_lyapunov = gd_sim_lyapunov(x->s, res->lyapunov, NULL);
+    } else if (x->s2) {
+        res->n_lyapunov = 1;
+        res->lyapunov[0] = x->lsum / (gd_sim_time(x->s) - x->lt0);
+    }
+    if (res->n_lyapunov > 0) {
+        res->mle_per_period = res->lyapunov[0] * m->period;
+        res->mle_per_s = res->lyapunov[0] * m->omega_n;
+    } else {
+        res->mle_per_period = res->mle_per_s = NAN;
+    }
+    gd_motion_classify(res->period_n, res->n_lyapunov > 0, res->mle_per_period, x->c->chaos_threshold_per_period,
+                       res->motion, sizeof res->motion);
+    memcpy(res->y_final, gd_sim_state(x->s), sizeof(double) * (size_t)m->n);
+    res->md_final = *gd_sim_modes(x->s);
+}
+
+GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
+                                 const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err)
+{
+    double w0 = gd_clock_wall_s();
+    memset(res, 0, sizeof *res);
+    gd_response_opts dflt;
+    if (!opts) {
+        gd_response_opts_default(&dflt);
+        opts = &dflt;
+    }
+    resp_run x;
+    memset(&x, 0, sizeof x);
+    x.c = c;
+    x.m = m;
+    x.hooks = hooks;
+    x.user = user;
+    gd_status st = response_setup(&x, opts, err);
+    if (st != GD_OK)
+        return st;
+    st = response_periods(&x, err);
+    if (st == GD_OK)
+        response_results(&x, opts, res);
+    gd_sim_get_stats(x.s, &res->stats);
+    gd_sim_free(x.s);
+    gd_sim_free(x.s2);
+    free(x.pts);
+    free(x.sc);
+    res->wall_s = gd_clock_wall_s() - w0;
     return st;
 }

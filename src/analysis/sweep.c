@@ -3,6 +3,8 @@
 #include "geardyn/gd_analysis.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_version.h"
+#include "../case/case_keys.h"
+#include "../core/hash.h"
 
 #include <math.h>
 #include <pthread.h>
@@ -23,32 +25,6 @@ GD_API const char *gd_sweep_branch_name(int branch)
 
 /* ---- the case's [sweep] keys ---- */
 
-static size_t key_index(const char *section, const char *key)
-{
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    return (size_t)(gd_case_find_key(section, key) - s);
-}
-
-/* "file:line" of a [sweep] key, or the case path when it was not given. */
-static void where(const gd_case *c, const char *key, char *buf, size_t len)
-{
-    int line = 0;
-    gd_source src = gd_case_source(c, key_index("sweep", key), &line);
-    if (src == GD_SRC_FILE)
-        snprintf(buf, len, "%s:%d", c->path, line);
-    else if (src == GD_SRC_SET)
-        snprintf(buf, len, "--set #%d", line);
-    else
-        snprintf(buf, len, "%s", c->path[0] ? c->path : "case");
-}
-
-static int given(const gd_case *c, const char *key)
-{
-    gd_source s = gd_case_source(c, key_index("sweep", key), NULL);
-    return s == GD_SRC_FILE || s == GD_SRC_SET;
-}
-
 static const gd_keyspec *dotted_key(const char *name)
 {
     char buf[256];
@@ -58,17 +34,6 @@ static const gd_keyspec *dotted_key(const char *name)
         return NULL;
     *dot = '\0';
     return gd_case_find_key(buf, dot + 1);
-}
-
-static int in_range(const gd_keyspec *k, double v)
-{
-    if (!isfinite(v))
-        return 0;
-    if (k->min_open ? !(v > k->min) : !(v >= k->min))
-        return 0;
-    if (k->max_open ? !(v < k->max) : !(v <= k->max))
-        return 0;
-    return 1;
 }
 
 static void describe(const gd_keyspec *k, char *buf, size_t len)
@@ -176,7 +141,7 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
     double from = axis ? c->sweep_from2 : c->sweep_from, to = axis ? c->sweep_to2 : c->sweep_to;
     int points = axis ? c->sweep_points2 : c->sweep_points;
     int spacing = axis ? c->sweep_spacing2 : c->sweep_spacing;
-    where(c, kp, w, sizeof w);
+    gd_case_key_where(c, "sweep", kp, w, sizeof w);
     if (!name[0])
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.parameter: missing (valid: a numeric key as section.key, "
                             "e.g. operating.speed_rpm)", w);
@@ -192,18 +157,18 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
     char range[160];
     describe(k, range, sizeof range);
     /* a missing bound is named at the line of its parameter */
-    if (!given(c, kf) || !isfinite(from)) {
-        where(c, given(c, kf) ? kf : kp, w, sizeof w);
+    if (!gd_case_key_given(c, "sweep", kf) || !isfinite(from)) {
+        gd_case_key_where(c, "sweep", gd_case_key_given(c, "sweep", kf) ? kf : kp, w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: missing (valid: the first value of %s, %s)", w, kf,
                             name, range);
     }
-    if (!given(c, kt) || !isfinite(to)) {
-        where(c, given(c, kt) ? kt : kp, w, sizeof w);
+    if (!gd_case_key_given(c, "sweep", kt) || !isfinite(to)) {
+        gd_case_key_where(c, "sweep", gd_case_key_given(c, "sweep", kt) ? kt : kp, w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: missing (valid: the last value of %s, %s)", w, kt,
                             name, range);
     }
     if (spacing == GD_SWEEP_LOG && !(from > 0 && to > 0)) {
-        where(c, ks, w, sizeof w);
+        gd_case_key_where(c, "sweep", ks, w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: log spacing from %g to %g (valid: positive from and "
                             "to for log spacing)", w, ks, from, to);
     }
@@ -211,8 +176,8 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
     for (int q = 0; q < points + 2; q++) {
         int i = q == 0 ? 0 : q == 1 ? points - 1 : q - 2;
         double v = gd_sweep_axis_value(c, axis, i);
-        if (!in_range(k, v)) {
-            where(c, i == 0 ? kf : kt, w, sizeof w);
+        if (!gd_case_key_in_range(k, v)) {
+            gd_case_key_where(c, "sweep", i == 0 ? kf : kt, w, sizeof w);
             return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: %s = %.10g is out of range (valid: %s)", w,
                                 i == 0 ? kf : kt, name, v, range);
         }
@@ -230,15 +195,15 @@ GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err)
         if ((st = check_axis(c, 1, err)) != GD_OK)
             return st;
         if (strcmp(c->sweep_parameter2, c->sweep_parameter) == 0) {
-            where(c, "parameter2", w, sizeof w);
+            gd_case_key_where(c, "sweep", "parameter2", w, sizeof w);
             return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.parameter2: '%s' is already sweep.parameter (valid: "
                                 "another numeric key, or empty)", w, c->sweep_parameter2);
         }
     } else {
         static const char *k2[] = {"from2", "to2", "points2", "spacing2"};
         for (int i = 0; i < 4; i++)
-            if (given(c, k2[i])) {
-                where(c, k2[i], w, sizeof w);
+            if (gd_case_key_given(c, "sweep", k2[i])) {
+                gd_case_key_where(c, "sweep", k2[i], w, sizeof w);
                 return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: given without sweep.parameter2 (valid: set "
                                     "parameter2 for a regime map, or leave %s out)", w, k2[i], k2[i]);
             }
@@ -251,7 +216,7 @@ GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err)
         int n;
         char bad[700];
         if (parse_responses(c->sweep_response, &m, r, &n, bad, sizeof bad) != GD_OK) {
-            where(c, "response", w, sizeof w);
+            gd_case_key_where(c, "sweep", "response", w, sizeof w);
             return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.response: %s", w, bad);
         }
     }
@@ -260,21 +225,11 @@ GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err)
 
 /* ---- the plan ---- */
 
-/* FNV-1a, 64 bits */
-static uint64_t fnv(uint64_t h, const char *s)
-{
-    for (; *s; s++) {
-        h ^= (unsigned char)*s;
-        h *= 1099511628211ULL;
-    }
-    return h;
-}
-
 static uint64_t fingerprint(const gd_case *c)
 {
     size_t n;
     const gd_keyspec *s = gd_case_schema(&n);
-    uint64_t h = fnv(14695981039346656037ULL, "geardyn sweep " GD_VERSION_STRING "\n");
+    uint64_t h = gd_fnv1a_str(GD_FNV1A_OFFSET_BASIS, "geardyn sweep " GD_VERSION_STRING "\n");
     static const char *skip[] = {"output.directory", "output.time_history", "output.event_log", "output.plots",
                                  "scene.title"};
     for (size_t i = 0; i < n; i++) {
@@ -289,10 +244,10 @@ static uint64_t fingerprint(const gd_case *c)
             snprintf(val, sizeof val, "%.17g", *(const double *)((const char *)c + s[i].offset));
         else
             gd_case_format_value(c, i, val, sizeof val);
-        h = fnv(h, name);
-        h = fnv(h, "=");
-        h = fnv(h, val);
-        h = fnv(h, "\n");
+        h = gd_fnv1a_str(h, name);
+        h = gd_fnv1a_str(h, "=");
+        h = gd_fnv1a_str(h, val);
+        h = gd_fnv1a_str(h, "\n");
     }
     return h;
 }
@@ -313,24 +268,16 @@ GD_API void gd_sweep_plan_free(gd_sweep_plan *p)
 static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
                             gd_error *err);
 
-GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_error *err)
+/* The grid: the values of each axis (one value on an unused second axis), names and units. */
+static gd_status plan_grid(const gd_case *c, gd_sweep_plan *p, gd_error *err)
 {
-    memset(p, 0, sizeof *p);
-    gd_status st = gd_sweep_check_case(c, err);
-    if (st != GD_OK)
-        return st;
-    p->naxes = c->sweep_parameter2[0] ? 2 : 1;
-    p->mode = c->sweep_mode;
-    p->direction = c->sweep_direction;
     for (int a = 0; a < 2; a++) {
         const char *name = a ? c->sweep_parameter2 : c->sweep_parameter;
         p->npoints[a] = a < p->naxes ? (a ? c->sweep_points2 : c->sweep_points) : 1;
         p->spacing[a] = a ? c->sweep_spacing2 : c->sweep_spacing;
         p->values[a] = calloc((size_t)p->npoints[a], sizeof(double));
-        if (!p->values[a]) {
-            gd_sweep_plan_free(p);
+        if (!p->values[a])
             return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the sweep grid");
-        }
         if (a < p->naxes) {
             snprintf(p->parameter[a], sizeof p->parameter[a], "%s", name);
             const gd_keyspec *k = dotted_key(name);
@@ -339,23 +286,26 @@ GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_err
                 p->values[a][i] = gd_sweep_axis_value(c, a, i);
         }
     }
+    return GD_OK;
+}
+
+/* The chains and slots: per row of parameter2, the up chain before the down chain
+ * (continuation), or one chain per point (independent). */
+static gd_status plan_chains(const gd_case *c, gd_sweep_plan *p, gd_error *err)
+{
     int n1 = p->npoints[0], n2 = p->npoints[1];
     int cont = p->mode == GD_SWEEP_CONTINUATION;
     int nbr = cont ? (p->direction == GD_SWEEP_BOTH ? 2 : 1) : 1;
     long nslots = (long)n1 * n2 * nbr;
-    if (nslots > 10000000L) {
-        gd_sweep_plan_free(p);
+    if (nslots > 10000000L)
         return gd_error_set(err, GD_ERR_INPUT, "%s: [sweep]: %ld points (valid: at most 10000000)",
                             c->path[0] ? c->path : "case", nslots);
-    }
     p->nslots = (int)nslots;
     p->nchains = cont ? n2 * nbr : n1 * n2;
     p->chains = calloc((size_t)p->nchains, sizeof *p->chains);
     p->slot_info = calloc((size_t)p->nslots * 4, sizeof(int));
-    if (!p->chains || !p->slot_info) {
-        gd_sweep_plan_free(p);
+    if (!p->chains || !p->slot_info)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the sweep plan");
-    }
     /* "up" walks increasing values of the parameter, whichever way from and to are given */
     int ascending = p->values[0][0] <= p->values[0][n1 - 1];
     int nc = 0, slot = 0;
@@ -390,34 +340,40 @@ GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_err
             }
         }
     }
-    /* the model's state and responses */
+    return GD_OK;
+}
+
+/* The model's state size and the responses, from the base case's model. */
+static gd_status plan_model(const gd_case *c, gd_sweep_plan *p, gd_error *err)
+{
     gd_model m;
-    if ((st = gd_model_build(c, &m, err)) != GD_OK) {
-        gd_sweep_plan_free(p);
+    gd_status st = gd_model_build(c, &m, err);
+    if (st != GD_OK)
         return st;
-    }
     p->n = m.n;
     p->nclear = m.nclear;
     p->nmesh = m.nmesh;
     char bad[700];
     if (parse_responses(c->sweep_response, &m, p->resp, &p->nresp, bad, sizeof bad) != GD_OK) {
         char w[GD_PATH_MAX + 32];
-        where(c, "response", w, sizeof w);
-        gd_sweep_plan_free(p);
+        gd_case_key_where(c, "sweep", "response", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.response: %s", w, bad);
     }
-    p->npoincare = (long)c->record_periods + 1;
-    p->fingerprint = fingerprint(c);
-    /* every grid point resolves and builds: refuse now rather than fail points later */
-    for (int i2 = 0; i2 < n2; i2++)
-        for (int i1 = 0; i1 < n1; i1++) {
+    return GD_OK;
+}
+
+/* Every grid point resolves and builds: refuse now rather than fail points later. */
+static gd_status plan_check_points(const gd_case *c, const gd_sweep_plan *p, gd_error *err)
+{
+    for (int i2 = 0; i2 < p->npoints[1]; i2++)
+        for (int i1 = 0; i1 < p->npoints[0]; i1++) {
             gd_case pc;
             gd_model pm;
-            if ((st = point_case(c, p, i1, i2, &pc, &pm, err)) != GD_OK) {
-                gd_sweep_plan_free(p);
+            gd_status st = point_case(c, p, i1, i2, &pc, &pm, err);
+            if (st != GD_OK) {
                 if (st != GD_ERR_NOMEM) {
                     char w[GD_PATH_MAX + 32];
-                    where(c, "parameter", w, sizeof w);
+                    gd_case_key_where(c, "sweep", "parameter", w, sizeof w);
                     gd_error_prefix(err, "%s: sweep.parameter", w);
                 }
                 return st;
@@ -425,6 +381,26 @@ GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_err
             gd_case_free(&pc);
         }
     return GD_OK;
+}
+
+GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_error *err)
+{
+    memset(p, 0, sizeof *p);
+    gd_status st = gd_sweep_check_case(c, err);
+    if (st != GD_OK)
+        return st;
+    p->naxes = c->sweep_parameter2[0] ? 2 : 1;
+    p->mode = c->sweep_mode;
+    p->direction = c->sweep_direction;
+    if ((st = plan_grid(c, p, err)) == GD_OK && (st = plan_chains(c, p, err)) == GD_OK &&
+        (st = plan_model(c, p, err)) == GD_OK) {
+        p->npoincare = (long)c->record_periods + 1;
+        p->fingerprint = fingerprint(c);
+        st = plan_check_points(c, p, err);
+    }
+    if (st != GD_OK)
+        gd_sweep_plan_free(p);
+    return st;
 }
 
 GD_API gd_status gd_sweep_points_create(const gd_sweep_plan *p, gd_sweep_point **pts, gd_error *err)
@@ -486,6 +462,81 @@ GD_API int gd_sweep_pending(const gd_sweep_plan *p, const gd_sweep_point *pts)
     return n;
 }
 
+/* ---- hysteresis ---- */
+
+/* Whether the up point u and the down point d at one grid value differ: both done, and the
+ * motion class differs or the combined RMS acceleration by more than 5 % of the larger. */
+static int branches_differ(const gd_sweep_point *u, const gd_sweep_point *d)
+{
+    if (u->status != GD_POINT_DONE || d->status != GD_POINT_DONE)
+        return 0;
+    if (strcmp(u->motion, d->motion) != 0)
+        return 1;
+    double a = u->rms_accel_mps2[2], b = d->rms_accel_mps2[2];
+    return fabs(a - b) > 0.05 * fmax(fabs(a), fabs(b));
+}
+
+/* The intervals of one row (chains cu up, cd down), appended to iv[*niv..]. su, sd: scratch
+ * of npoints[0] slots each, the slot of every grid index on either branch. */
+static void row_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, const gd_sweep_chain *cu,
+                           const gd_sweep_chain *cd, int *su, int *sd, gd_sweep_interval *iv, int *niv)
+{
+    int n1 = p->npoints[0];
+    int ascending = p->values[0][0] <= p->values[0][n1 - 1];
+    for (int k = 0; k < n1; k++) {
+        su[pts[cu->first + k].idx[0]] = cu->first + k;
+        sd[pts[cd->first + k].idx[0]] = cd->first + k;
+    }
+    /* walk the grid in increasing parameter order; an interval closes at the first equal point */
+    int start = -1;
+    for (int q = 0; q <= n1; q++) {
+        int i = q < n1 ? (ascending ? q : n1 - 1 - q) : -1;
+        int d = q < n1 && branches_differ(&pts[su[i]], &pts[sd[i]]);
+        if (d && start < 0)
+            start = q;
+        if (!d && start >= 0) {
+            gd_sweep_interval *h = &iv[(*niv)++];
+            h->row = cu->row;
+            h->from = ascending ? start : n1 - 1 - start;
+            h->to = ascending ? q - 1 : n1 - q;
+            h->points = q - start;
+            start = -1;
+        }
+    }
+}
+
+GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, gd_sweep_interval **iv,
+                                     int *niv, gd_error *err)
+{
+    *iv = NULL;
+    *niv = 0;
+    if (p->mode != GD_SWEEP_CONTINUATION || p->direction != GD_SWEEP_BOTH || p->nchains < 2)
+        return GD_OK;
+    int n1 = p->npoints[0];
+    /* at most one interval per two grid points of each pair of chains */
+    size_t cap = (size_t)(p->nchains / 2) * (size_t)((n1 + 1) / 2);
+    gd_sweep_interval *out = malloc(sizeof *out * cap);
+    int *su = malloc(sizeof(int) * (size_t)n1), *sd = malloc(sizeof(int) * (size_t)n1);
+    if (!out || !su || !sd) {
+        free(out);
+        free(su);
+        free(sd);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the hysteresis intervals");
+    }
+    int n = 0;
+    for (int ch = 0; ch + 1 < p->nchains; ch += 2)
+        row_hysteresis(p, pts, &p->chains[ch], &p->chains[ch + 1], su, sd, out, &n);
+    free(su);
+    free(sd);
+    if (n == 0) {
+        free(out);
+        out = NULL;
+    }
+    *iv = out;
+    *niv = n;
+    return GD_OK;
+}
+
 static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
                             gd_error *err)
 {
@@ -505,7 +556,7 @@ static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1,
         st = gd_case_set_number(out, p->parameter[a], p->values[a][idx[a]], err);
         /* the swept key is given where sweep.parameter is (what messages name) */
         const gd_keyspec *k = dotted_key(p->parameter[a]);
-        size_t from = key_index("sweep", a ? "parameter2" : "parameter");
+        size_t from = gd_case_key_index("sweep", a ? "parameter2" : "parameter");
         if (st == GD_OK && k) {
             out->src[k - schema] = base->src[from] == GD_SRC_FILE ? GD_SRC_FILE : GD_SRC_SET;
             out->src_line[k - schema] = base->src_line[from];

@@ -123,6 +123,79 @@ static int by_f(const void *a, const void *b)
     return x->idx - y->idx; /* ties: the older (antlion) first, then by index: a total order */
 }
 
+/* The arrays of a run: N antlions and N ants of d coordinates with their fitness, the pool
+ * of the selection (2 N positions), the ranks and the roulette wheel. */
+typedef struct alo_arrays {
+    int N, d;
+    size_t nd;
+    double *lion, *ant, *pool, *flion, *fant, *cum;
+    ranked *rk;
+} alo_arrays;
+
+/* Sort the evaluated initial antlions by fitness (pool and fant as scratch). */
+static void alo_sort_antlions(alo_arrays *A)
+{
+    const int N = A->N, d = A->d;
+    for (int i = 0; i < N; i++) {
+        A->rk[i].f = A->flion[i];
+        A->rk[i].idx = i;
+    }
+    qsort(A->rk, (size_t)N, sizeof *A->rk, by_f);
+    for (int i = 0; i < N; i++) {
+        memcpy(A->pool + (size_t)i * d, A->lion + (size_t)A->rk[i].idx * d, (size_t)d * sizeof(double));
+        A->fant[i] = A->rk[i].f;
+    }
+    memcpy(A->lion, A->pool, A->nd * sizeof(double));
+    memcpy(A->flion, A->fant, (size_t)N * sizeof(double));
+}
+
+/* The ants of iteration t: each walks around an antlion chosen by the roulette wheel and
+ * around the elite (random numbers drawn serially, in a fixed order). */
+static void alo_walk_ants(alo_arrays *A, gsl_rng *rng, const walk_byte *tab, int T, int t, double total)
+{
+    const int N = A->N, d = A->d;
+    double w = 1.0 / gd_alo_ratio(t, T);
+    const double *elite = A->lion; /* the antlions are sorted: the first is the elite */
+    for (int i = 0; i < N; i++) {
+        double u = gsl_rng_uniform(rng) * total;
+        int j = 0;
+        while (j < N - 1 && u >= A->cum[j])
+            j++;
+        const double *L = A->lion + (size_t)j * d;
+        double *x = A->ant + (size_t)i * d;
+        for (int k = 0; k < d; k++) {
+            double ra = walk(rng, tab, T, t, L[k] - w, L[k] + w);
+            double re = walk(rng, tab, T, t, elite[k] - w, elite[k] + w);
+            double v = 0.5 * (ra + re);
+            x[k] = v < -1.0 ? -1.0 : v > 1.0 ? 1.0 : v;
+        }
+    }
+}
+
+/* The new antlions: the N best of the antlions and the m evaluated ants, each with its own
+ * fitness, sorted. */
+static void alo_select(alo_arrays *A, int m)
+{
+    const int N = A->N, d = A->d;
+    for (int i = 0; i < N; i++) {
+        A->rk[i].f = A->flion[i];
+        A->rk[i].idx = i;
+    }
+    for (int i = 0; i < m; i++) {
+        A->rk[N + i].f = A->fant[i];
+        A->rk[N + i].idx = N + i;
+    }
+    qsort(A->rk, (size_t)(N + m), sizeof *A->rk, by_f);
+    for (int i = 0; i < N; i++) {
+        int q = A->rk[i].idx;
+        const double *src = q < N ? A->lion + (size_t)q * d : A->ant + (size_t)(q - N) * d;
+        memcpy(A->pool + (size_t)i * d, src, (size_t)d * sizeof(double));
+        A->pool[A->nd + (size_t)i] = A->rk[i].f; /* the fitness goes with its position */
+    }
+    memcpy(A->lion, A->pool, A->nd * sizeof(double));
+    memcpy(A->flion, A->pool + A->nd, (size_t)N * sizeof(double));
+}
+
 gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err)
 {
     const int N = s->population, d = c->dim;
@@ -130,15 +203,18 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
     if (T < 1)
         return gd_error_set(err, GD_ERR_INPUT, "ALO: budget %ld below two populations of %d", c->budget, N);
     gsl_rng *rng = gsl_rng_alloc(gsl_rng_mt19937);
-    size_t nd = (size_t)N * (size_t)d;
-    double *lion = malloc(nd * sizeof(double)), *ant = malloc(nd * sizeof(double));
-    double *pool = malloc(2 * nd * sizeof(double));
-    double *flion = malloc((size_t)N * sizeof(double)), *fant = malloc((size_t)N * sizeof(double));
-    ranked *rk = malloc(2 * (size_t)N * sizeof(ranked));
-    double *cum = malloc((size_t)N * sizeof(double));
+    alo_arrays A = {N, d, (size_t)N * (size_t)d, NULL, NULL, NULL, NULL, NULL, NULL, NULL};
+    size_t nd = A.nd;
+    A.lion = malloc(nd * sizeof(double));
+    A.ant = malloc(nd * sizeof(double));
+    A.pool = malloc(2 * nd * sizeof(double));
+    A.flion = malloc((size_t)N * sizeof(double));
+    A.fant = malloc((size_t)N * sizeof(double));
+    A.rk = malloc(2 * (size_t)N * sizeof(ranked));
+    A.cum = malloc((size_t)N * sizeof(double));
     walk_byte tab[256];
     gd_status st = GD_OK;
-    if (!rng || !lion || !ant || !pool || !flion || !fant || !rk || !cum) {
+    if (!rng || !A.lion || !A.ant || !A.pool || !A.flion || !A.fant || !A.rk || !A.cum) {
         st = gd_error_set(err, GD_ERR_NOMEM, "ALO: out of memory for %d ants in %d dimensions", N, d);
         goto done;
     }
@@ -147,84 +223,41 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
     /* the initial antlions, uniform in the box (the initial ants of the reference code are
      * overwritten by the first walks before they are evaluated: they are not drawn here) */
     for (size_t i = 0; i < nd; i++)
-        lion[i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
+        A.lion[i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
     int m;
-    st = opt_eval_batch(c, lion, N, flion, s->threads, &m, err);
+    st = opt_eval_batch(c, A.lion, N, A.flion, s->threads, &m, err);
     if (st != GD_OK)
         goto done;
     if (m < N) { /* cannot happen: the budget holds two populations */
         st = gd_error_set(err, GD_ERR_INTERNAL, "ALO: the initial population was cut by the budget");
         goto done;
     }
-    /* sort the antlions */
-    for (int i = 0; i < N; i++) {
-        rk[i].f = flion[i];
-        rk[i].idx = i;
-    }
-    qsort(rk, (size_t)N, sizeof *rk, by_f);
-    for (int i = 0; i < N; i++) {
-        memcpy(pool + (size_t)i * d, lion + (size_t)rk[i].idx * d, (size_t)d * sizeof(double));
-        fant[i] = rk[i].f;
-    }
-    memcpy(lion, pool, nd * sizeof(double));
-    memcpy(flion, fant, (size_t)N * sizeof(double));
+    alo_sort_antlions(&A);
     /* rank weights of the roulette wheel: N for the best antlion down to 1 for the worst */
     double total = 0;
     for (int j = 0; j < N; j++) {
         total += (double)(N - j);
-        cum[j] = total;
+        A.cum[j] = total;
     }
     int t;
     for (t = 1; t <= T; t++) {
-        double w = 1.0 / gd_alo_ratio(t, T);
-        const double *elite = lion; /* the antlions are sorted: the first is the elite */
-        for (int i = 0; i < N; i++) {
-            double u = gsl_rng_uniform(rng) * total;
-            int j = 0;
-            while (j < N - 1 && u >= cum[j])
-                j++;
-            const double *A = lion + (size_t)j * d;
-            double *x = ant + (size_t)i * d;
-            for (int k = 0; k < d; k++) {
-                double ra = walk(rng, tab, T, t, A[k] - w, A[k] + w);
-                double re = walk(rng, tab, T, t, elite[k] - w, elite[k] + w);
-                double v = 0.5 * (ra + re);
-                x[k] = v < -1.0 ? -1.0 : v > 1.0 ? 1.0 : v;
-            }
-        }
-        st = opt_eval_batch(c, ant, N, fant, s->threads, &m, err);
+        alo_walk_ants(&A, rng, tab, T, t, total);
+        st = opt_eval_batch(c, A.ant, N, A.fant, s->threads, &m, err);
         if (st != GD_OK)
             goto done;
-        /* the N best of antlions and the evaluated ants, each with its own fitness */
-        for (int i = 0; i < N; i++) {
-            rk[i].f = flion[i];
-            rk[i].idx = i;
-        }
-        for (int i = 0; i < m; i++) {
-            rk[N + i].f = fant[i];
-            rk[N + i].idx = N + i;
-        }
-        qsort(rk, (size_t)(N + m), sizeof *rk, by_f);
-        for (int i = 0; i < N; i++) {
-            int q = rk[i].idx;
-            const double *src = q < N ? lion + (size_t)q * d : ant + (size_t)(q - N) * d;
-            memcpy(pool + (size_t)i * d, src, (size_t)d * sizeof(double));
-            pool[nd + (size_t)i] = rk[i].f; /* the fitness goes with its position */
-        }
-        memcpy(lion, pool, nd * sizeof(double));
-        memcpy(flion, pool + nd, (size_t)N * sizeof(double));
+        alo_select(&A, m);
         if (m < N)
             break; /* the budget ended inside this iteration */
     }
     r->iterations = t > T ? T : t;
 done:
     gsl_rng_free(rng);
-    free(lion);
-    free(ant);
-    free(pool);
-    free(flion);
-    free(fant);
-    free(rk);
-    free(cum);
+    free(A.lion);
+    free(A.ant);
+    free(A.pool);
+    free(A.flion);
+    free(A.fant);
+    free(A.rk);
+    free(A.cum);
     return st;
 }

@@ -3,14 +3,14 @@
  * evaluations to reach it and the expected running time, runtime distributions over a ladder of
  * targets in the manner of COCO/BBOB, and the convergence quartiles against evaluations. */
 #include "opt_internal.h"
+#include "../core/gsl_quiet.h"
+#include "../core/clock.h"
 
 #include <gsl/gsl_sort.h>
 #include <gsl/gsl_statistics_double.h>
 #include <math.h>
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 GD_API void gd_opt_compare_result_free(gd_opt_compare_result *r)
 {
@@ -26,13 +26,6 @@ GD_API void gd_opt_compare_result_free(gd_opt_compare_result *r)
     free(r->stats);
     free(r->targets);
     memset(r, 0, sizeof *r);
-}
-
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
 /* The first evaluation (1-based) whose best is within prec of f_ref, or -1. */
@@ -51,10 +44,10 @@ static long first_hit(const gd_opt_compare_run *u, long n, double f_ref, double 
     return lo + 1;
 }
 
-GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
-                                gd_opt_compare_result *r, gd_error *err)
+/* The settings make a comparison: counts, targets, known algorithms, one dimension. */
+static gd_status compare_check(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
+                               gd_error *err)
 {
-    memset(r, 0, sizeof *r);
     if (s->nalgs < 1 || s->nalgs > GD_OPT_NALGORITHMS || s->runs < 1 || s->budget < 1)
         return gd_error_set(err, GD_ERR_INPUT, "comparison: %d algorithms, %d runs, budget %ld (valid: >= 1 each)",
                             s->nalgs, s->runs, s->budget);
@@ -69,7 +62,12 @@ GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_
     for (int k = 1; k < s->runs; k++)
         if (problems[k]->dim != dim)
             return gd_error_set(err, GD_ERR_INPUT, "comparison: instances of different dimensions");
-    double t0 = now_s();
+    return GD_OK;
+}
+
+/* The result's arrays and every run's algorithm, instance and seed. */
+static gd_status compare_alloc(const gd_opt_compare_settings *s, int dim, gd_opt_compare_result *r, gd_error *err)
+{
     r->nalgs = s->nalgs;
     r->runs = s->runs;
     r->dim = dim;
@@ -96,13 +94,21 @@ GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_
         return gd_error_set(err, GD_ERR_NOMEM, "comparison: out of memory for %d runs of %ld evaluations", ntask,
                             s->budget);
     }
+    return GD_OK;
+}
+
+/* Every run (algorithm x instance), in parallel; the first failing run in task order is
+ * the error. */
+static gd_status compare_runs(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
+                              gd_opt_compare_result *r, gd_error *err)
+{
+    int dim = r->dim;
+    int ntask = s->nalgs * s->runs;
     int nt = opt_threads(s->threads);
     if (nt > ntask)
         nt = ntask;
-    int first_bad = ntask;
-    gd_status bad_st = GD_OK;
-    gd_error bad_err = {0};
-    pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    opt_first_failure bad;
+    opt_first_failure_init(&bad, ntask);
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
     for (int i = 0; i < ntask; i++) {
         gd_opt_compare_run *u = &r->run[i];
@@ -122,13 +128,7 @@ GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_
         gd_error e = {0};
         gd_status st = gd_opt_run(problems[u->run], &os, &res, &e);
         if (st != GD_OK) {
-            pthread_mutex_lock(&lock);
-            if (i < first_bad) {
-                first_bad = i;
-                bad_st = st;
-                bad_err = e;
-            }
-            pthread_mutex_unlock(&lock);
+            opt_first_failure_note(&bad, i, st, &e);
             continue;
         }
         u->f = res.f;
@@ -141,15 +141,22 @@ GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_
         u->wall_s = res.wall_s;
         gd_opt_result_free(&res);
     }
-    pthread_mutex_destroy(&lock);
-    if (bad_st != GD_OK) {
-        const gd_opt_compare_run *u = &r->run[first_bad];
+    opt_first_failure_destroy(&bad);
+    if (bad.st != GD_OK) {
+        const gd_opt_compare_run *u = &r->run[bad.index];
         if (err)
-            *err = bad_err;
-        gd_opt_compare_result_free(r);
-        return gd_error_prefix(err, "comparison, %s run %d", gd_opt_algorithm_name(u->alg), u->run + 1);
+            *err = bad.err;
+        gd_error_prefix(err, "comparison, %s run %d", gd_opt_algorithm_name(u->alg), u->run + 1);
+        return bad.st; /* recorded by another thread: this thread's last status is not it */
     }
-    /* the reference value and the targets */
+    return GD_OK;
+}
+
+/* The reference value (given, or the best of all runs), the ladder of targets and the
+ * evaluations each run took to reach each. */
+static void compare_targets(const gd_opt_compare_settings *s, gd_opt_compare_result *r)
+{
+    int ntask = s->nalgs * s->runs;
     r->f_ref_known = isfinite(s->f_ref);
     r->f_ref = s->f_ref;
     if (!r->f_ref_known) {
@@ -167,50 +174,73 @@ GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_
         for (int k = 0; k < s->ntargets; k++)
             u->hits[k] = first_hit(u, s->budget, r->f_ref, r->targets[k]);
     }
+}
+
+/* The statistics of algorithm a over its runs; v, w: scratch of s->runs values each. */
+static void compare_alg_stats(const gd_opt_compare_settings *s, gd_opt_compare_result *r, int a, double *v,
+                              double *w)
+{
+    gd_opt_alg_stats *S = &r->stats[a];
+    const gd_opt_compare_run *U = r->run + (size_t)a * (size_t)s->runs;
+    S->alg = s->algs[a];
+    int ns = 0;
+    double spent = 0;
+    for (int k = 0; k < s->runs; k++) {
+        v[k] = U[k].f;
+        S->wall_total_s += U[k].wall_s;
+        if (U[k].evals_to_target > 0) {
+            w[ns++] = (double)U[k].evals_to_target;
+            spent += (double)U[k].evals_to_target;
+        } else {
+            spent += (double)U[k].evaluations;
+        }
+    }
+    gsl_sort(v, 1, (size_t)s->runs);
+    S->best = v[0];
+    S->worst = v[s->runs - 1];
+    S->q1 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.25);
+    S->median = gsl_stats_median_from_sorted_data(v, 1, (size_t)s->runs);
+    S->q3 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.75);
+    S->mean = gsl_stats_mean(v, 1, (size_t)s->runs);
+    S->successes = ns;
+    S->success_rate = (double)ns / s->runs;
+    if (ns) {
+        gsl_sort(w, 1, (size_t)ns);
+        S->evals_to_target_median = gsl_stats_median_from_sorted_data(w, 1, (size_t)ns);
+        S->ert = spent / ns;
+    } else {
+        S->evals_to_target_median = NAN;
+        S->ert = NAN;
+    }
+    S->wall_mean_s = S->wall_total_s / s->runs;
+}
+
+GD_API gd_status gd_opt_compare(const gd_opt_problem *const *problems, const gd_opt_compare_settings *s,
+                                gd_opt_compare_result *r, gd_error *err)
+{
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
+    memset(r, 0, sizeof *r);
+    gd_status st = compare_check(problems, s, err);
+    if (st != GD_OK)
+        return st;
+    double t0 = gd_clock_wall_s();
+    if ((st = compare_alloc(s, problems[0]->dim, r, err)) != GD_OK)
+        return st;
+    if ((st = compare_runs(problems, s, r, err)) != GD_OK) {
+        gd_opt_compare_result_free(r);
+        return st;
+    }
+    compare_targets(s, r);
     /* statistics per algorithm */
     double *v = malloc(sizeof(double) * (size_t)s->runs * 2);
     if (!v) {
         gd_opt_compare_result_free(r);
         return gd_error_set(err, GD_ERR_NOMEM, "comparison: out of memory");
     }
-    double *w = v + s->runs;
-    for (int a = 0; a < s->nalgs; a++) {
-        gd_opt_alg_stats *S = &r->stats[a];
-        const gd_opt_compare_run *U = r->run + (size_t)a * (size_t)s->runs;
-        S->alg = s->algs[a];
-        int ns = 0;
-        double spent = 0;
-        for (int k = 0; k < s->runs; k++) {
-            v[k] = U[k].f;
-            S->wall_total_s += U[k].wall_s;
-            if (U[k].evals_to_target > 0) {
-                w[ns++] = (double)U[k].evals_to_target;
-                spent += (double)U[k].evals_to_target;
-            } else {
-                spent += (double)U[k].evaluations;
-            }
-        }
-        gsl_sort(v, 1, (size_t)s->runs);
-        S->best = v[0];
-        S->worst = v[s->runs - 1];
-        S->q1 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.25);
-        S->median = gsl_stats_median_from_sorted_data(v, 1, (size_t)s->runs);
-        S->q3 = gsl_stats_quantile_from_sorted_data(v, 1, (size_t)s->runs, 0.75);
-        S->mean = gsl_stats_mean(v, 1, (size_t)s->runs);
-        S->successes = ns;
-        S->success_rate = (double)ns / s->runs;
-        if (ns) {
-            gsl_sort(w, 1, (size_t)ns);
-            S->evals_to_target_median = gsl_stats_median_from_sorted_data(w, 1, (size_t)ns);
-            S->ert = spent / ns;
-        } else {
-            S->evals_to_target_median = NAN;
-            S->ert = NAN;
-        }
-        S->wall_mean_s = S->wall_total_s / s->runs;
-    }
+    for (int a = 0; a < s->nalgs; a++)
+        compare_alg_stats(s, r, a, v, v + s->runs);
     free(v);
-    r->wall_s = now_s() - t0;
+    r->wall_s = gd_clock_wall_s() - t0;
     return GD_OK;
 }
 

@@ -143,7 +143,7 @@ GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g) { return g->ac
 
 GD_API void gd_opt_gear_free(gd_opt_gear *g) { free(g); }
 
-static void case_bounds(const gd_case *c, double *lo, double *hi)
+void opt_gear_case_bounds(const gd_case *c, double lo[6], double hi[6])
 {
     lo[0] = c->opt_root_amount_min_um;
     hi[0] = c->opt_root_amount_max_um;
@@ -162,7 +162,7 @@ static void case_bounds(const gd_case *c, double *lo, double *hi)
 int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *active_mm, const char **bad_key,
                      double *xbad, gd_error *err)
 {
-    case_bounds(c, lower, upper);
+    opt_gear_case_bounds(c, lower, upper);
     gd_geometry g;
     if (gd_geometry_compute(c, &g, err) != GD_OK)
         return -2;

@@ -5,6 +5,8 @@
 
 #include "geardyn/gd_optimize.h"
 
+#include <pthread.h>
+
 /* The wrapper of one run. Optimisers see x in [-1, 1]^dim; the wrapper maps x to the box, repairs
  * the linear constraints, evaluates, counts, records. */
 typedef struct opt_ctx {
@@ -41,6 +43,8 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
 gd_status opt_nlopt(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 
+/* The [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
+void opt_gear_case_bounds(const gd_case *c, double lo[6], double hi[6]);
 /* The gear box of the case (gear_objective.c): its bounds and the constraint's right side, and the
  * first corner of the box (bit i: variable i at its upper bound) that fails gd_modification_check
  * once repaired, with the failing [modification] key and the repaired corner; -1 if every corner
@@ -50,5 +54,19 @@ int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *act
 
 /* threads to use for a request (0: the OpenMP default), at least 1 */
 int opt_threads(int requested);
+
+/* The failure a parallel loop over n items reports: the one at the lowest index, so that the
+ * error does not depend on the threads. index = n while none failed. */
+typedef struct opt_first_failure {
+    pthread_mutex_t lock;
+    int index;
+    gd_status st;
+    gd_error err;
+} opt_first_failure;
+
+void opt_first_failure_init(opt_first_failure *f, int n);
+/* Item i failed with st and e (thread-safe). */
+void opt_first_failure_note(opt_first_failure *f, int i, gd_status st, const gd_error *e);
+void opt_first_failure_destroy(opt_first_failure *f);
 
 #endif

@@ -2,12 +2,13 @@
  * constraints, the counting wrapper every optimiser goes through, and gd_opt_run
  * (docs/optimisation.md sections 2 and 3). */
 #include "opt_internal.h"
+#include "../core/gsl_quiet.h"
+#include "../core/clock.h"
 
 #include <math.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #ifdef _OPENMP
 #include <omp.h>
 #endif
@@ -58,6 +59,27 @@ int opt_threads(int requested)
     return 1;
 #endif
 }
+
+void opt_first_failure_init(opt_first_failure *f, int n)
+{
+    pthread_mutex_init(&f->lock, NULL);
+    f->index = n;
+    f->st = GD_OK;
+    memset(&f->err, 0, sizeof f->err);
+}
+
+void opt_first_failure_note(opt_first_failure *f, int i, gd_status st, const gd_error *e)
+{
+    pthread_mutex_lock(&f->lock);
+    if (i < f->index) {
+        f->index = i;
+        f->st = st;
+        f->err = *e;
+    }
+    pthread_mutex_unlock(&f->lock);
+}
+
+void opt_first_failure_destroy(opt_first_failure *f) { pthread_mutex_destroy(&f->lock); }
 
 /* ---- constraints ------------------------------------------------------------------------------ */
 
@@ -263,10 +285,8 @@ gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int thre
     int nt = threads < 1 ? 1 : threads > c->nstates ? c->nstates : threads;
     if (nt > todo)
         nt = todo;
-    int first_bad = todo;
-    gd_status bad_st = GD_OK;
-    gd_error bad_err = {0};
-    pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
+    opt_first_failure bad;
+    opt_first_failure_init(&bad, todo);
     const gd_opt_problem *p = c->p;
     int d = c->dim;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(nt)
@@ -279,27 +299,21 @@ gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int thre
         opt_to_physical(c, X + (size_t)i * (size_t)d, y);
         gd_error e = {0};
         gd_status st = p->eval(c->states[tid], y, &f[i], &e);
-        if (st != GD_OK) {
-            pthread_mutex_lock(&lock);
-            if (i < first_bad) { /* the lowest failing index: the same error whatever the threads */
-                first_bad = i;
-                bad_st = st;
-                bad_err = e;
-            }
-            pthread_mutex_unlock(&lock);
-        }
+        if (st != GD_OK)
+            opt_first_failure_note(&bad, i, st, &e);
     }
-    pthread_mutex_destroy(&lock);
-    for (int i = 0; i < first_bad; i++) {
+    opt_first_failure_destroy(&bad);
+    for (int i = 0; i < bad.index; i++) {
         gd_status st = record(c, X + (size_t)i * (size_t)d, f[i], err);
         if (st != GD_OK)
             return st;
         (*m)++;
     }
-    if (bad_st != GD_OK) {
+    if (bad.st != GD_OK) {
         if (err)
-            *err = bad_err;
-        return gd_error_prefix(err, "optimisation, evaluation %ld", c->count + 1);
+            *err = bad.err;
+        gd_error_prefix(err, "optimisation, evaluation %ld", c->count + 1);
+        return bad.st; /* recorded by another thread: this thread's last status is not it */
     }
     return GD_OK;
 }
@@ -322,13 +336,6 @@ gd_status opt_eval_one(opt_ctx *c, const double *x, double *f, int *done, gd_err
 
 /* ---- one run ---------------------------------------------------------------------------------- */
 
-static double now_s(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 GD_API void gd_opt_result_free(gd_opt_result *r)
 {
     if (!r)
@@ -341,6 +348,7 @@ GD_API void gd_opt_result_free(gd_opt_result *r)
 
 GD_API gd_status gd_opt_run(const gd_opt_problem *p, const gd_opt_settings *s, gd_opt_result *r, gd_error *err)
 {
+    gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(r, 0, sizeof *r);
     if (!gd_opt_algorithm_name(s->algorithm))
         return gd_error_set(err, GD_ERR_INPUT, "optimisation: unknown algorithm %d", s->algorithm);
@@ -369,13 +377,13 @@ GD_API gd_status gd_opt_run(const gd_opt_problem *p, const gd_opt_settings *s, g
     st_.threads = threads;
     r->dim = p->dim;
     r->algorithm = st_.algorithm;
-    double t0 = now_s();
+    double t0 = gd_clock_wall_s();
     switch (st_.algorithm) {
     case GD_OPT_ALO: st = opt_alo(&c, &st_, r, err); break;
     case GD_OPT_RANDOM: st = opt_random(&c, &st_, r, err); break;
     default: st = opt_nlopt(&c, &st_, r, err); break;
     }
-    r->wall_s = now_s() - t0;
+    r->wall_s = gd_clock_wall_s() - t0;
     if (st == GD_OK && c.count == 0)
         st = gd_error_set(err, GD_ERR_INTERNAL, "optimisation: %s made no evaluation", gd_opt_algorithm_name(s->algorithm));
     if (st == GD_OK && c.count > c.budget)

@@ -5,8 +5,43 @@
 #include <stdio.h>
 
 #include "geardyn/gd_output.h"
+#include "geardyn/gd_version.h"
+#include "../case/case_keys.h"
 
 json_t *gd_json_num(double v) { return isfinite(v) ? json_real(v) : json_null(); }
+
+json_t *gd_json_halves_num(const double v[2], int halves, double scale)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "left", gd_json_num(v[0] * scale));
+    json_object_set_new(o, "right", halves > 1 ? gd_json_num(v[1] * scale) : json_null());
+    return o;
+}
+
+json_t *gd_json_halves_int(const int v[2], int halves)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "left", json_integer(v[0]));
+    json_object_set_new(o, "right", halves > 1 ? json_integer(v[1]) : json_null());
+    return o;
+}
+
+json_t *gd_json_edge_names(unsigned bits)
+{
+    json_t *a = json_array();
+    for (int k = 0; k < GD_EDGE_NKINDS; k++)
+        if (bits & (1u << k))
+            json_array_append_new(a, json_string(gd_edge_kind_name(k)));
+    return a;
+}
+
+json_t *gd_json_files(const char *const *files, int nfiles)
+{
+    json_t *fl = json_array();
+    for (int i = 0; i < nfiles; i++)
+        json_array_append_new(fl, json_string(files[i]));
+    return fl;
+}
 
 json_t *gd_json_case(const gd_case *c)
 {
@@ -52,6 +87,23 @@ json_t *gd_json_case(const gd_case *c)
         json_object_set_new(e, "source", json_string(where));
         json_object_set_new(sec, s[i].key, e);
     }
+    return root;
+}
+
+json_t *gd_json_root(const gd_case *c, const char *analysis, const char *section, const char *key)
+{
+    json_t *root = json_object();
+    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
+    json_object_set_new(root, "analysis", json_string(analysis));
+    if (key) {
+        char val[1200];
+        gd_case_format_value(c, gd_case_key_index(section, key), val, sizeof val);
+        json_object_set_new(root, key, json_string(val));
+    }
+    json_t *cs = json_object();
+    json_object_set_new(cs, "path", json_string(c->path));
+    json_object_set_new(cs, "parameters", gd_json_case(c));
+    json_object_set_new(root, "case", cs);
     return root;
 }
 

@@ -10,6 +10,17 @@
 json_t *gd_json_num(double v);
 /* The resolved case: section -> key -> {value, unit, source}. */
 json_t *gd_json_case(const gd_case *c);
+/* The opening of every summary.json: geardyn_version, analysis, then (when key is not NULL) the
+ * case's value of [section] key under the key's name ("model": "bta"), then the case (path and
+ * gd_json_case). */
+json_t *gd_json_root(const gd_case *c, const char *analysis, const char *section, const char *key);
+/* {"left", "right"} of the two helical halves, each value times scale (right null with one half). */
+json_t *gd_json_halves_num(const double v[2], int halves, double scale);
+json_t *gd_json_halves_int(const int v[2], int halves);
+/* The names of the edge-contact kinds set in bits (gd_edge_kind_name). */
+json_t *gd_json_edge_names(unsigned bits);
+/* The files an analysis wrote, as an array (summary.json's "files"). */
+json_t *gd_json_files(const char *const *files, int nfiles);
 /* Write root as dir/name atomically (temporary file, then rename) and release it. */
 gd_status gd_json_write(const char *dir, const char *name, json_t *root, gd_error *err);
 

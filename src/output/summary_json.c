@@ -1,9 +1,9 @@
 /* summary.json: the resolved case, derived values, solver statistics and results (jansson). */
 #include "geardyn/gd_output.h"
-#include "geardyn/gd_version.h"
 #include "geardyn/gd_geometry.h"
 
 #include "json_util.h"
+#include "../case/case_keys.h"
 
 #include <jansson.h>
 #include <math.h>
@@ -17,21 +17,27 @@ static json_t *lr(double l, double r)
     return o;
 }
 
-GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, const char *const *files, int nfiles,
-                                           gd_error *err)
+/* derived.model.impact: the mesh-in impact pulse of each mesh (excitation.impact = on, from LTCA). */
+static json_t *impact_json(const gd_model *m)
 {
-    static const char *methods[] = {"erk", "dirk", "rk4"};
-    static const char *models[] = {"torsional", "torsional-lr", "bta"};
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string("response"));
-    json_object_set_new(root, "model", json_string(models[c->model]));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
+    json_t *imp = json_object();
+    static const char *const mesh_name[] = {"left", "right"};
+    for (int j = 0; j < m->nmesh && j < 2; j++) {
+        const gd_mesh_excitation *x = &m->mesh[j];
+        json_t *o = json_object();
+        double fn = x->imp_force * m->k_ref * m->bc_m / (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
+        json_object_set_new(o, "force_n", gd_json_num(fn));
+        json_object_set_new(o, "duration_s", gd_json_num(x->imp_width / (m->omega_n * m->Omega)));
+        json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase / (2.0 * M_PI)));
+        json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
+        json_object_set_new(imp, m->nmesh == 1 ? "mesh" : mesh_name[j], o);
+    }
+    return imp;
+}
 
+/* "derived": the geometry of the pair (when it computes) and the model's scales. */
+static json_t *response_derived_json(const gd_case *c, const gd_model *m)
+{
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
@@ -59,26 +65,19 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(mod, "mesh_stiffness_n_per_m", gd_json_num(m->k_ref));
     json_object_set_new(mod, "static_mesh_force_n", gd_json_num(m->static_load_n));
     json_object_set_new(mod, "static_deflection_um", gd_json_num(m->static_load_n / m->k_ref * 1e6));
-    if (c->impact) { /* the mesh-in impact pulse of each mesh (excitation.impact = on, from LTCA) */
-        json_t *imp = json_object();
-        static const char *const mesh_name[] = {"left", "right"};
-        for (int j = 0; j < m->nmesh && j < 2; j++) {
-            const gd_mesh_excitation *x = &m->mesh[j];
-            json_t *o = json_object();
-            double fn = x->imp_force * m->k_ref * m->bc_m / (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
-            json_object_set_new(o, "force_n", gd_json_num(fn));
-            json_object_set_new(o, "duration_s", gd_json_num(x->imp_width / (m->omega_n * m->Omega)));
-            json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase / (2.0 * M_PI)));
-            json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
-            json_object_set_new(imp, m->nmesh == 1 ? "mesh" : mesh_name[j], o);
-        }
-        json_object_set_new(mod, "impact", imp);
-    }
+    if (c->impact)
+        json_object_set_new(mod, "impact", impact_json(m));
     json_object_set_new(der, "model", mod);
-    json_object_set_new(root, "derived", der);
+    return der;
+}
 
+/* "solver": the method and the statistics of the run. */
+static json_t *response_solver_json(const gd_case *c, const gd_model *m, const gd_response_result *r)
+{
     json_t *sol = json_object();
-    json_object_set_new(sol, "method", json_string(methods[c->method]));
+    char choice[32]; /* an enum value's name (json_string copies it) */
+    gd_case_key_choice("solver", "method", c->method, choice, sizeof choice);
+    json_object_set_new(sol, "method", json_string(choice));
     json_object_set_new(sol, "order", json_integer(c->method == GD_METHOD_RK4 ? 4 : c->order));
     json_object_set_new(sol, "table", json_string(c->table));
     json_object_set_new(sol, "rtol", gd_json_num(c->rtol));
@@ -104,8 +103,12 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
     long periods = r->transient_periods + c->record_periods;
     json_object_set_new(sol, "rhs_evals_per_period", gd_json_num((double)r->stats.rhs_evals / (double)periods));
-    json_object_set_new(root, "solver", sol);
+    return sol;
+}
 
+/* "results": accelerations, DTE, mesh deflection, motion, impacts and exponents. */
+static json_t *response_results_json(const gd_case *c, const gd_model *m, const gd_response_result *r)
+{
     json_t *res = json_object();
     json_t *acc = lr(r->rms_accel_mps2[0], r->rms_accel_mps2[1]);
     json_object_set_new(acc, "combined", gd_json_num(r->rms_accel_mps2[2]));
@@ -126,20 +129,27 @@ GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, co
     json_object_set_new(ir, "right", json_string(gd_impact_regime_name(r->impact_regime[1])));
     json_object_set_new(res, "impact_regime_by_mesh", ir);
     json_object_set_new(res, "recorded_events", json_integer(r->record_events));
-    static const char *lm[] = {"tangent", "two-trajectory"};
-    json_object_set_new(res, "lyapunov_method", r->n_lyapunov ? json_string(lm[c->lyapunov_method]) : json_null());
+    char choice[32];
+    gd_case_key_choice("run", "lyapunov_method", c->lyapunov_method, choice, sizeof choice);
+    json_object_set_new(res, "lyapunov_method", r->n_lyapunov ? json_string(choice) : json_null());
     json_object_set_new(res, "mle_per_period", gd_json_num(r->n_lyapunov ? r->mle_per_period : NAN));
     json_object_set_new(res, "mle_per_s", gd_json_num(r->n_lyapunov ? r->mle_per_s : NAN));
     json_t *spec = json_array();
     for (int i = 0; i < r->n_lyapunov; i++)
         json_array_append_new(spec, gd_json_num(r->lyapunov[i] * m->period));
     json_object_set_new(res, "lyapunov_spectrum_per_period", spec);
-    json_object_set_new(root, "results", res);
+    return res;
+}
 
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    json_object_set_new(root, "files", fl);
+GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, const gd_model *m,
+                                           const gd_response_result *r, const char *const *files, int nfiles,
+                                           gd_error *err)
+{
+    json_t *root = gd_json_root(c, "response", "scene", "model");
+    json_object_set_new(root, "derived", response_derived_json(c, m));
+    json_object_set_new(root, "solver", response_solver_json(c, m, r));
+    json_object_set_new(root, "results", response_results_json(c, m, r));
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
 
     return gd_json_write(dir, "summary.json", root, err);
 }

@@ -2,7 +2,6 @@
  * checks, and the results under stable keys (docs/ltca.md, section 5). */
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_output.h"
-#include "geardyn/gd_version.h"
 #include "geardyn/gd_geometry.h"
 
 #include "json_util.h"
@@ -11,31 +10,6 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-
-static json_t *lr_num(const gd_ltca_result *r, const double v[2], double scale)
-{
-    json_t *o = json_object();
-    json_object_set_new(o, "left", gd_json_num(v[0] * scale));
-    json_object_set_new(o, "right", r->halves > 1 ? gd_json_num(v[1] * scale) : json_null());
-    return o;
-}
-
-static json_t *lr_int(const gd_ltca_result *r, const int v[2])
-{
-    json_t *o = json_object();
-    json_object_set_new(o, "left", json_integer(v[0]));
-    json_object_set_new(o, "right", r->halves > 1 ? json_integer(v[1]) : json_null());
-    return o;
-}
-
-static json_t *edge_names(unsigned bits)
-{
-    json_t *a = json_array();
-    for (int k = 0; k < GD_EDGE_NKINDS; k++)
-        if (bits & (1u << k))
-            json_array_append_new(a, json_string(gd_edge_kind_name(k)));
-    return a;
-}
 
 static json_t *impact_json(const gd_ltca_impact *im)
 {
@@ -49,7 +23,7 @@ static json_t *impact_json(const gd_ltca_impact *im)
     json_object_set_new(o, "pinion_face_mm", gd_json_num(im->z1 * 1e3));
     json_object_set_new(o, "start_of_contact_roll_mm", gd_json_num(im->rho_sap * 1e3));
     json_object_set_new(o, "offset_from_plane_of_action_um", gd_json_num(im->offset_loa * 1e6));
-    json_object_set_new(o, "edge", edge_names(im->edge));
+    json_object_set_new(o, "edge", gd_json_edge_names(im->edge));
     json_object_set_new(o, "relative_normal_velocity_per_pinion_speed_m", gd_json_num(im->vs_per_omega));
     json_object_set_new(o, "loaded_deflection_um", gd_json_num(im->delta_m * 1e6));
     json_object_set_new(o, "stiffness_n_per_m", gd_json_num(im->ks));
@@ -58,20 +32,10 @@ static json_t *impact_json(const gd_ltca_impact *im)
     return o;
 }
 
-GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const gd_ltca_result *r,
-                                       const char *const *files, int nfiles, gd_error *err)
+/* "derived": the geometry (when it computes), the load and the resultant misalignment. */
+static json_t *ltca_derived_json(const gd_case *c, const gd_ltca_result *r)
 {
-    static const char *arrs[] = {"herringbone", "helical", "spur"};
     const double deg = 180.0 / M_PI;
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string("ltca"));
-    json_object_set_new(root, "arrangement", json_string(arrs[c->arrangement]));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
-
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
@@ -87,8 +51,12 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     json_object_set_new(der, "pinion_torque_nm", gd_json_num(r->torque_nm));
     json_object_set_new(der, "axis_misalignment_resultant_arcmin",
                         gd_json_num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
-    json_object_set_new(root, "derived", der);
+    return der;
+}
 
+/* "solver": the contact problem, its grid, checks and cache key. */
+static json_t *ltca_solver_json(const gd_ltca_result *r)
+{
     json_t *sol = json_object();
     json_object_set_new(sol, "contact_problem", json_string("Eq. 11 as a strictly convex QP, primal active set "
                                                             "(block-diagonal Cholesky per tooth pair)"));
@@ -105,44 +73,28 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
     char key[32];
     snprintf(key, sizeof key, "%016llx", (unsigned long long)r->cache_key);
     json_object_set_new(sol, "cache_key", json_string(key));
-    json_object_set_new(root, "solver", sol);
+    return sol;
+}
 
-    json_t *res = json_object();
-    json_object_set_new(res, "lte_pp_arcsec", gd_json_num(r->lte_pp_arcsec));
-    json_object_set_new(res, "lte_mean_arcsec", gd_json_num(r->lte_mean_arcsec));
-    json_object_set_new(res, "gte_pp_arcsec", lr_num(r, r->gte_pp_arcsec, 1));
-    json_object_set_new(res, "mean_mesh_stiffness_n_per_m", lr_num(r, r->stiffness_mean, 1));
-    json_object_set_new(res, "min_mesh_stiffness_n_per_m", lr_num(r, r->stiffness_min, 1));
-    json_object_set_new(res, "max_mesh_stiffness_n_per_m", lr_num(r, r->stiffness_max, 1));
-    json_object_set_new(res, "load_share", lr_num(r, r->load_share, 1));
-    json_object_set_new(res, "load_share_min", lr_num(r, r->load_share_min, 1));
-    json_object_set_new(res, "load_share_max", lr_num(r, r->load_share_max, 1));
-    json_object_set_new(res, "load_share_difference", gd_json_num(r->halves > 1 ? r->load_share[0] - r->load_share[1] : NAN));
-    json_object_set_new(res, "loaded_pairs_mean", lr_num(r, r->pairs_mean, 1));
-    json_object_set_new(res, "max_contact_pressure_mpa", lr_num(r, r->pressure_max, 1e-6));
-    json_t *el = json_object(), *ek = json_object();
-    json_object_set_new(el, "left", json_boolean(r->edge_kinds[0] != 0));
-    json_object_set_new(el, "right", r->halves > 1 ? json_boolean(r->edge_kinds[1] != 0) : json_null());
-    json_object_set_new(ek, "left", edge_names(r->edge_kinds[0]));
-    json_object_set_new(ek, "right", r->halves > 1 ? edge_names(r->edge_kinds[1]) : json_null());
-    json_object_set_new(res, "edge_loading", el);
-    json_object_set_new(res, "edge_kinds", ek);
-    json_object_set_new(res, "edge_positions", lr_int(r, r->edge_positions));
-    json_object_set_new(res, "edge_load_share_max", lr_num(r, r->edge_load_max, 1));
-    if (r->floating) {
-        double lo = INFINITY, hi = -INFINITY, m = 0;
-        for (int k = 0; k < r->npos; k++) {
-            lo = fmin(lo, r->axial_shift[k]);
-            hi = fmax(hi, r->axial_shift[k]);
-            m += r->axial_shift[k] / r->npos;
-        }
-        json_t *ax = json_object();
-        json_object_set_new(ax, "mean", gd_json_num(m * 1e6));
-        json_object_set_new(ax, "min", gd_json_num(lo * 1e6));
-        json_object_set_new(ax, "max", gd_json_num(hi * 1e6));
-        json_object_set_new(res, "pinion_axial_shift_um", ax);
+/* results.pinion_axial_shift_um of a floating pinion: mean, min and max over the positions. */
+static json_t *axial_shift_json(const gd_ltca_result *r)
+{
+    double lo = INFINITY, hi = -INFINITY, m = 0;
+    for (int k = 0; k < r->npos; k++) {
+        lo = fmin(lo, r->axial_shift[k]);
+        hi = fmax(hi, r->axial_shift[k]);
+        m += r->axial_shift[k] / r->npos;
     }
-    /* the loaded contact pattern: extent of the loaded points on the pinion flank */
+    json_t *ax = json_object();
+    json_object_set_new(ax, "mean", gd_json_num(m * 1e6));
+    json_object_set_new(ax, "min", gd_json_num(lo * 1e6));
+    json_object_set_new(ax, "max", gd_json_num(hi * 1e6));
+    return ax;
+}
+
+/* results.loaded_contact_pattern: extent of the loaded points on the pinion flank. */
+static json_t *loaded_pattern_json(const gd_ltca_result *r)
+{
     json_t *pat = json_object();
     for (int h = 0; h < 2; h++) {
         if (h >= r->halves) {
@@ -166,17 +118,53 @@ GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const 
         json_object_set_new(o, "face_max_mm", gd_json_num(zh * 1e3));
         json_object_set_new(pat, h ? "right" : "left", o);
     }
-    json_object_set_new(res, "loaded_contact_pattern", pat);
+    return pat;
+}
+
+/* "results": LTE, stiffness, load sharing, pressure, edge loading, the axial shift, the
+ * loaded contact pattern and the mesh-in impact. */
+static json_t *ltca_results_json(const gd_ltca_result *r)
+{
+    json_t *res = json_object();
+    json_object_set_new(res, "lte_pp_arcsec", gd_json_num(r->lte_pp_arcsec));
+    json_object_set_new(res, "lte_mean_arcsec", gd_json_num(r->lte_mean_arcsec));
+    json_object_set_new(res, "gte_pp_arcsec", gd_json_halves_num(r->gte_pp_arcsec, r->halves, 1));
+    json_object_set_new(res, "mean_mesh_stiffness_n_per_m", gd_json_halves_num(r->stiffness_mean, r->halves, 1));
+    json_object_set_new(res, "min_mesh_stiffness_n_per_m", gd_json_halves_num(r->stiffness_min, r->halves, 1));
+    json_object_set_new(res, "max_mesh_stiffness_n_per_m", gd_json_halves_num(r->stiffness_max, r->halves, 1));
+    json_object_set_new(res, "load_share", gd_json_halves_num(r->load_share, r->halves, 1));
+    json_object_set_new(res, "load_share_min", gd_json_halves_num(r->load_share_min, r->halves, 1));
+    json_object_set_new(res, "load_share_max", gd_json_halves_num(r->load_share_max, r->halves, 1));
+    json_object_set_new(res, "load_share_difference", gd_json_num(r->halves > 1 ? r->load_share[0] - r->load_share[1] : NAN));
+    json_object_set_new(res, "loaded_pairs_mean", gd_json_halves_num(r->pairs_mean, r->halves, 1));
+    json_object_set_new(res, "max_contact_pressure_mpa", gd_json_halves_num(r->pressure_max, r->halves, 1e-6));
+    json_t *el = json_object(), *ek = json_object();
+    json_object_set_new(el, "left", json_boolean(r->edge_kinds[0] != 0));
+    json_object_set_new(el, "right", r->halves > 1 ? json_boolean(r->edge_kinds[1] != 0) : json_null());
+    json_object_set_new(ek, "left", gd_json_edge_names(r->edge_kinds[0]));
+    json_object_set_new(ek, "right", r->halves > 1 ? gd_json_edge_names(r->edge_kinds[1]) : json_null());
+    json_object_set_new(res, "edge_loading", el);
+    json_object_set_new(res, "edge_kinds", ek);
+    json_object_set_new(res, "edge_positions", gd_json_halves_int(r->edge_positions, r->halves));
+    json_object_set_new(res, "edge_load_share_max", gd_json_halves_num(r->edge_load_max, r->halves, 1));
+    if (r->floating)
+        json_object_set_new(res, "pinion_axial_shift_um", axial_shift_json(r));
+    json_object_set_new(res, "loaded_contact_pattern", loaded_pattern_json(r));
     json_t *mi = json_object();
     json_object_set_new(mi, "left", impact_json(&r->impact[0]));
     json_object_set_new(mi, "right", r->halves > 1 ? impact_json(&r->impact[1]) : json_null());
     json_object_set_new(res, "mesh_in", mi);
-    json_object_set_new(root, "results", res);
+    return res;
+}
 
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    json_object_set_new(root, "files", fl);
+GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const gd_ltca_result *r,
+                                       const char *const *files, int nfiles, gd_error *err)
+{
+    json_t *root = gd_json_root(c, "ltca", "gear", "arrangement");
+    json_object_set_new(root, "derived", ltca_derived_json(c, r));
+    json_object_set_new(root, "solver", ltca_solver_json(r));
+    json_object_set_new(root, "results", ltca_results_json(r));
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
 
     return gd_json_write(dir, "summary.json", root, err);
 }

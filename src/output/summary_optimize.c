@@ -2,7 +2,6 @@
  * the resolved case, the settings, the results under stable keys; the optimum of the gear problem
  * beside the paper's Table 2. */
 #include "geardyn/gd_output.h"
-#include "geardyn/gd_version.h"
 
 #include "json_util.h"
 
@@ -11,30 +10,10 @@
 #include <stdio.h>
 #include <string.h>
 
-static json_t *header(const gd_case *c, const char *analysis)
-{
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string(analysis));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
-    return root;
-}
-
-static json_t *file_list(const char *const *files, int nfiles)
-{
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    return fl;
-}
-
 GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, const gd_opt_optimize_summary *s,
                                            const char *const *files, int nfiles, gd_error *err)
 {
-    json_t *root = header(c, "optimize");
+    json_t *root = gd_json_root(c, "optimize", NULL, NULL);
     int gear = s->objective == GD_OBJ_GEAR_LTE;
     json_t *set = json_object();
     json_object_set_new(set, "algorithm", json_string(gd_opt_algorithm_name(s->algorithm)));
@@ -122,7 +101,7 @@ GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, co
     }
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);
-    json_object_set_new(root, "files", file_list(files, nfiles));
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
     return gd_json_write(dir, "summary.json", root, err);
 }
 
@@ -149,7 +128,7 @@ GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, con
                                           int nproblems, const char *const *files, int nfiles, int threads,
                                           gd_error *err)
 {
-    json_t *root = header(c, "compare-optimizers");
+    json_t *root = gd_json_root(c, "compare-optimizers", NULL, NULL);
     if (nproblems < 1)
         return gd_json_write(dir, "summary.json", root, err);
     const gd_opt_compare_result *r0 = pb[0].res;
@@ -207,6 +186,6 @@ GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, con
         json_object_set_new(pool, gd_opt_algorithm_name(r0->stats[a].alg), o);
     }
     json_object_set_new(root, "ecdf_pooled", pool);
-    json_object_set_new(root, "files", file_list(files, nfiles));
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
     return gd_json_write(dir, "summary.json", root, err);
 }

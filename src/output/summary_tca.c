@@ -2,55 +2,19 @@
  * statistics, and the results under stable keys (docs/tca.md, section 9). */
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_tca.h"
-#include "geardyn/gd_version.h"
 #include "geardyn/gd_geometry.h"
 
 #include "json_util.h"
+#include "../case/case_keys.h"
 
 #include <jansson.h>
 #include <math.h>
 #include <string.h>
 
-static json_t *lr_num(const gd_tca_result *r, const double v[2])
+/* "derived": the geometry of the pair (when it computes) and the resultant misalignment. */
+static json_t *tca_derived_json(const gd_case *c)
 {
-    json_t *o = json_object();
-    json_object_set_new(o, "left", gd_json_num(v[0]));
-    json_object_set_new(o, "right", r->halves > 1 ? gd_json_num(v[1]) : json_null());
-    return o;
-}
-
-static json_t *lr_int(const gd_tca_result *r, const int v[2])
-{
-    json_t *o = json_object();
-    json_object_set_new(o, "left", json_integer(v[0]));
-    json_object_set_new(o, "right", r->halves > 1 ? json_integer(v[1]) : json_null());
-    return o;
-}
-
-static json_t *edge_names(unsigned bits)
-{
-    json_t *a = json_array();
-    for (int k = 0; k < GD_EDGE_NKINDS; k++)
-        if (bits & (1u << k))
-            json_array_append_new(a, json_string(gd_edge_kind_name(k)));
-    return a;
-}
-
-GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const gd_tca_result *r,
-                                      const char *const *files, int nfiles, gd_error *err)
-{
-    static const char *forms[] = {"separation", "tangency", "both"};
-    static const char *arrs[] = {"herringbone", "helical", "spur"};
     const double deg = 180.0 / M_PI;
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string("tca"));
-    json_object_set_new(root, "arrangement", json_string(arrs[c->arrangement]));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
-
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
@@ -82,10 +46,16 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     }
     json_object_set_new(der, "axis_misalignment_resultant_arcmin",
                         gd_json_num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));
-    json_object_set_new(root, "derived", der);
+    return der;
+}
 
+/* "solver": the formulation, the grid and the Newton statistics. */
+static json_t *tca_solver_json(const gd_case *c, const gd_tca_result *r)
+{
     json_t *sol = json_object();
-    json_object_set_new(sol, "formulation", json_string(forms[c->tca_formulation]));
+    char form[32];
+    gd_case_key_choice("solver", "tca_formulation", c->tca_formulation, form, sizeof form);
+    json_object_set_new(sol, "formulation", json_string(form));
     json_object_set_new(sol, "newton", json_string("gsl_multiroot_fdfsolver_hybridsj, analytic Jacobian"));
     json_object_set_new(sol, "profile_points", json_integer(r->nprof));
     json_object_set_new(sol, "face_points", json_integer(r->nface));
@@ -95,27 +65,12 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
     json_object_set_new(sol, "refine", json_boolean(c->tca_refine));
     json_object_set_new(sol, "newton_iterations", json_integer(r->iterations));
     json_object_set_new(sol, "wall_s", gd_json_num(r->wall_s));
-    json_object_set_new(root, "solver", sol);
+    return sol;
+}
 
-    json_t *res = json_object();
-    json_object_set_new(res, "gte_pp_arcsec", lr_num(r, r->gte_pp_arcsec));
-    json_t *ec = json_object();
-    json_object_set_new(ec, "left", json_boolean(r->edge_kinds[0] != 0));
-    json_object_set_new(ec, "right", r->halves > 1 ? json_boolean(r->edge_kinds[1] != 0) : json_null());
-    json_object_set_new(res, "edge_contact", ec);
-    json_t *ek = json_object();
-    json_object_set_new(ek, "left", edge_names(r->edge_kinds[0]));
-    json_object_set_new(ek, "right", r->halves > 1 ? edge_names(r->edge_kinds[1]) : json_null());
-    json_object_set_new(res, "edge_kinds", ek);
-    json_object_set_new(res, "edge_positions", lr_int(r, r->edge_positions));
-    json_object_set_new(res, "contact_ratio_transverse", gd_json_num(r->contact_ratio_transverse));
-    json_object_set_new(res, "contact_ratio_overlap", gd_json_num(r->contact_ratio_overlap));
-    json_object_set_new(res, "operating_pressure_angle_deg", gd_json_num(r->alpha_op_mean * deg));
-    json_object_set_new(res, "te_mean_arcsec", lr_num(r, r->te_mean_arcsec));
-    json_object_set_new(res, "pairs_in_contact_mean", lr_num(r, r->pairs_mean));
-    json_object_set_new(res, "pairs_in_contact_min", lr_int(r, r->pairs_min));
-    json_object_set_new(res, "pairs_in_contact_max", lr_int(r, r->pairs_max));
-    /* contact pattern: share of the flank grid within the paint thickness, and its extent */
+/* results.contact_pattern: share of the flank grid within the paint thickness, and its extent. */
+static json_t *tca_pattern_json(const gd_case *c, const gd_tca_result *r)
+{
     json_t *pat = json_object();
     json_object_set_new(pat, "paint_thickness_um", gd_json_num(c->paint_thickness_um));
     double frac[2] = {NAN, NAN}, rmin[2], rmax[2], zmin[2], zmax[2];
@@ -134,7 +89,7 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
             }
         frac[h] = (double)in / nn;
     }
-    json_object_set_new(pat, "grid_fraction", lr_num(r, frac));
+    json_object_set_new(pat, "grid_fraction", gd_json_halves_num(frac, r->halves, 1));
     json_t *ext = json_object();
     for (int h = 0; h < 2; h++) {
         if (h >= r->halves || !(frac[h] > 0)) {
@@ -149,7 +104,33 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
         json_object_set_new(ext, h ? "right" : "left", o);
     }
     json_object_set_new(pat, "extent", ext);
-    json_object_set_new(res, "contact_pattern", pat);
+    return pat;
+}
+
+/* "results": transmission error, edge contact, contact ratios, pairs in contact, the
+ * contact pattern and (both formulations) their comparison. */
+static json_t *tca_results_json(const gd_case *c, const gd_tca_result *r)
+{
+    const double deg = 180.0 / M_PI;
+    json_t *res = json_object();
+    json_object_set_new(res, "gte_pp_arcsec", gd_json_halves_num(r->gte_pp_arcsec, r->halves, 1));
+    json_t *ec = json_object();
+    json_object_set_new(ec, "left", json_boolean(r->edge_kinds[0] != 0));
+    json_object_set_new(ec, "right", r->halves > 1 ? json_boolean(r->edge_kinds[1] != 0) : json_null());
+    json_object_set_new(res, "edge_contact", ec);
+    json_t *ek = json_object();
+    json_object_set_new(ek, "left", gd_json_edge_names(r->edge_kinds[0]));
+    json_object_set_new(ek, "right", r->halves > 1 ? gd_json_edge_names(r->edge_kinds[1]) : json_null());
+    json_object_set_new(res, "edge_kinds", ek);
+    json_object_set_new(res, "edge_positions", gd_json_halves_int(r->edge_positions, r->halves));
+    json_object_set_new(res, "contact_ratio_transverse", gd_json_num(r->contact_ratio_transverse));
+    json_object_set_new(res, "contact_ratio_overlap", gd_json_num(r->contact_ratio_overlap));
+    json_object_set_new(res, "operating_pressure_angle_deg", gd_json_num(r->alpha_op_mean * deg));
+    json_object_set_new(res, "te_mean_arcsec", gd_json_halves_num(r->te_mean_arcsec, r->halves, 1));
+    json_object_set_new(res, "pairs_in_contact_mean", gd_json_halves_num(r->pairs_mean, r->halves, 1));
+    json_object_set_new(res, "pairs_in_contact_min", gd_json_halves_int(r->pairs_min, r->halves));
+    json_object_set_new(res, "pairs_in_contact_max", gd_json_halves_int(r->pairs_max, r->halves));
+    json_object_set_new(res, "contact_pattern", tca_pattern_json(c, r));
     if (c->tca_formulation == GD_TCA_BOTH) {
         json_t *cmp = json_object();
         json_object_set_new(cmp, "positions_compared", json_integer(r->compared));
@@ -157,12 +138,17 @@ GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const g
         json_object_set_new(cmp, "max_difference_arcsec", gd_json_num(r->max_diff_arcsec));
         json_object_set_new(res, "formulation_comparison", cmp);
     }
-    json_object_set_new(root, "results", res);
+    return res;
+}
 
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    json_object_set_new(root, "files", fl);
+GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const gd_tca_result *r,
+                                      const char *const *files, int nfiles, gd_error *err)
+{
+    json_t *root = gd_json_root(c, "tca", "gear", "arrangement");
+    json_object_set_new(root, "derived", tca_derived_json(c));
+    json_object_set_new(root, "solver", tca_solver_json(c, r));
+    json_object_set_new(root, "results", tca_results_json(c, r));
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
 
     return gd_json_write(dir, "summary.json", root, err);
 }

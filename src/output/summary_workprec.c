@@ -2,9 +2,9 @@
  * and its check, every run of the grid and of the order study, the measured orders and the
  * cheapest setting for each accuracy target (docs/accuracy.md). */
 #include "geardyn/gd_output.h"
-#include "geardyn/gd_version.h"
 #include "geardyn/gd_workprec.h"
 #include "json_util.h"
+#include "../case/case_keys.h"
 
 #include <jansson.h>
 #include <math.h>
@@ -13,11 +13,12 @@
 static json_t *run_json(const gd_wp_result *res, const gd_wp_run *r)
 {
     const gd_wp_family *F = &res->families[r->family];
-    static const char *methods[] = {"erk", "dirk", "rk4"};
+    char method[32];
+    gd_case_key_choice("solver", "method", F->method, method, sizeof method);
     json_t *o = json_object();
     json_object_set_new(o, "label", json_string(r->label));
     json_object_set_new(o, "family", json_string(F->name));
-    json_object_set_new(o, "method", json_string(methods[F->method]));
+    json_object_set_new(o, "method", json_string(method));
     json_object_set_new(o, "order", json_integer(F->order));
     json_object_set_new(o, "root_finding", json_boolean(F->root_finding));
     json_object_set_new(o, "fixed_step", json_boolean(r->fixed_step));
@@ -54,15 +55,7 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
                                            const gd_wp_result *res, const char *const *files, int nfiles,
                                            gd_error *err)
 {
-    static const char *models[] = {"torsional", "torsional-lr", "bta"};
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string("work-precision"));
-    json_object_set_new(root, "model", json_string(models[c->model]));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
+    json_t *root = gd_json_root(c, "work-precision", "scene", "model");
 
     json_t *mod = json_object();
     json_object_set_new(mod, "degrees_of_freedom", json_integer(m->ndof));
@@ -150,10 +143,7 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
     json_object_set_new(root, "cheapest_at_target", rec);
     json_object_set_new(root, "wall_s", gd_json_num(res->wall_s));
 
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    json_object_set_new(root, "files", fl);
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
 
     return gd_json_write(dir, "summary.json", root, err);
 }

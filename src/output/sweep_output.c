@@ -4,6 +4,7 @@
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_version.h"
 #include "json_util.h"
+#include "../case/case_keys.h"
 
 #include <errno.h>
 #include <jansson.h>
@@ -302,6 +303,120 @@ static gd_status read_all(const char *path, char **data, size_t *len, int *missi
     return GD_OK;
 }
 
+/* Check the header line of the journal data against this sweep's; *pos gets the offset of
+ * the first record. A torn header means nothing was recorded (one ignored line). */
+static gd_status journal_check_header(const char *path, const char *data, size_t len, const char *header, size_t hl,
+                                      size_t *pos, int *ignored, gd_error *err)
+{
+    *pos = 0;
+    if (len == 0)
+        return GD_OK;
+    const char *nl = memchr(data, '\n', len);
+    if (!nl) { /* torn header: nothing was recorded */
+        *ignored = 1;
+        *pos = len;
+        return GD_OK;
+    }
+    size_t l0 = (size_t)(nl - data) + 1;
+    if (l0 != hl || memcmp(data, header, hl) != 0) {
+        int ours = unseal(data, l0) != 0 && strncmp(data, "GDSWEEP ", 8) == 0;
+        return gd_error_set(err, GD_ERR_INPUT, "%s: %s; run without --resume to start the sweep over", path,
+                            ours ? "written for another sweep (the case, the sweep or geardyn changed)"
+                                 : "not a sweep journal, or its header is corrupt");
+    }
+    *pos = l0;
+    return GD_OK;
+}
+
+/* Parse the records from pos on into pts; off[slot] gets the offset + 1 of the line kept
+ * for each slot (the first intact one). Torn, corrupt, foreign and repeated lines are
+ * counted in *ignored; only running out of memory is an error. */
+static gd_status journal_parse_records(const gd_sweep_plan *p, const char *data, size_t len, size_t pos,
+                                       gd_sweep_point *pts, long *off, int *ignored, gd_error *err)
+{
+    while (pos < len) {
+        const char *nl = memchr(data + pos, '\n', len - pos);
+        if (!nl) { /* the last line, torn by a kill */
+            (*ignored)++;
+            break;
+        }
+        size_t l = (size_t)(nl - (data + pos)) + 1;
+        int slot = -1;
+        gd_error e2 = {0};
+        if (l > 1 && data[pos] == 'P') {
+            /* a second record of a slot (never written twice; keep the first) */
+            long sl = -1;
+            if (sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots && off[sl]) {
+                (*ignored)++;
+                pos += l;
+                continue;
+            }
+            gd_status st = gd_sweep_record_parse(p, data + pos, l, pts, &slot, &e2);
+            if (st == GD_ERR_NOMEM) {
+                *err = e2;
+                return st;
+            }
+        }
+        if (slot >= 0)
+            off[slot] = (long)pos + 1;
+        else
+            (*ignored)++;
+        pos += l;
+    }
+    return GD_OK;
+}
+
+/* A continuation chain needs every point before the ones it keeps: forget the points after
+ * a missing one. */
+static void journal_drop_after_gaps(const gd_sweep_plan *p, gd_sweep_point *pts, long *off, int *ignored)
+{
+    if (p->mode != GD_SWEEP_CONTINUATION)
+        return;
+    for (int c = 0; c < p->nchains; c++) {
+        int gap = 0;
+        for (int k = 0; k < p->chains[c].count; k++) {
+            int s = p->chains[c].first + k;
+            if (!off[s])
+                gap = 1;
+            else if (gap) {
+                gd_sweep_point_clear(&pts[s]);
+                off[s] = 0;
+                (*ignored)++;
+            }
+        }
+    }
+}
+
+/* The journal as it should be: the header and the kept lines, in their order in the file
+ * (malloc'd into *text, NUL-terminated), or NULL when out of memory. */
+static char *journal_kept_text(const gd_sweep_plan *p, const char *header, size_t hl, const char *data, size_t len,
+                               const long *off, size_t *text_len)
+{
+    char *out = malloc(hl + len + 1);
+    if (!out)
+        return NULL;
+    memcpy(out, header, hl);
+    size_t ol = hl;
+    /* walk the file again to keep the original order */
+    size_t pos = 0;
+    while (pos < len) {
+        const char *nl = memchr(data + pos, '\n', len - pos);
+        if (!nl)
+            break;
+        size_t l = (size_t)(nl - (data + pos)) + 1;
+        long sl = -1;
+        if (data[pos] == 'P' && sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots &&
+            off[sl] == (long)pos + 1) {
+            memcpy(out + ol, data + pos, l);
+            ol += l;
+        }
+        pos += l;
+    }
+    out[ol] = '\0';
+    *text_len = ol;
+    return out;
+}
+
 GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
                                        size_t *text_len, int *loaded, int *ignored, gd_error *err)
 {
@@ -323,102 +438,27 @@ GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p,
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading the journal");
     }
     size_t pos = 0;
-    if (!missing && len > 0) {
-        char *nl = memchr(data, '\n', len);
-        if (!nl) { /* torn header: nothing was recorded */
-            *ignored = 1;
-            pos = len;
-        } else {
-            size_t l0 = (size_t)(nl - data) + 1;
-            if (l0 != hl || memcmp(data, header, hl) != 0) {
-                int ours = unseal(data, l0) != 0 && strncmp(data, "GDSWEEP ", 8) == 0;
-                free(data);
-                free(off);
-                return gd_error_set(err, GD_ERR_INPUT, "%s: %s; run without --resume to start the sweep over", path,
-                                    ours ? "written for another sweep (the case, the sweep or geardyn changed)"
-                                         : "not a sweep journal, or its header is corrupt");
-            }
-            pos = l0;
-        }
-    }
-    while (pos < len) {
-        char *nl = memchr(data + pos, '\n', len - pos);
-        if (!nl) { /* the last line, torn by a kill */
-            (*ignored)++;
-            break;
-        }
-        size_t l = (size_t)(nl - (data + pos)) + 1;
-        int slot = -1;
-        gd_error e2 = {0};
-        if (l > 1 && data[pos] == 'P') {
-            /* a second record of a slot (never written twice; keep the first) */
-            long sl = -1;
-            if (sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots && off[sl]) {
-                (*ignored)++;
-                pos += l;
-                continue;
-            }
-            st = gd_sweep_record_parse(p, data + pos, l, pts, &slot, &e2);
-            if (st == GD_ERR_NOMEM) {
-                free(data);
-                free(off);
-                *err = e2;
-                return st;
-            }
-        }
-        if (slot >= 0)
-            off[slot] = (long)pos + 1;
-        else
-            (*ignored)++;
-        pos += l;
-    }
-    /* a continuation chain needs every point before the ones it keeps */
-    if (p->mode == GD_SWEEP_CONTINUATION)
-        for (int c = 0; c < p->nchains; c++) {
-            int gap = 0;
-            for (int k = 0; k < p->chains[c].count; k++) {
-                int s = p->chains[c].first + k;
-                if (!off[s])
-                    gap = 1;
-                else if (gap) {
-                    gd_sweep_point_clear(&pts[s]);
-                    off[s] = 0;
-                    (*ignored)++;
-                }
-            }
-        }
-    /* the journal as it should be: the header and the kept lines, in their order */
-    char *out = malloc(hl + len + 1);
-    if (!out) {
+    if (!missing)
+        st = journal_check_header(path, data, len, header, hl, &pos, ignored, err);
+    if (st == GD_OK)
+        st = journal_parse_records(p, data, len, pos, pts, off, ignored, err);
+    if (st != GD_OK) {
         free(data);
+        free(off);
+        return st;
+    }
+    journal_drop_after_gaps(p, pts, off, ignored);
+    char *out = journal_kept_text(p, header, hl, data, len, off, text_len);
+    free(data);
+    if (!out) {
         free(off);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory reading the journal");
     }
-    memcpy(out, header, hl);
-    size_t ol = hl;
     for (int s = 0; s < p->nslots; s++)
         if (off[s])
             (*loaded)++;
-    /* walk the file again to keep the original order */
-    pos = 0;
-    while (pos < len) {
-        char *nl = memchr(data + pos, '\n', len - pos);
-        if (!nl)
-            break;
-        size_t l = (size_t)(nl - (data + pos)) + 1;
-        long sl = -1;
-        if (data[pos] == 'P' && sscanf(data + pos, "P %ld", &sl) == 1 && sl >= 0 && sl < p->nslots &&
-            off[sl] == (long)pos + 1) {
-            memcpy(out + ol, data + pos, l);
-            ol += l;
-        }
-        pos += l;
-    }
-    out[ol] = '\0';
-    free(data);
     free(off);
     *text = out;
-    *text_len = ol;
     return GD_OK;
 }
 
@@ -528,14 +568,31 @@ static json_t *axis_json(const gd_case *c, const gd_sweep_plan *p, int a)
     return o;
 }
 
-static int differ(const gd_sweep_point *u, const gd_sweep_point *d)
+/* The smallest and largest value over the points, and where the largest is. */
+typedef struct extremes {
+    double min, max, max_at, max_at2;
+} extremes;
+
+static void extremes_add(extremes *e, double v, const gd_sweep_point *pt)
 {
-    if (u->status != GD_POINT_DONE || d->status != GD_POINT_DONE)
-        return 0;
-    if (strcmp(u->motion, d->motion) != 0)
-        return 1;
-    double a = u->rms_accel_mps2[2], b = d->rms_accel_mps2[2];
-    return fabs(a - b) > 0.05 * fmax(fabs(a), fabs(b));
+    if (v < e->min)
+        e->min = v;
+    if (v > e->max) {
+        e->max = v;
+        e->max_at = pt->value[0];
+        e->max_at2 = pt->value[1];
+    }
+}
+
+static json_t *extremes_json(const extremes *e, int naxes)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "min", gd_json_num(e->min));
+    json_object_set_new(o, "max", gd_json_num(e->max));
+    json_object_set_new(o, "max_at", gd_json_num(e->max_at));
+    if (naxes > 1)
+        json_object_set_new(o, "max_at_parameter2", gd_json_num(e->max_at2));
+    return o;
 }
 
 static void count_in(json_t *obj, const char *key)
@@ -544,27 +601,16 @@ static void count_in(json_t *obj, const char *key)
     json_object_set_new(obj, key, json_integer(v ? json_integer_value(v) + 1 : 1));
 }
 
-GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
-                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
-                                        gd_error *err)
+/* The "sweep" object: the axes, mode, direction and responses of the plan. */
+static json_t *sweep_json(const gd_case *c, const gd_sweep_plan *p)
 {
-    static const char *models[] = {"torsional", "torsional-lr", "bta"};
-    json_t *root = json_object();
-    json_object_set_new(root, "geardyn_version", json_string(GD_VERSION_STRING));
-    json_object_set_new(root, "analysis", json_string("sweep"));
-    json_object_set_new(root, "model", json_string(c->model >= 0 && c->model <= 2 ? models[c->model] : "?"));
-    json_t *cs = json_object();
-    json_object_set_new(cs, "path", json_string(c->path));
-    json_object_set_new(cs, "parameters", gd_json_case(c));
-    json_object_set_new(root, "case", cs);
-
     json_t *sw = json_object();
     json_object_set_new(sw, "parameter", axis_json(c, p, 0));
     json_object_set_new(sw, "parameter2", p->naxes > 1 ? axis_json(c, p, 1) : json_null());
     json_object_set_new(sw, "mode", json_string(p->mode == GD_SWEEP_CONTINUATION ? "continuation" : "independent"));
-    static const char *dirs[] = {"up", "down", "both"};
-    json_object_set_new(sw, "direction", p->mode == GD_SWEEP_CONTINUATION ? json_string(dirs[p->direction])
-                                                                           : json_null());
+    char dirn[16];
+    gd_case_key_choice("sweep", "direction", p->direction, dirn, sizeof dirn);
+    json_object_set_new(sw, "direction", p->mode == GD_SWEEP_CONTINUATION ? json_string(dirn) : json_null());
     json_t *rs = json_array();
     for (int r = 0; r < p->nresp; r++)
         json_array_append_new(rs, json_string(p->resp[r].name));
@@ -574,148 +620,155 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
     json_object_set_new(sw, "poincare_samples_per_point", json_integer(p->npoincare));
     json_object_set_new(sw, "points", json_integer(p->nslots));
     json_object_set_new(sw, "mle_unit", json_string("per mesh period"));
-    json_object_set_new(root, "sweep", sw);
+    return sw;
+}
 
-    /* results */
-    json_t *res = json_object();
-    json_t *motion = json_object(), *impact = json_object(), *failed = json_array();
-    long ndone = 0, nfail = 0, npend = 0, steps = 0, rhs = 0, events = 0;
-    double rmin = INFINITY, rmax = -INFINITY, rmax_at = NAN, rmax_at2 = NAN, lmin = INFINITY, lmax = -INFINITY;
-    double lmax_at = NAN, lmax_at2 = NAN;
-    long positive = 0;
+/* The failed point pt as an entry of results.failed. */
+static json_t *failed_json(const gd_sweep_plan *p, const gd_sweep_point *pt)
+{
+    json_t *f = json_object();
+    json_object_set_new(f, "parameter", gd_json_num(pt->value[0]));
+    if (p->naxes > 1)
+        json_object_set_new(f, "parameter2", gd_json_num(pt->value[1]));
+    json_object_set_new(f, "direction", json_string(gd_sweep_branch_name(pt->branch)));
+    json_object_set_new(f, "error", json_string(gd_status_name(pt->error_code)));
+    json_object_set_new(f, "message", json_string(pt->error));
+    return f;
+}
+
+/* The tallies over every point, in slot order: counts, extremes and solver totals. */
+typedef struct tally {
+    json_t *motion, *impact, *failed;
+    long ndone, nfail, npend, steps, rhs, events, positive;
+    extremes rms, mle;
+} tally;
+
+static void tally_points(const gd_sweep_plan *p, const gd_sweep_point *pts, tally *t)
+{
+    t->motion = json_object();
+    t->impact = json_object();
+    t->failed = json_array();
+    t->ndone = t->nfail = t->npend = t->steps = t->rhs = t->events = t->positive = 0;
+    t->rms = (extremes){INFINITY, -INFINITY, NAN, NAN};
+    t->mle = (extremes){INFINITY, -INFINITY, NAN, NAN};
     for (int s = 0; s < p->nslots; s++) {
         const gd_sweep_point *pt = &pts[s];
-        steps += pt->steps;
-        rhs += pt->rhs_evals;
-        events += pt->events;
+        t->steps += pt->steps;
+        t->rhs += pt->rhs_evals;
+        t->events += pt->events;
         if (pt->status == GD_POINT_PENDING) {
-            npend++;
+            t->npend++;
             continue;
         }
         if (pt->status == GD_POINT_FAILED) {
-            nfail++;
-            count_in(motion, "failed");
-            json_t *f = json_object();
-            json_object_set_new(f, "parameter", gd_json_num(pt->value[0]));
-            if (p->naxes > 1)
-                json_object_set_new(f, "parameter2", gd_json_num(pt->value[1]));
-            json_object_set_new(f, "direction", json_string(gd_sweep_branch_name(pt->branch)));
-            json_object_set_new(f, "error", json_string(gd_status_name(pt->error_code)));
-            json_object_set_new(f, "message", json_string(pt->error));
-            json_array_append_new(failed, f);
+            t->nfail++;
+            count_in(t->motion, "failed");
+            json_array_append_new(t->failed, failed_json(p, pt));
             continue;
         }
-        ndone++;
-        count_in(motion, pt->motion);
-        count_in(impact, gd_impact_regime_name(pt->impact_regime[2]));
-        double r = pt->rms_accel_mps2[2], l = pt->mle_per_period;
-        if (r < rmin)
-            rmin = r;
-        if (r > rmax) {
-            rmax = r;
-            rmax_at = pt->value[0];
-            rmax_at2 = pt->value[1];
-        }
+        t->ndone++;
+        count_in(t->motion, pt->motion);
+        count_in(t->impact, gd_impact_regime_name(pt->impact_regime[2]));
+        double l = pt->mle_per_period;
+        extremes_add(&t->rms, pt->rms_accel_mps2[2], pt);
         if (isfinite(l)) {
-            if (l < lmin)
-                lmin = l;
-            if (l > lmax) {
-                lmax = l;
-                lmax_at = pt->value[0];
-                lmax_at2 = pt->value[1];
-            }
-            positive += l > 0;
+            extremes_add(&t->mle, l, pt);
+            t->positive += l > 0;
         }
     }
-    json_object_set_new(res, "points_done", json_integer(ndone));
-    json_object_set_new(res, "points_failed", json_integer(nfail));
-    json_object_set_new(res, "points_pending", json_integer(npend));
-    json_object_set_new(res, "motion_counts", motion);
-    json_object_set_new(res, "impact_regime_counts", impact);
-    json_t *ra = json_object();
-    json_object_set_new(ra, "min", gd_json_num(rmin));
-    json_object_set_new(ra, "max", gd_json_num(rmax));
-    json_object_set_new(ra, "max_at", gd_json_num(rmax_at));
-    if (p->naxes > 1)
-        json_object_set_new(ra, "max_at_parameter2", gd_json_num(rmax_at2));
-    json_object_set_new(res, "rms_accel_mps2", ra);
-    json_t *la = json_object();
-    json_object_set_new(la, "min", gd_json_num(lmin));
-    json_object_set_new(la, "max", gd_json_num(lmax));
-    json_object_set_new(la, "max_at", gd_json_num(lmax_at));
-    if (p->naxes > 1)
-        json_object_set_new(la, "max_at_parameter2", gd_json_num(lmax_at2));
-    json_object_set_new(la, "positive_points", json_integer(positive));
-    json_object_set_new(res, "mle_per_period", la);
-    json_object_set_new(res, "failed", failed);
+}
 
-    /* per branch (one-parameter sweeps): where the motion class changes, in chain order */
-    if (p->naxes == 1 && p->mode == GD_SWEEP_CONTINUATION) {
-        json_t *brs = json_array();
-        for (int ch = 0; ch < p->nchains; ch++) {
-            const gd_sweep_chain *cc = &p->chains[ch];
-            json_t *b = json_object(), *tr = json_array();
-            json_object_set_new(b, "direction", json_string(gd_sweep_branch_name(cc->branch)));
-            for (int k = 1; k < cc->count; k++) {
-                const gd_sweep_point *a = &pts[cc->first + k - 1], *q = &pts[cc->first + k];
-                if (a->status == GD_POINT_PENDING || q->status == GD_POINT_PENDING || strcmp(a->motion, q->motion) == 0)
-                    continue;
-                json_t *t = json_object();
-                json_object_set_new(t, "between", json_pack("[o,o]", gd_json_num(a->value[0]), gd_json_num(q->value[0])));
-                json_object_set_new(t, "from", json_string(a->motion));
-                json_object_set_new(t, "to", json_string(q->motion));
-                json_array_append_new(tr, t);
-            }
-            json_object_set_new(b, "motion_changes", tr);
-            json_array_append_new(brs, b);
+/* results.branches (one-parameter continuation): where the motion class changes, in chain order. */
+static json_t *branches_json(const gd_sweep_plan *p, const gd_sweep_point *pts)
+{
+    json_t *brs = json_array();
+    for (int ch = 0; ch < p->nchains; ch++) {
+        const gd_sweep_chain *cc = &p->chains[ch];
+        json_t *b = json_object(), *tr = json_array();
+        json_object_set_new(b, "direction", json_string(gd_sweep_branch_name(cc->branch)));
+        for (int k = 1; k < cc->count; k++) {
+            const gd_sweep_point *a = &pts[cc->first + k - 1], *q = &pts[cc->first + k];
+            if (a->status == GD_POINT_PENDING || q->status == GD_POINT_PENDING || strcmp(a->motion, q->motion) == 0)
+                continue;
+            json_t *t = json_object();
+            json_object_set_new(t, "between", json_pack("[o,o]", gd_json_num(a->value[0]), gd_json_num(q->value[0])));
+            json_object_set_new(t, "from", json_string(a->motion));
+            json_object_set_new(t, "to", json_string(q->motion));
+            json_array_append_new(tr, t);
         }
-        json_object_set_new(res, "branches", brs);
+        json_object_set_new(b, "motion_changes", tr);
+        json_array_append_new(brs, b);
     }
-    /* hysteresis: where the up and down branches differ (motion class, or RMS by more than 5 %) */
+    return brs;
+}
+
+/* results.hysteresis: the intervals of gd_sweep_hysteresis. */
+static json_t *hysteresis_json(const gd_sweep_plan *p, const gd_sweep_interval *iv, int niv)
+{
+    json_t *hy = json_array();
+    for (int j = 0; j < niv; j++) {
+        json_t *h = json_object();
+        json_object_set_new(h, "from", gd_json_num(p->values[0][iv[j].from]));
+        json_object_set_new(h, "to", gd_json_num(p->values[0][iv[j].to]));
+        json_object_set_new(h, "points", json_integer(iv[j].points));
+        if (p->naxes > 1)
+            json_object_set_new(h, "parameter2", gd_json_num(p->values[1][iv[j].row]));
+        json_array_append_new(hy, h);
+    }
+    return hy;
+}
+
+/* The "results" object. */
+static gd_status results_json(const gd_sweep_plan *p, const gd_sweep_point *pts, const tally *t, json_t **out,
+                              gd_error *err)
+{
+    json_t *res = json_object();
+    json_object_set_new(res, "points_done", json_integer(t->ndone));
+    json_object_set_new(res, "points_failed", json_integer(t->nfail));
+    json_object_set_new(res, "points_pending", json_integer(t->npend));
+    json_object_set_new(res, "motion_counts", t->motion);
+    json_object_set_new(res, "impact_regime_counts", t->impact);
+    json_object_set_new(res, "rms_accel_mps2", extremes_json(&t->rms, p->naxes));
+    json_t *la = extremes_json(&t->mle, p->naxes);
+    json_object_set_new(la, "positive_points", json_integer(t->positive));
+    json_object_set_new(res, "mle_per_period", la);
+    json_object_set_new(res, "failed", t->failed);
+    if (p->naxes == 1 && p->mode == GD_SWEEP_CONTINUATION)
+        json_object_set_new(res, "branches", branches_json(p, pts));
     if (p->mode == GD_SWEEP_CONTINUATION && p->direction == GD_SWEEP_BOTH) {
-        json_t *hy = json_array();
-        int n1 = p->npoints[0];
-        int *su = malloc(sizeof(int) * (size_t)n1), *sd = malloc(sizeof(int) * (size_t)n1);
-        int ascending = p->values[0][0] <= p->values[0][n1 - 1];
-        for (int ch = 0; su && sd && ch + 1 < p->nchains; ch += 2) {
-            const gd_sweep_chain *cu = &p->chains[ch], *cd = &p->chains[ch + 1];
-            for (int k = 0; k < n1; k++) {
-                su[pts[cu->first + k].idx[0]] = cu->first + k;
-                sd[pts[cd->first + k].idx[0]] = cd->first + k;
-            }
-            int start = -1;
-            for (int q = 0; q <= n1; q++) {
-                int i = q < n1 ? (ascending ? q : n1 - 1 - q) : -1;
-                int d = q < n1 && differ(&pts[su[i]], &pts[sd[i]]);
-                if (d && start < 0)
-                    start = q;
-                if (!d && start >= 0) {
-                    int i0 = ascending ? start : n1 - 1 - start, i1 = ascending ? q - 1 : n1 - q;
-                    json_t *h = json_object();
-                    json_object_set_new(h, "from", gd_json_num(p->values[0][i0]));
-                    json_object_set_new(h, "to", gd_json_num(p->values[0][i1]));
-                    json_object_set_new(h, "points", json_integer(q - start));
-                    if (p->naxes > 1)
-                        json_object_set_new(h, "parameter2", gd_json_num(p->values[1][cu->row]));
-                    json_array_append_new(hy, h);
-                    start = -1;
-                }
-            }
+        gd_sweep_interval *iv;
+        int niv;
+        gd_status st = gd_sweep_hysteresis(p, pts, &iv, &niv, err);
+        if (st != GD_OK) {
+            json_decref(res);
+            return st;
         }
-        free(su);
-        free(sd);
-        json_object_set_new(res, "hysteresis", hy);
+        json_object_set_new(res, "hysteresis", hysteresis_json(p, iv, niv));
+        free(iv);
     }
+    *out = res;
+    return GD_OK;
+}
+
+GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
+                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
+                                        gd_error *err)
+{
+    tally t;
+    tally_points(p, pts, &t);
+    json_t *res;
+    gd_status st = results_json(p, pts, &t, &res, err);
+    if (st != GD_OK)
+        return st;
+    json_t *root = gd_json_root(c, "sweep", "scene", "model");
+    json_object_set_new(root, "sweep", sweep_json(c, p));
     json_object_set_new(root, "results", res);
     json_t *sol = json_object();
-    json_object_set_new(sol, "steps", json_integer(steps));
-    json_object_set_new(sol, "rhs_evals", json_integer(rhs));
-    json_object_set_new(sol, "events", json_integer(events));
+    json_object_set_new(sol, "steps", json_integer(t.steps));
+    json_object_set_new(sol, "rhs_evals", json_integer(t.rhs));
+    json_object_set_new(sol, "events", json_integer(t.events));
     json_object_set_new(root, "solver", sol);
-    json_t *fl = json_array();
-    for (int i = 0; i < nfiles; i++)
-        json_array_append_new(fl, json_string(files[i]));
-    json_object_set_new(root, "files", fl);
+    json_object_set_new(root, "files", gd_json_files(files, nfiles));
 
     return gd_json_write(dir, "summary.json", root, err);
 }
