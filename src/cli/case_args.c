@@ -4,6 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
 {
@@ -79,4 +82,25 @@ int cli_load_case(const cli_case_args *a, gd_case *c)
     if (gd_model_build(c, &m, &err) != GD_OK)
         return cli_fail(&err);
     return 0;
+}
+
+int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c)
+{
+    int rc = cli_parse_case_args(argc, argv, a, allow_out);
+    if (rc)
+        return rc;
+    rc = cli_load_case(a, c);
+    if (rc)
+        gd_case_free(c);
+    return rc;
+}
+
+int cli_threads(int requested)
+{
+#ifdef _OPENMP
+    return requested > 0 ? requested : omp_get_max_threads();
+#else
+    (void)requested;
+    return 1;
+#endif
 }

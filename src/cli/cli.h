@@ -21,7 +21,13 @@ typedef struct cli_case_args {
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out);
 /* Load, apply --set, resolve; prints the error and returns the exit status on failure. */
 int cli_load_case(const cli_case_args *a, gd_case *c);
+/* Parse the arguments of `run` (allow_out) or `check` and load the case they name: 0 with *c loaded
+ * (the caller frees it), else the exit status with nothing left to free. */
+int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
+/* The threads a run uses for --threads N: N when positive, else the OpenMP default (1 without
+ * OpenMP). */
+int cli_threads(int requested);
 
 /* The response variable of the local analysis ([output] response_variable). */
 typedef struct cli_variable {

@@ -8,15 +8,10 @@
 int cmd_check(int argc, char **argv)
 {
     cli_case_args a;
-    int rc = cli_parse_case_args(argc, argv, &a, 0);
+    gd_case c;
+    int rc = cli_open_case(argc, argv, 0, &a, &c);
     if (rc)
         return rc;
-    gd_case c;
-    rc = cli_load_case(&a, &c);
-    if (rc) {
-        gd_case_free(&c);
-        return rc;
-    }
     size_t n;
     const gd_keyspec *s = gd_case_schema(&n);
     printf("# %s: valid\n", a.case_path);

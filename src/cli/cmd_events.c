@@ -17,13 +17,15 @@ static int parse_time(const char *opt, const char *s, double *v)
     return 0;
 }
 
-int cmd_events(int argc, char **argv)
+/* Parse LOG [--from T] [--to T] [--clearance C] [--kind K] [--recorded] [--csv FILE]; returns 0
+ * or the exit status. */
+static int parse_events_args(int argc, char **argv, gd_eventlog_filter *f, const char **path, const char **csv)
 {
-    gd_eventlog_filter f;
-    memset(&f, 0, sizeof f);
-    f.t_from_s = -INFINITY;
-    f.t_to_s = INFINITY;
-    const char *path = NULL, *csv = NULL;
+    memset(f, 0, sizeof *f);
+    f->t_from_s = -INFINITY;
+    f->t_to_s = INFINITY;
+    *path = NULL;
+    *csv = NULL;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         int need = strcmp(s, "--from") == 0 || strcmp(s, "--to") == 0 || strcmp(s, "--clearance") == 0 ||
@@ -33,11 +35,11 @@ int cmd_events(int argc, char **argv)
             return 2;
         }
         if (strcmp(s, "--from") == 0) {
-            if (parse_time(s, argv[++i], &f.t_from_s)) return 2;
+            if (parse_time(s, argv[++i], &f->t_from_s)) return 2;
         } else if (strcmp(s, "--to") == 0) {
-            if (parse_time(s, argv[++i], &f.t_to_s)) return 2;
+            if (parse_time(s, argv[++i], &f->t_to_s)) return 2;
         } else if (strcmp(s, "--clearance") == 0) {
-            snprintf(f.clearance, sizeof f.clearance, "%s", argv[++i]);
+            snprintf(f->clearance, sizeof f->clearance, "%s", argv[++i]);
         } else if (strcmp(s, "--kind") == 0) {
             const char *k = argv[++i];
             int ok = 0;
@@ -47,42 +49,90 @@ int cmd_events(int argc, char **argv)
                 fprintf(stderr, "geardyn: --kind: '%s' (valid: contact, separation, back-contact, back-separation)\n", k);
                 return 2;
             }
-            snprintf(f.kind, sizeof f.kind, "%s", k);
+            snprintf(f->kind, sizeof f->kind, "%s", k);
         } else if (strcmp(s, "--csv") == 0) {
-            csv = argv[++i];
+            *csv = argv[++i];
         } else if (strcmp(s, "--recorded") == 0) {
-            f.recorded_only = 1;
+            f->recorded_only = 1;
         } else if (s[0] == '-') {
             fprintf(stderr, "geardyn: unknown option '%s' (see geardyn --help)\n", s);
             return 2;
-        } else if (!path) {
-            path = s;
+        } else if (!*path) {
+            *path = s;
         } else {
             fprintf(stderr, "geardyn: more than one event log\n");
             return 2;
         }
     }
-    if (!path) {
+    if (!*path) {
         fprintf(stderr, "geardyn: no event log given (see geardyn --help)\n");
         return 2;
     }
+    return 0;
+}
+
+/* Open the --csv file atomically (its directory and name from the path). */
+static gd_status open_csv(const char *csv, gd_atomic_file *af, gd_error *err)
+{
+    char dir[1200], name[256];
+    const char *slash = strrchr(csv, '/');
+    if (slash) {
+        snprintf(dir, sizeof dir, "%.*s", (int)(slash - csv), csv);
+        snprintf(name, sizeof name, "%s", slash + 1);
+        if (!dir[0])
+            snprintf(dir, sizeof dir, "/");
+    } else {
+        snprintf(dir, sizeof dir, ".");
+        snprintf(name, sizeof name, "%s", csv);
+    }
+    return gd_atomic_open(af, dir, name, err);
+}
+
+/* The table of events per clearance and the impact regimes. */
+static void print_summary(const char *path, const gd_eventlog_summary *sum, const char *csv)
+{
+    printf("event log %s: %ld events, %ld selected", path, sum->rows, sum->selected);
+    if (sum->selected)
+        printf(" between t = %.9g s and %.9g s", sum->t_first_s, sum->t_last_s);
+    printf("\n\n%-12s %9s %11s %13s %16s   %s\n", "clearance", "contact", "separation", "back-contact",
+           "back-separation", "impact velocity |v| m/s (min / mean / rms / max)");
+    for (int c = 0; c < sum->nclear; c++) {
+        printf("%-12s %9ld %11ld %13ld %16ld", sum->clear_name[c], sum->count[c][0], sum->count[c][1],
+               sum->count[c][2], sum->count[c][3]);
+        long nc = sum->ncontacts[c];
+        if (nc)
+            printf("   %.4g / %.4g / %.4g / %.4g", sum->vmin[c], sum->vsum[c] / nc, sqrt(sum->vsum2[c] / nc),
+                   sum->vmax[c]);
+        printf("\n");
+    }
+    int any_mesh = 0, worst = 0;
+    for (int c = 0; c < sum->nclear; c++)
+        if (strncmp(sum->clear_name[c], "mesh", 4) == 0) {
+            if (!any_mesh)
+                printf("\nimpact regime (from the selected events):\n");
+            any_mesh = 1;
+            printf("  %-10s %s\n", sum->clear_name[c], gd_impact_regime_name(sum->regime[c]));
+            if (sum->regime[c] > worst)
+                worst = sum->regime[c];
+        }
+    printf("%simpact regime: %s\n", any_mesh ? "  " : "\n", gd_impact_regime_name(worst));
+    if (csv)
+        printf("\n%ld rows written to %s\n", sum->selected, csv);
+}
+
+int cmd_events(int argc, char **argv)
+{
+    gd_eventlog_filter f;
+    const char *path, *csv;
+    int rc = parse_events_args(argc, argv, &f, &path, &csv);
+    if (rc)
+        return rc;
     gd_error err = {0};
     gd_eventlog_summary sum;
     gd_atomic_file af;
     int have_csv = 0;
     if (csv) {
-        char dir[1200], name[256];
-        const char *slash = strrchr(csv, '/');
-        if (slash) {
-            snprintf(dir, sizeof dir, "%.*s", (int)(slash - csv), csv);
-            snprintf(name, sizeof name, "%s", slash + 1);
-            if (!dir[0])
-                snprintf(dir, sizeof dir, "/");
-        } else {
-            snprintf(dir, sizeof dir, ".");
-            snprintf(name, sizeof name, "%s", csv);
-        }
-        if (gd_atomic_open(&af, dir, name, &err) != GD_OK)
+        if (open_csv(csv, &af, &err) != GD_OK)
             return cli_fail(&err);
         have_csv = 1;
     }
@@ -94,31 +144,6 @@ int cmd_events(int argc, char **argv)
     }
     if (have_csv && gd_atomic_commit(&af, &err) != GD_OK)
         return cli_fail(&err);
-    printf("event log %s: %ld events, %ld selected", path, sum.rows, sum.selected);
-    if (sum.selected)
-        printf(" between t = %.9g s and %.9g s", sum.t_first_s, sum.t_last_s);
-    printf("\n\n%-12s %9s %11s %13s %16s   %s\n", "clearance", "contact", "separation", "back-contact",
-           "back-separation", "impact velocity |v| m/s (min / mean / rms / max)");
-    for (int c = 0; c < sum.nclear; c++) {
-        printf("%-12s %9ld %11ld %13ld %16ld", sum.clear_name[c], sum.count[c][0], sum.count[c][1], sum.count[c][2],
-               sum.count[c][3]);
-        long nc = sum.ncontacts[c];
-        if (nc)
-            printf("   %.4g / %.4g / %.4g / %.4g", sum.vmin[c], sum.vsum[c] / nc, sqrt(sum.vsum2[c] / nc), sum.vmax[c]);
-        printf("\n");
-    }
-    int any_mesh = 0, worst = 0;
-    for (int c = 0; c < sum.nclear; c++)
-        if (strncmp(sum.clear_name[c], "mesh", 4) == 0) {
-            if (!any_mesh)
-                printf("\nimpact regime (from the selected events):\n");
-            any_mesh = 1;
-            printf("  %-10s %s\n", sum.clear_name[c], gd_impact_regime_name(sum.regime[c]));
-            if (sum.regime[c] > worst)
-                worst = sum.regime[c];
-        }
-    printf("%simpact regime: %s\n", any_mesh ? "  " : "\n", gd_impact_regime_name(worst));
-    if (csv)
-        printf("\n%ld rows written to %s\n", sum.selected, csv);
+    print_summary(path, &sum, csv);
     return 0;
 }

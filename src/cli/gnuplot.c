@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include <errno.h>
+#include <stdarg.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <stdlib.h>
@@ -84,4 +85,72 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
     unlink(spath);
     unlink(logpath);
     return st;
+}
+
+gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const *names, int nnames, gd_error *err)
+{
+    static const char *ext[2] = {".png", ".svg"};
+    gd_status st = gd_gnuplot_run(dir, script, err);
+    for (int i = 0; i < nnames; i++)
+        for (int e = 0; e < 2; e++) {
+            char tmp[1400], fin[1400];
+            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], ext[e]);
+            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], ext[e]);
+            if (st == GD_OK && rename(tmp, fin) != 0)
+                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
+            unlink(tmp);
+        }
+    return st;
+}
+
+int gd_gnuplot_wanted(int plots, const char **note)
+{
+    if (!plots)
+        return 0;
+    if (!gd_gnuplot_available()) {
+        *note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
+        return 0;
+    }
+    return 1;
+}
+
+void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, const char **files,
+                      int *nfiles)
+{
+    if (st != GD_OK) {
+        fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr->msg);
+        return;
+    }
+    for (int i = 0; i < npics; i++)
+        files[(*nfiles)++] = pics[i];
+}
+
+void gd_gnuplot_printf(gd_gnuplot_script *b, const char *fmt, ...)
+{
+    if (b->bad)
+        return;
+    for (;;) {
+        va_list ap;
+        va_start(ap, fmt);
+        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
+        va_end(ap);
+        if (k < 0) {
+            b->bad = 1;
+            return;
+        }
+        if (b->p && b->n + (size_t)k < b->cap) {
+            b->n += (size_t)k;
+            return;
+        }
+        size_t cap = b->cap ? 2 * b->cap : 65536;
+        while (cap < b->n + (size_t)k + 1)
+            cap *= 2;
+        char *q = realloc(b->p, cap);
+        if (!q) {
+            b->bad = 1;
+            return;
+        }
+        b->p = q;
+        b->cap = cap;
+    }
 }

@@ -112,9 +112,9 @@ void cli_local_free(cli_local *L)
     memset(L, 0, sizeof *L);
 }
 
-/* variable.csv, variable_poincare.csv, spectrum.csv; then the figure. files[] gets the names. */
-gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
-                          cli_local *L, const char **files, int *nfiles, int draw, gd_error *err)
+/* variable.csv and variable_poincare.csv. */
+static gd_status write_variable_tables(const char *dir, const cli_local *L, const char **files, int *nfiles,
+                                       gd_error *err)
 {
     gd_atomic_file f;
     gd_status st = gd_atomic_open(&f, dir, "variable.csv", err);
@@ -134,6 +134,14 @@ gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, 
     if ((st = gd_atomic_commit(&f, err)) != GD_OK)
         return st;
     files[(*nfiles)++] = "variable_poincare.csv";
+    return GD_OK;
+}
+
+/* spectrum.csv: the amplitude spectrum of the samples; its largest amplitude in L->spec_amax. */
+static gd_status write_spectrum(const char *dir, const gd_case *c, const gd_model *m, cli_local *L,
+                                const char **files, int *nfiles, gd_error *err)
+{
+    gd_atomic_file f;
     size_t nf = L->n / 2 + 1;
     double *fr = malloc(nf * sizeof(double)), *am = malloc(nf * sizeof(double));
     if (!fr || !am) {
@@ -142,7 +150,7 @@ gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, 
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the spectrum");
     }
     double dt = (1.0 / m->mesh_freq_hz) / c->samples_per_period;
-    st = gd_amplitude_spectrum(L->x, L->n, dt, fr, am, err);
+    gd_status st = gd_amplitude_spectrum(L->x, L->n, dt, fr, am, err);
     if (st == GD_OK)
         st = gd_atomic_open(&f, dir, "spectrum.csv", err);
     if (st == GD_OK) {
@@ -159,10 +167,13 @@ gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, 
     }
     free(fr);
     free(am);
-    if (st != GD_OK || !draw)
-        return st;
+    return st;
+}
 
-    /* the four panels (PNG and SVG), drawn under temporary names then renamed */
+/* The four panels (PNG and SVG), drawn under temporary names then renamed; a failure is a note. */
+static void draw_response(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
+                          const cli_local *L, const char **files, int *nfiles)
+{
     int shown = c->record_periods < 20 ? c->record_periods : 20;
     double t_end = L->n ? L->t[L->n - 1] : 0, t_from = t_end - shown / m->mesh_freq_hz;
     double fmax_order = c->samples_per_period / 2.0 < 10 ? c->samples_per_period / 2.0 : 10;
@@ -213,16 +224,24 @@ gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, 
             xlo, xhi, vlo, vhi, r->poincare_distinct, v, dir);
     }
     gd_error perr = {0};
-    gd_status pst = gd_gnuplot_run(dir, script, &perr);
-    for (int k = 0; k < 2; k++) {
-        char tmp[1400], fin[1400];
-        snprintf(tmp, sizeof tmp, "%s/.response%s.tmp", dir, fmt[k][1]);
-        snprintf(fin, sizeof fin, "%s/response%s", dir, fmt[k][1]);
-        if (pst == GD_OK && rename(tmp, fin) == 0)
-            files[(*nfiles)++] = k ? "response.svg" : "response.png";
-        unlink(tmp);
-    }
-    if (pst != GD_OK)
+    static const char *names[] = {"response"};
+    if (gd_gnuplot_draw(dir, script, names, 1, &perr) == GD_OK) {
+        files[(*nfiles)++] = "response.png";
+        files[(*nfiles)++] = "response.svg";
+    } else {
         fprintf(stderr, "geardyn: note: the four-panel picture was not drawn: %s\n", perr.msg);
+    }
+}
+
+/* variable.csv, variable_poincare.csv, spectrum.csv; then the figure. files[] gets the names. */
+gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
+                          cli_local *L, const char **files, int *nfiles, int draw, gd_error *err)
+{
+    gd_status st = write_variable_tables(dir, L, files, nfiles, err);
+    if (st == GD_OK)
+        st = write_spectrum(dir, c, m, L, files, nfiles, err);
+    if (st != GD_OK || !draw)
+        return st;
+    draw_response(dir, c, m, r, L, files, nfiles);
     return GD_OK;
 }

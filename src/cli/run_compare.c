@@ -9,10 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #define MAXPROB 64
 
@@ -226,22 +222,10 @@ static gd_status draw(const char *dir, const cmp *C, gd_error *err)
         }
     }
 #undef OUT
-    gd_status st = GD_OK;
-    if (n >= cap)
-        st = gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long");
-    else
-        st = gd_gnuplot_run(dir, script, err);
-    free(script);
     static const char *names[2] = {"convergence", "ecdf"};
-    for (int i = 0; i < 2; i++)
-        for (int fi = 0; fi < 2; fi++) {
-            char tmp[1400], fin[1400];
-            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], fmt[fi][1]);
-            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], fmt[fi][1]);
-            if (st == GD_OK && rename(tmp, fin) != 0)
-                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-            unlink(tmp);
-        }
+    gd_status st = n >= cap ? gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long")
+                            : gd_gnuplot_draw(dir, script, names, 2, err);
+    free(script);
     return st;
 }
 
@@ -276,6 +260,88 @@ static gd_status build(const gd_case *c, cmp_problem *q, int runs, gd_error *err
     return GD_OK;
 }
 
+/* The problems of the case: every objective, the test functions in every dimension. */
+static void list_problems(const gd_case *c, cmp *C)
+{
+    int objs[GD_OBJ_NOBJECTIVES];
+    int nobj = gd_opt_case_objectives(c, objs, GD_OBJ_NOBJECTIVES);
+    for (int i = 0; i < nobj; i++) {
+        int nd = objs[i] == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_dimensions;
+        for (int k = 0; k < nd && C->n < MAXPROB; k++) {
+            cmp_problem *q = &C->p[C->n++];
+            q->objective = objs[i];
+            q->dim = objs[i] == GD_OBJ_GEAR_LTE ? GD_OPT_GEAR_DIM : (int)c->opt_dimensions[k];
+            q->shift = objs[i] == GD_OBJ_GEAR_LTE ? 0.0 : c->opt_shift;
+        }
+    }
+    C->runs = c->opt_runs;
+}
+
+/* The settings of the comparison from the case's [optimize] keys. */
+static void compare_settings(const gd_case *c, const cli_case_args *a, gd_opt_compare_settings *s)
+{
+    memset(s, 0, sizeof *s);
+    s->nalgs = gd_opt_case_optimizers(c, s->algs, GD_OPT_NALGORITHMS);
+    s->runs = c->opt_runs;
+    s->seed = gd_opt_run_seed(c, 0);
+    s->budget = gd_opt_case_budget(c);
+    s->population = c->opt_population;
+    s->target = c->opt_target;
+    s->target_loosest = c->opt_target_loosest;
+    s->ntargets = c->opt_ecdf_targets;
+    s->threads = a->threads;
+}
+
+/* The progress report of one problem: the statistics of each optimiser. */
+static void print_problem(const cmp_problem *q, const gd_opt_compare_settings *s)
+{
+    printf("%s, d = %d%s: %d optimisers x %d runs x %ld evaluations in %.1f s; f_ref %.8g (%s)\n", obj_name(q),
+           q->dim, q->shift > 0 ? " (shifted)" : "", s->nalgs, s->runs, s->budget, q->res.wall_s, q->res.f_ref,
+           q->res.f_ref_known ? "the minimum" : "best found");
+    printf("  %-12s %12s %12s %12s %12s %8s %10s %10s\n", "optimizer", "best", "median", "IQR", "worst",
+           "success", "ERT evals", "wall s");
+    for (int k = 0; k < s->nalgs; k++) {
+        const gd_opt_alg_stats *S = &q->res.stats[k];
+        printf("  %-12s %12.6g %12.6g %12.4g %12.6g %7.0f%% %10.4g %10.3g\n", gd_opt_algorithm_name(S->alg),
+               S->best, S->median, S->q3 - S->q1, S->worst, 100 * S->success_rate, S->ert, S->wall_mean_s);
+    }
+    fflush(stdout);
+}
+
+/* Build and compare every problem; the wall time summed in *wall. Returns 0 or the exit status. */
+static int compare_all(const cli_case_args *a, const gd_case *c, cmp *C, gd_opt_compare_settings *s, double *wall)
+{
+    gd_error err = {0};
+    for (int j = 0; j < C->n; j++) {
+        cmp_problem *q = &C->p[j];
+        gd_status st = build(c, q, C->runs, &err);
+        if (st == GD_OK) {
+            s->f_ref = q->objective == GD_OBJ_GEAR_LTE ? NAN : 0.0;
+            st = gd_opt_compare(q->pp, s, &q->res, &err);
+        }
+        if (st != GD_OK)
+            return cli_fail(&err);
+        *wall += q->res.wall_s;
+        if (!a->quiet)
+            print_problem(q, s);
+    }
+    return 0;
+}
+
+/* summary.json of the comparison. */
+static gd_status write_summary(const char *dir, const gd_case *c, const cmp *C, const char **files, int nfiles,
+                               int threads, gd_error *err)
+{
+    gd_opt_compare_problem pb[MAXPROB];
+    for (int j = 0; j < C->n; j++) {
+        pb[j].objective = C->p[j].objective;
+        pb[j].dim = C->p[j].dim;
+        pb[j].shift = C->p[j].shift;
+        pb[j].res = &C->p[j].res;
+    }
+    return gd_summary_write_compare(dir, c, pb, C->n, files, nfiles, threads, err);
+}
+
 int run_compare(const cli_case_args *a, gd_case *cp, const char *dir)
 {
     gd_case c = *cp;
@@ -285,61 +351,14 @@ int run_compare(const cli_case_args *a, gd_case *cp, const char *dir)
         fprintf(stderr, "geardyn: out of memory\n");
         return 1;
     }
-    int objs[GD_OBJ_NOBJECTIVES];
-    int nobj = gd_opt_case_objectives(&c, objs, GD_OBJ_NOBJECTIVES);
-    for (int i = 0; i < nobj; i++) {
-        int nd = objs[i] == GD_OBJ_GEAR_LTE ? 1 : c.n_opt_dimensions;
-        for (int k = 0; k < nd && C->n < MAXPROB; k++) {
-            cmp_problem *q = &C->p[C->n++];
-            q->objective = objs[i];
-            q->dim = objs[i] == GD_OBJ_GEAR_LTE ? GD_OPT_GEAR_DIM : (int)c.opt_dimensions[k];
-            q->shift = objs[i] == GD_OBJ_GEAR_LTE ? 0.0 : c.opt_shift;
-        }
-    }
-    C->runs = c.opt_runs;
+    list_problems(&c, C);
     gd_opt_compare_settings s;
-    memset(&s, 0, sizeof s);
-    s.nalgs = gd_opt_case_optimizers(&c, s.algs, GD_OPT_NALGORITHMS);
-    s.runs = c.opt_runs;
-    s.seed = gd_opt_run_seed(&c, 0);
-    s.budget = gd_opt_case_budget(&c);
-    s.population = c.opt_population;
-    s.target = c.opt_target;
-    s.target_loosest = c.opt_target_loosest;
-    s.ntargets = c.opt_ecdf_targets;
-    s.threads = a->threads;
-    int threads = 1;
-#ifdef _OPENMP
-    threads = a->threads > 0 ? a->threads : omp_get_max_threads();
-#endif
-    int rc = 0;
+    compare_settings(&c, a, &s);
+    int threads = cli_threads(a->threads);
     double wall = 0;
-    for (int j = 0; j < C->n; j++) {
-        cmp_problem *q = &C->p[j];
-        gd_status st = build(&c, q, C->runs, &err);
-        if (st == GD_OK) {
-            s.f_ref = q->objective == GD_OBJ_GEAR_LTE ? NAN : 0.0;
-            st = gd_opt_compare(q->pp, &s, &q->res, &err);
-        }
-        if (st != GD_OK) {
-            rc = cli_fail(&err);
-            goto done;
-        }
-        wall += q->res.wall_s;
-        if (!a->quiet) {
-            printf("%s, d = %d%s: %d optimisers x %d runs x %ld evaluations in %.1f s; f_ref %.8g (%s)\n", obj_name(q),
-                   q->dim, q->shift > 0 ? " (shifted)" : "", s.nalgs, s.runs, s.budget, q->res.wall_s, q->res.f_ref,
-                   q->res.f_ref_known ? "the minimum" : "best found");
-            printf("  %-12s %12s %12s %12s %12s %8s %10s %10s\n", "optimizer", "best", "median", "IQR", "worst",
-                   "success", "ERT evals", "wall s");
-            for (int k = 0; k < s.nalgs; k++) {
-                const gd_opt_alg_stats *S = &q->res.stats[k];
-                printf("  %-12s %12.6g %12.6g %12.4g %12.6g %7.0f%% %10.4g %10.3g\n", gd_opt_algorithm_name(S->alg),
-                       S->best, S->median, S->q3 - S->q1, S->worst, 100 * S->success_rate, S->ert, S->wall_mean_s);
-            }
-            fflush(stdout);
-        }
-    }
+    int rc = compare_all(a, &c, C, &s, &wall);
+    if (rc)
+        goto done;
     C->ngrid = make_grid(s.budget, &C->grid);
     if (C->ngrid < 0) {
         fprintf(stderr, "geardyn: out of memory\n");
@@ -353,29 +372,14 @@ int run_compare(const cli_case_args *a, gd_case *cp, const char *dir)
     const char *files[16] = {"runs.csv", "statistics.csv", "convergence.csv", "ecdf.csv", "best_points.csv"};
     int nfiles = 5;
     const char *note = NULL;
-    if (c.plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, C, &perr) == GD_OK) {
-                static const char *pics[] = {"convergence.png", "convergence.svg", "ecdf.png", "ecdf.svg"};
-                for (int i = 0; i < 4; i++)
-                    files[nfiles++] = pics[i];
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, C, &perr);
+        static const char *pics[] = {"convergence.png", "convergence.svg", "ecdf.png", "ecdf.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 4, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
-    gd_opt_compare_problem pb[MAXPROB];
-    for (int j = 0; j < C->n; j++) {
-        pb[j].objective = C->p[j].objective;
-        pb[j].dim = C->p[j].dim;
-        pb[j].shift = C->p[j].shift;
-        pb[j].res = &C->p[j].res;
-    }
-    if (gd_summary_write_compare(dir, &c, pb, C->n, files, nfiles, threads, &err) != GD_OK) {
+    if (write_summary(dir, &c, C, files, nfiles, threads, &err) != GD_OK) {
         rc = cli_fail(&err);
         goto done;
     }

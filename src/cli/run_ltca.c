@@ -7,7 +7,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 static const char *half_name[2] = {"left", "right"};
 
@@ -147,18 +146,8 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
     }
     if (n >= (int)sizeof script)
         return gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long");
-    gd_status st = gd_gnuplot_run(dir, script, err);
-    const char *names[] = {"load_distribution", "lte"};
-    for (int i = 0; i < 2; i++)
-        for (int fi = 0; fi < 2; fi++) {
-            char tmp[1400], fin[1400];
-            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], fmt[fi][1]);
-            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], fmt[fi][1]);
-            if (st == GD_OK && rename(tmp, fin) != 0)
-                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-            unlink(tmp);
-        }
-    return st;
+    static const char *names[] = {"load_distribution", "lte"};
+    return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
 int run_ltca(const cli_case_args *a, gd_case *cp, const char *dir)
@@ -189,19 +178,11 @@ int run_ltca(const cli_case_args *a, gd_case *cp, const char *dir)
     }
     files[nfiles++] = "pair_loads.csv";
     const char *note = NULL;
-    if (c.plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, &r, &perr) == GD_OK) {
-                static const char *pics[] = {"load_distribution.png", "load_distribution.svg", "lte.png", "lte.svg"};
-                for (int i = 0; i < 4; i++)
-                    files[nfiles++] = pics[i];
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, &r, &perr);
+        static const char *pics[] = {"load_distribution.png", "load_distribution.svg", "lte.png", "lte.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 4, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
     st = gd_summary_write_ltca(dir, &c, &r, files, nfiles, &err);

@@ -9,10 +9,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #define NPICS 2
 #define OPT_MAXDIM 1000 /* the schema's largest dimension */
@@ -120,17 +116,7 @@ static gd_status draw(const char *dir, const gd_case *c, const opt_out *o, gd_er
     }
     if (n >= (int)sizeof script)
         return gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long");
-    gd_status st = gd_gnuplot_run(dir, script, err);
-    for (int i = 0; i < npics; i++)
-        for (int fi = 0; fi < 2; fi++) {
-            char tmp[1400], fin[1400];
-            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], fmt[fi][1]);
-            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], fmt[fi][1]);
-            if (st == GD_OK && rename(tmp, fin) != 0)
-                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-            unlink(tmp);
-        }
-    return st;
+    return gd_gnuplot_draw(dir, script, names, npics, err);
 }
 
 /* A case for the optimum's own LTCA / TCA outputs: the optimum as its [modification], marked derived. */
@@ -160,49 +146,176 @@ static void out_free(opt_out *o)
         gd_ltca_result_free(&o->lte[j]);
 }
 
+/* The problem of the case's first objective (the gear's modification or a test function), its
+ * variables' names and bounds. */
+static gd_status setup_problem(const gd_case *c, opt_out *o, gd_opt_gear **gear, gd_opt_testfn *tf,
+                               gd_opt_problem *p, gd_error *err)
+{
+    int objs[GD_OBJ_NOBJECTIVES];
+    gd_opt_case_objectives(c, objs, GD_OBJ_NOBJECTIVES);
+    o->objective = objs[0];
+    o->gear = o->objective == GD_OBJ_GEAR_LTE;
+    o->dim = o->gear ? GD_OPT_GEAR_DIM : (int)c->opt_dimensions[0];
+    o->runs = c->opt_runs;
+    gd_status st;
+    if (o->gear) {
+        st = gd_opt_gear_create(c, gear, err);
+        if (st == GD_OK) {
+            gd_opt_gear_problem(*gear, p);
+            o->active_mm = gd_opt_gear_active_profile_mm(*gear);
+            gd_opt_gear_table2(o->table2);
+            o->reference = o->table2;
+            for (int i = 0; i < o->dim; i++)
+                snprintf(o->names[i], sizeof o->names[i], "%s", gd_opt_gear_variable(i, NULL, NULL));
+        }
+    } else {
+        st = gd_opt_testfn_init(tf, o->objective, o->dim, c->opt_shift, gd_opt_instance_seed(c, 0), err);
+        if (st == GD_OK) {
+            gd_opt_testfn_problem(tf, p);
+            o->reference = tf->optimum;
+            for (int i = 0; i < o->dim; i++)
+                snprintf(o->names[i], sizeof o->names[i], "x%d", i + 1);
+        }
+    }
+    if (st != GD_OK)
+        return st;
+    for (int i = 0; i < o->dim; i++) {
+        o->lower[i] = p->lower[i];
+        o->upper[i] = p->upper[i];
+        o->name_ptr[i] = o->names[i];
+    }
+    return GD_OK;
+}
+
+/* The runs, each from its own seed; the best kept in o->best, each run's best in run_f, their
+ * wall time summed in *wall. */
+static gd_status run_all(const cli_case_args *a, const gd_case *c, const gd_opt_problem *p, gd_opt_settings *s,
+                         opt_out *o, double *run_f, double *wall, gd_error *err)
+{
+    for (int r = 0; r < o->runs; r++) {
+        s->seed = gd_opt_run_seed(c, r);
+        gd_status st = gd_opt_run(p, s, &o->res[r], err);
+        if (st != GD_OK)
+            return st;
+        run_f[r] = o->res[r].f;
+        *wall += o->res[r].wall_s;
+        if (o->res[r].f < o->res[o->best].f)
+            o->best = r;
+        if (!a->quiet && o->runs > 1)
+            printf("  run %d (seed %lu): %.8g after %ld evaluations, %.1f s\n", r + 1, s->seed, o->res[r].f,
+                   o->res[r].evaluations, o->res[r].wall_s);
+    }
+    return GD_OK;
+}
+
+/* The gear: LTE of the unmodified pair, Table 2 and the optimum (the same LTCA as the objective). */
+static gd_status compute_lte(const gd_case *c, opt_out *o, gd_error *err)
+{
+    const double zero[GD_OPT_GEAR_DIM] = {0};
+    const double *xs[3] = {zero, o->table2, o->res[o->best].y};
+    gd_status st = GD_OK;
+    for (int j = 0; j < 3 && st == GD_OK; j++) {
+        gd_case t = *c;
+        gd_opt_gear_apply(&t, xs[j]);
+        st = gd_ltca_run_opts(&t, 0, 0, &o->lte[j], err);
+    }
+    return st;
+}
+
+/* The gear: the optimum's loaded contact pattern and its TCA contact pattern, with the writers of
+ * those analyses, and lte.csv; returns 0 or the exit status. */
+static int write_gear_outputs(const cli_case_args *a, const gd_case *c, const char *dir, const opt_out *o,
+                              const char **files, int *nfiles, gd_error *err)
+{
+    const gd_opt_result *b = &o->res[o->best];
+    cli_case_args sub = *a;
+    sub.quiet = 1;
+    char sdir[GD_PATH_MAX + 32];
+    gd_case t;
+    snprintf(sdir, sizeof sdir, "%s/optimum", dir);
+    if (optimum_case(c, b->y, GD_ANALYSIS_LTCA, &t, err) != 0)
+        return cli_fail(err);
+    int rc = run_ltca(&sub, &t, sdir);
+    gd_case_free(&t);
+    if (rc)
+        return rc;
+    files[(*nfiles)++] = "optimum/";
+    snprintf(sdir, sizeof sdir, "%s/optimum-tca", dir);
+    if (optimum_case(c, b->y, GD_ANALYSIS_TCA, &t, err) != 0)
+        return cli_fail(err);
+    rc = run_tca(&sub, &t, sdir);
+    gd_case_free(&t);
+    if (rc)
+        return rc;
+    files[(*nfiles)++] = "optimum-tca/";
+    if (write_lte(dir, o, err) == GD_OK)
+        files[(*nfiles)++] = "lte.csv";
+    return 0;
+}
+
+/* summary.json of the optimisation. */
+static gd_status write_summary(const char *dir, const gd_case *c, const opt_out *o, const gd_opt_testfn *tf,
+                               const gd_opt_settings *s, int threads, const double *run_f, double wall,
+                               const char **files, int nfiles, gd_error *err)
+{
+    gd_opt_optimize_summary sm;
+    memset(&sm, 0, sizeof sm);
+    sm.objective = o->objective;
+    sm.dim = o->dim;
+    sm.algorithm = c->opt_algorithm;
+    sm.runs = o->runs;
+    sm.threads = threads;
+    sm.budget = s->budget;
+    sm.names = o->name_ptr;
+    sm.lower = o->lower;
+    sm.upper = o->upper;
+    sm.best = &o->res[o->best];
+    sm.best_run = o->best;
+    sm.run_f = run_f;
+    sm.true_optimum = o->gear ? NULL : tf->optimum;
+    sm.lte_unmodified = o->gear ? o->lte[0].lte_pp_arcsec : NAN;
+    sm.lte_table2 = o->gear ? o->lte[1].lte_pp_arcsec : NAN;
+    sm.lte_optimum = o->gear ? o->lte[2].lte_pp_arcsec : NAN;
+    sm.active_profile_mm = o->active_mm;
+    sm.wall_s = wall;
+    return gd_summary_write_optimize(dir, c, &sm, files, nfiles, err);
+}
+
+/* The progress report: the best run, its variables and for the gear the LTE of the three pairs. */
+static void print_result(const char *dir, const gd_case *c, const opt_out *o, long budget, double wall, int threads)
+{
+    const gd_opt_result *b = &o->res[o->best];
+    printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s "
+           "(evaluation %ld of run %d)\n", dir, gd_opt_algorithm_name(c->opt_algorithm),
+           gd_opt_objective_name(o->objective), o->dim, o->dim == 1 ? "" : "s", o->runs, o->runs == 1 ? "" : "s",
+           budget, wall, threads, threads == 1 ? "" : "s", b->f, o->gear ? " arcsec" : "", b->best_at, o->best + 1);
+    for (int i = 0; i < o->dim; i++) {
+        const char *unit = "", *sym = o->names[i];
+        if (o->gear)
+            gd_opt_gear_variable(i, &unit, &sym);
+        printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g\n", sym, o->names[i], b->y[i], unit, o->lower[i],
+               o->upper[i], o->gear ? "Table 2" : "minimiser", o->reference[i]);
+    }
+    if (o->gear)
+        printf("  LTE peak-to-peak: unmodified %.6g, Table 2 %.6g, optimum %.6g arcsec (%+.1f %% against the "
+               "unmodified pair; the paper: 4.194 -> 1.157, -72.41 %%)\n", o->lte[0].lte_pp_arcsec,
+               o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
+               100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec);
+}
+
 int run_optimize(const cli_case_args *a, gd_case *cp, const char *dir)
 {
     gd_case c = *cp;
     gd_error err = {0};
     opt_out o; /* about 80 kB: names and bounds of up to OPT_MAXDIM variables */
     memset(&o, 0, sizeof o);
-    int objs[GD_OBJ_NOBJECTIVES];
-    gd_opt_case_objectives(&c, objs, GD_OBJ_NOBJECTIVES);
-    o.objective = objs[0];
-    o.gear = o.objective == GD_OBJ_GEAR_LTE;
-    o.dim = o.gear ? GD_OPT_GEAR_DIM : (int)c.opt_dimensions[0];
-    o.runs = c.opt_runs;
     gd_opt_gear *gear = NULL;
     gd_opt_testfn tf;
     memset(&tf, 0, sizeof tf);
     gd_opt_problem p;
-    gd_status st;
-    if (o.gear) {
-        st = gd_opt_gear_create(&c, &gear, &err);
-        if (st == GD_OK) {
-            gd_opt_gear_problem(gear, &p);
-            o.active_mm = gd_opt_gear_active_profile_mm(gear);
-            gd_opt_gear_table2(o.table2);
-            o.reference = o.table2;
-            for (int i = 0; i < o.dim; i++)
-                snprintf(o.names[i], sizeof o.names[i], "%s", gd_opt_gear_variable(i, NULL, NULL));
-        }
-    } else {
-        st = gd_opt_testfn_init(&tf, o.objective, o.dim, c.opt_shift, gd_opt_instance_seed(&c, 0), &err);
-        if (st == GD_OK) {
-            gd_opt_testfn_problem(&tf, &p);
-            o.reference = tf.optimum;
-            for (int i = 0; i < o.dim; i++)
-                snprintf(o.names[i], sizeof o.names[i], "x%d", i + 1);
-        }
-    }
+    gd_status st = setup_problem(&c, &o, &gear, &tf, &p, &err);
     if (st != GD_OK)
         return cli_fail(&err);
-    for (int i = 0; i < o.dim; i++) {
-        o.lower[i] = p.lower[i];
-        o.upper[i] = p.upper[i];
-        o.name_ptr[i] = o.names[i];
-    }
     int rc = 0;
     o.res = calloc((size_t)o.runs, sizeof *o.res);
     double *run_f = calloc((size_t)o.runs, sizeof(double));
@@ -218,80 +331,17 @@ int run_optimize(const cli_case_args *a, gd_case *cp, const char *dir)
     s.population = c.opt_population;
     s.threads = a->threads;
     s.keep_history = 1;
-    int threads = c.opt_algorithm == GD_OPT_ALO || c.opt_algorithm == GD_OPT_RANDOM ? a->threads : 1;
-#ifdef _OPENMP
-    if (threads <= 0)
-        threads = omp_get_max_threads();
-#else
-    threads = 1;
-#endif
+    int threads = cli_threads(c.opt_algorithm == GD_OPT_ALO || c.opt_algorithm == GD_OPT_RANDOM ? a->threads : 1);
     double wall = 0;
-    for (int r = 0; r < o.runs; r++) {
-        s.seed = gd_opt_run_seed(&c, r);
-        st = gd_opt_run(&p, &s, &o.res[r], &err);
-        if (st != GD_OK) {
-            rc = cli_fail(&err);
-            goto done;
-        }
-        run_f[r] = o.res[r].f;
-        wall += o.res[r].wall_s;
-        if (o.res[r].f < o.res[o.best].f)
-            o.best = r;
-        if (!a->quiet && o.runs > 1)
-            printf("  run %d (seed %lu): %.8g after %ld evaluations, %.1f s\n", r + 1, s.seed, o.res[r].f,
-                   o.res[r].evaluations, o.res[r].wall_s);
-    }
-    const gd_opt_result *b = &o.res[o.best];
-    /* the gear: LTE of the unmodified pair, Table 2 and the optimum (the same LTCA as the objective) */
-    if (o.gear) {
-        const double zero[GD_OPT_GEAR_DIM] = {0};
-        const double *xs[3] = {zero, o.table2, b->y};
-        for (int j = 0; j < 3 && st == GD_OK; j++) {
-            gd_case t = c;
-            gd_opt_gear_apply(&t, xs[j]);
-            st = gd_ltca_run_opts(&t, 0, 0, &o.lte[j], &err);
-        }
-        if (st != GD_OK) {
-            rc = cli_fail(&err);
-            goto done;
-        }
-    }
-    if (gd_mkdir_p(dir, &err) != GD_OK) {
+    if (run_all(a, &c, &p, &s, &o, run_f, &wall, &err) != GD_OK ||
+        (o.gear && compute_lte(&c, &o, &err) != GD_OK) || gd_mkdir_p(dir, &err) != GD_OK) {
         rc = cli_fail(&err);
         goto done;
     }
     const char *files[32];
     int nfiles = 0;
-    if (o.gear) {
-        /* the optimum's loaded contact pattern and its TCA contact pattern, with the writers of those analyses */
-        cli_case_args sub = *a;
-        sub.quiet = 1;
-        char sdir[GD_PATH_MAX + 32];
-        gd_case t;
-        snprintf(sdir, sizeof sdir, "%s/optimum", dir);
-        if (optimum_case(&c, b->y, GD_ANALYSIS_LTCA, &t, &err) != 0) {
-            rc = cli_fail(&err);
-            goto done;
-        }
-        rc = run_ltca(&sub, &t, sdir);
-        gd_case_free(&t);
-        if (rc)
-            goto done;
-        files[nfiles++] = "optimum/";
-        snprintf(sdir, sizeof sdir, "%s/optimum-tca", dir);
-        if (optimum_case(&c, b->y, GD_ANALYSIS_TCA, &t, &err) != 0) {
-            rc = cli_fail(&err);
-            goto done;
-        }
-        rc = run_tca(&sub, &t, sdir);
-        gd_case_free(&t);
-        if (rc)
-            goto done;
-        files[nfiles++] = "optimum-tca/";
-        st = write_lte(dir, &o, &err);
-        if (st == GD_OK)
-            files[nfiles++] = "lte.csv";
-    }
+    if (o.gear && (rc = write_gear_outputs(a, &c, dir, &o, files, &nfiles, &err)) != 0)
+        goto done;
     st = write_optimum(dir, &o, &err);
     if (st == GD_OK) {
         files[nfiles++] = "optimum.csv";
@@ -303,66 +353,22 @@ int run_optimize(const cli_case_args *a, gd_case *cp, const char *dir)
     }
     files[nfiles++] = "convergence.csv";
     const char *note = NULL;
-    if (c.plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, &c, &o, &perr) == GD_OK) {
-                static const char *pics[] = {"convergence.png", "convergence.svg", "lte.png", "lte.svg"};
-                for (int i = 0; i < (o.gear ? 4 : 2); i++)
-                    files[nfiles++] = pics[i];
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, &c, &o, &perr);
+        static const char *pics[] = {"convergence.png", "convergence.svg", "lte.png", "lte.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, o.gear ? 4 : 2, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
-    gd_opt_optimize_summary sm;
-    memset(&sm, 0, sizeof sm);
-    sm.objective = o.objective;
-    sm.dim = o.dim;
-    sm.algorithm = c.opt_algorithm;
-    sm.runs = o.runs;
-    sm.threads = threads;
-    sm.budget = s.budget;
-    sm.names = o.name_ptr;
-    sm.lower = o.lower;
-    sm.upper = o.upper;
-    sm.best = b;
-    sm.best_run = o.best;
-    sm.run_f = run_f;
-    sm.true_optimum = o.gear ? NULL : tf.optimum;
-    sm.lte_unmodified = o.gear ? o.lte[0].lte_pp_arcsec : NAN;
-    sm.lte_table2 = o.gear ? o.lte[1].lte_pp_arcsec : NAN;
-    sm.lte_optimum = o.gear ? o.lte[2].lte_pp_arcsec : NAN;
-    sm.active_profile_mm = o.active_mm;
-    sm.wall_s = wall;
-    st = gd_summary_write_optimize(dir, &c, &sm, files, nfiles, &err);
+    st = write_summary(dir, &c, &o, &tf, &s, threads, run_f, wall, files, nfiles, &err);
     if (st != GD_OK) {
         rc = cli_fail(&err);
         goto done;
     }
     if (note && !a->quiet)
         fprintf(stderr, "geardyn: note: %s\n", note);
-    if (!a->quiet) {
-        printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s "
-               "(evaluation %ld of run %d)\n", dir, gd_opt_algorithm_name(c.opt_algorithm),
-               gd_opt_objective_name(o.objective), o.dim, o.dim == 1 ? "" : "s", o.runs, o.runs == 1 ? "" : "s",
-               s.budget, wall, threads, threads == 1 ? "" : "s", b->f, o.gear ? " arcsec" : "", b->best_at, o.best + 1);
-        for (int i = 0; i < o.dim; i++) {
-            const char *unit = "", *sym = o.names[i];
-            if (o.gear)
-                gd_opt_gear_variable(i, &unit, &sym);
-            printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g\n", sym, o.names[i], b->y[i], unit, o.lower[i],
-                   o.upper[i], o.gear ? "Table 2" : "minimiser", o.reference[i]);
-        }
-        if (o.gear)
-            printf("  LTE peak-to-peak: unmodified %.6g, Table 2 %.6g, optimum %.6g arcsec (%+.1f %% against the "
-                   "unmodified pair; the paper: 4.194 -> 1.157, -72.41 %%)\n", o.lte[0].lte_pp_arcsec,
-                   o.lte[1].lte_pp_arcsec, o.lte[2].lte_pp_arcsec,
-                   100 * (o.lte[2].lte_pp_arcsec - o.lte[0].lte_pp_arcsec) / o.lte[0].lte_pp_arcsec);
-    }
+    if (!a->quiet)
+        print_result(dir, &c, &o, s.budget, wall, threads);
 done:
     free(run_f);
     out_free(&o);

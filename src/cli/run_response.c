@@ -120,18 +120,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_model *m, cons
             fmt[f][0], dir, fmt[f][2], r->motion, r->poincare_distinct, dir, dir, m->bc_m * 1e6,
             m->bc_m * m->omega_n);
     }
-    gd_status st = gd_gnuplot_run(dir, script, err);
-    const char *names[] = {"time_history", "phase"};
-    for (int i = 0; i < 2; i++)
-        for (int f = 0; f < 2; f++) {
-            char tmp[1400], fin[1400];
-            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], fmt[f][2]);
-            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], fmt[f][2]);
-            if (st == GD_OK && rename(tmp, fin) != 0)
-                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-            unlink(tmp);
-        }
-    return st;
+    static const char *names[] = {"time_history", "phase"};
+    return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
 int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
@@ -202,19 +192,11 @@ int run_response(const cli_case_args *a, gd_case *cp, const char *dir)
     if (st != GD_OK)
         goto fail;
     const char *note = NULL;
-    if (c.plots && o.want_th) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, &c, &m, &res, &perr) == GD_OK) {
-                static const char *pics[] = {"time_history.png", "time_history.svg", "phase.png", "phase.svg"};
-                for (int i = 0; i < 4; i++)
-                    files[nfiles++] = pics[i];
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots && o.want_th, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, &c, &m, &res, &perr);
+        static const char *pics[] = {"time_history.png", "time_history.svg", "phase.png", "phase.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 4, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
     st = gd_summary_write_response(dir, &c, &m, &res, files, nfiles, &err);

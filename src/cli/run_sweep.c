@@ -17,7 +17,6 @@
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
-#include <stdarg.h>
 #include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,9 +25,6 @@
 #include <time.h>
 #include <unistd.h>
 
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 #define JOURNAL ".sweep.journal"
 
@@ -279,34 +275,6 @@ static gd_status load_text(sweep_cli *s, const char *text, size_t len, gd_error 
 
 /* ---- pictures ---- */
 
-typedef struct sbuf {
-    char *s;
-    size_t n, cap;
-} sbuf;
-
-static void add(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void add(sbuf *b, const char *fmt, ...)
-{
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int k = vsnprintf(b->s ? b->s + b->n : NULL, b->s ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0)
-            return;
-        if (b->s && b->n + (size_t)k < b->cap) {
-            b->n += (size_t)k;
-            return;
-        }
-        size_t cap = (b->cap + (size_t)k + 1) * 2;
-        char *ns = realloc(b->s, cap);
-        if (!ns)
-            return;
-        b->s = ns;
-        b->cap = cap;
-    }
-}
-
 static const char *branch_colour[] = {"#1f77b4", "#d62728", "#222222"};
 /* up: open circles and a wide line under down's small dots and thin line, so that both
  * show where the branches coincide */
@@ -315,7 +283,7 @@ static const char *branch_line[] = {"pt 6 ps 0.6 lw 2.5", "pt 7 ps 0.35 lw 1", "
 
 /* Fig. 15 of the paper: the bifurcation diagram, the largest Lyapunov exponent and the RMS
  * acceleration, stacked on one parameter axis; up and down in two colours. */
-static void script_bifurcation(sbuf *b, const char *dir, const gd_case *c, const gd_sweep_plan *p,
+static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_case *c, const gd_sweep_plan *p,
                                const int *has, int mle, const char *term, const char *ext)
 {
     double x0 = fmin(p->values[0][0], p->values[0][p->npoints[0] - 1]);
@@ -324,52 +292,54 @@ static void script_bifurcation(sbuf *b, const char *dir, const gd_case *c, const
         x0 -= fabs(x0) * 0.05 + 1e-9;
         x1 += fabs(x1) * 0.05 + 1e-9;
     }
-    static const char *models[] = {"torsional", "torsional-lr", "bta"};
+    size_t nkeys;
+    char model[32]; /* the schema's name of scene.model */
+    gd_case_format_value(c, (size_t)(gd_case_find_key("scene", "model") - gd_case_schema(&nkeys)), model, sizeof model);
     int panels = mle ? 3 : 2;
-    add(b, "set terminal %s\nset output '%s/.bifurcation%s.tmp'\n", term, dir, ext);
-    add(b, "set multiplot layout %d,1 margins 0.1,0.96,0.07,0.93 spacing 0,0.025 title 'Sweep of %s (%s model, %s)'\n",
-        panels, p->parameter[0], models[c->model],
+    gd_gnuplot_printf(b, "set terminal %s\nset output '%s/.bifurcation%s.tmp'\n", term, dir, ext);
+    gd_gnuplot_printf(b, "set multiplot layout %d,1 margins 0.1,0.96,0.07,0.93 spacing 0,0.025 title 'Sweep of %s (%s model, %s)'\n",
+        panels, p->parameter[0], model,
         p->mode == GD_SWEEP_CONTINUATION ? "continuation" : "independent points");
-    add(b, "set grid\nset xrange [%.12g:%.12g]\n%sset key top right opaque box\nset format x ''\nunset xlabel\n", x0, x1,
+    gd_gnuplot_printf(b, "set grid\nset xrange [%.12g:%.12g]\n%sset key top right opaque box\nset format x ''\nunset xlabel\n", x0, x1,
         p->spacing[0] == GD_SWEEP_LOG ? "set logscale x\n" : "");
     /* the Poincare samples of the first response */
-    add(b, "set ylabel '%s at the Poincare section (-)'\nplot ", p->resp[0].name);
+    gd_gnuplot_printf(b, "set ylabel '%s at the Poincare section (-)'\nplot ", p->resp[0].name);
     int first = 1;
     for (int br = 0; br < 3; br++)
         if (has[br]) {
-            add(b, "%s'%s/bifurcation.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(3) : 1/0) with points %s "
+            gd_gnuplot_printf(b, "%s'%s/bifurcation.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(3) : 1/0) with points %s "
                    "lc rgb '%s' title '%s'",
                 first ? "" : ", ", dir, gd_sweep_branch_name(br), branch_point[br], branch_colour[br],
                 gd_sweep_branch_name(br));
             first = 0;
         }
-    add(b, "\n");
+    gd_gnuplot_printf(b, "\n");
     const char *what[2] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s^2)"};
     int col[2] = {4, 3};
     for (int q = mle ? 0 : 1; q < 2; q++) {
         if (q == 1)
-            add(b, "unset xzeroaxis\nset format x '%%g'\nset xlabel '%s%s%s%s'\n", p->parameter[0],
+            gd_gnuplot_printf(b, "unset xzeroaxis\nset format x '%%g'\nset xlabel '%s%s%s%s'\n", p->parameter[0],
                 p->unit[0][0] ? " (" : "", p->unit[0], p->unit[0][0] ? ")" : "");
         else
-            add(b, "set xzeroaxis lt -1\n");
-        add(b, "unset key\n");
-        add(b, "set ylabel '%s'\nplot ", what[q]);
+            gd_gnuplot_printf(b, "set xzeroaxis lt -1\n");
+        gd_gnuplot_printf(b, "unset key\n");
+        gd_gnuplot_printf(b, "set ylabel '%s'\nplot ", what[q]);
         first = 1;
         for (int br = 0; br < 3; br++)
             if (has[br]) {
-                add(b, "%s'%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(%d) : 1/0) with linespoints "
+                gd_gnuplot_printf(b, "%s'%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(%d) : 1/0) with linespoints "
                        "%s lc rgb '%s' notitle",
                     first ? "" : ", ", dir, gd_sweep_branch_name(br), col[q], branch_line[br], branch_colour[br]);
                 first = 0;
             }
-        add(b, "\n");
+        gd_gnuplot_printf(b, "\n");
     }
-    add(b, "unset multiplot\nunset output\n");
+    gd_gnuplot_printf(b, "unset multiplot\nunset output\n");
 }
 
 /* The regime map: motion class and largest Lyapunov exponent over the two parameters, one
  * row of panels per branch. */
-static void script_map(sbuf *b, const char *dir, const gd_sweep_plan *p, const int *has, double mle_abs,
+static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_plan *p, const int *has, double mle_abs,
                        const char *term, const char *ext)
 {
     int rows = has[0] + has[1] + has[2];
@@ -390,34 +360,34 @@ static void script_map(sbuf *b, const char *dir, const gd_sweep_plan *p, const i
         snprintf(yl, sizeof yl, "($7/%.12g)", fac[1]), snprintf(yh, sizeof yh, "($7*%.12g)", fac[1]);
     else
         snprintf(yl, sizeof yl, "($7-%.12g)", half[1]), snprintf(yh, sizeof yh, "($7+%.12g)", half[1]);
-    add(b, "set terminal %s\nset output '%s/.regime_map%s.tmp'\n", term, dir, ext);
-    add(b, "set multiplot layout %d,2 title 'Regime map: %s x %s'\n", rows, p->parameter[0], p->parameter[1]);
-    add(b, "cls(s) = s eq 'chaotic' ? 12 : s eq 'quasi-periodic' ? 11 : s eq 'not-periodic' ? 10 : "
+    gd_gnuplot_printf(b, "set terminal %s\nset output '%s/.regime_map%s.tmp'\n", term, dir, ext);
+    gd_gnuplot_printf(b, "set multiplot layout %d,2 title 'Regime map: %s x %s'\n", rows, p->parameter[0], p->parameter[1]);
+    gd_gnuplot_printf(b, "cls(s) = s eq 'chaotic' ? 12 : s eq 'quasi-periodic' ? 11 : s eq 'not-periodic' ? 10 : "
            "s eq 'failed' ? 0 : (strlen(s) > 7 && s[1:7] eq 'period-') ? (int(s[8:]) > 8 ? 9 : int(s[8:])) : 10\n");
-    add(b, "set xlabel '%s (%s)'\nset ylabel '%s (%s)'\nunset key\nset tics out\n%s%s", p->parameter[0], p->unit[0],
+    gd_gnuplot_printf(b, "set xlabel '%s (%s)'\nset ylabel '%s (%s)'\nunset key\nset tics out\n%s%s", p->parameter[0], p->unit[0],
         p->parameter[1], p->unit[1], p->spacing[0] == GD_SWEEP_LOG ? "set logscale x\n" : "",
         p->spacing[1] == GD_SWEEP_LOG ? "set logscale y\n" : "");
     for (int br = 0; br < 3; br++) {
         if (!has[br])
             continue;
-        add(b, "set title 'motion (%s)'\nset palette maxcolors 13\n"
+        gd_gnuplot_printf(b, "set title 'motion (%s)'\nset palette maxcolors 13\n"
                "set palette defined (0 '#cccccc', 1 '#1f77b4', 2 '#2ca02c', 3 '#bcbd22', 4 '#17becf', 5 '#9467bd', "
                "6 '#8c564b', 7 '#e377c2', 8 '#7f7f7f', 9 '#aec7e8', 10 '#ffbb78', 11 '#ff7f0e', 12 '#d62728')\n"
                "set cbrange [-0.5:12.5]\nset cbtics ('failed' 0, 'P1' 1, 'P2' 2, 'P3' 3, 'P4' 4, 'P5' 5, 'P6' 6, "
                "'P7' 7, 'P8' 8, 'P9+' 9, 'not periodic' 10, 'quasi-periodic' 11, 'chaotic' 12)\n",
             gd_sweep_branch_name(br));
         /* (the branch filter goes on y: gnuplot leaves the boxes unfilled when it is on the colour) */
-        add(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(cls(strcol(5))) "
+        gd_gnuplot_printf(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(cls(strcol(5))) "
                "with boxxyerror fs solid 1.0 noborder lc palette\n",
             dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
-        add(b, "set title 'largest Lyapunov exponent per mesh period (%s)'\nset palette maxcolors 0\n"
+        gd_gnuplot_printf(b, "set title 'largest Lyapunov exponent per mesh period (%s)'\nset palette maxcolors 0\n"
                "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\nset cbrange [%.6g:%.6g]\nset cbtics auto\n",
             gd_sweep_branch_name(br), -mle_abs, mle_abs);
-        add(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(column(4)) "
+        gd_gnuplot_printf(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(column(4)) "
                "with boxxyerror fs solid 1.0 noborder lc palette\n",
             dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
     }
-    add(b, "unset multiplot\nunset output\n");
+    gd_gnuplot_printf(b, "unset multiplot\nunset output\n");
 }
 
 /* Draw the pictures; the names drawn go to names[] (*n of them). */
@@ -437,8 +407,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_sweep_plan *p,
         mle_abs = 1;
     static const char *fmt[2][2] = {{"pngcairo noenhanced size 1200,1200 font ',11'", ".png"},
                                     {"svg noenhanced size 1200,1200 dynamic font 'sans,11'", ".svg"}};
-    sbuf b = {NULL, 0, 0};
-    add(&b, "set datafile separator ','\nset datafile missing 'nan'\n");
+    gd_gnuplot_script b = {0};
+    gd_gnuplot_printf(&b, "set datafile separator ','\nset datafile missing 'nan'\n");
     const char *stem = p->naxes > 1 ? "regime_map" : "bifurcation";
     for (int f = 0; f < 2; f++) {
         if (p->naxes > 1)
@@ -446,19 +416,13 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_sweep_plan *p,
         else
             script_bifurcation(&b, dir, c, p, has, mle, fmt[f][0], fmt[f][1]);
     }
-    if (!b.s)
+    if (b.bad) {
+        free(b.p);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
-    gd_status st = gd_gnuplot_run(dir, b.s, err);
-    free(b.s);
-    static const char *png[] = {"bifurcation.png", "regime_map.png"}, *svg[] = {"bifurcation.svg", "regime_map.svg"};
-    for (int f = 0; f < 2; f++) {
-        char tmp[GD_PATH_MAX + 64], fin[GD_PATH_MAX + 64];
-        snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, stem, fmt[f][1]);
-        snprintf(fin, sizeof fin, "%s/%s%s", dir, stem, fmt[f][1]);
-        if (st == GD_OK && rename(tmp, fin) != 0)
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-        unlink(tmp);
     }
+    gd_status st = gd_gnuplot_draw(dir, b.p, &stem, 1, err);
+    free(b.p);
+    static const char *png[] = {"bifurcation.png", "regime_map.png"}, *svg[] = {"bifurcation.svg", "regime_map.svg"};
     if (st == GD_OK) {
         names[(*n)++] = p->naxes > 1 ? png[1] : png[0];
         names[(*n)++] = p->naxes > 1 ? svg[1] : svg[0];
@@ -479,14 +443,10 @@ static int finish(sweep_cli *s, const cli_case_args *a, const gd_case *c, const 
     files[nfiles++] = "sweep.csv";
     files[nfiles++] = "bifurcation.csv";
     const char *note = NULL;
-    if (c->plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, c, p, s->pts, files, &nfiles, &perr) != GD_OK && !a->quiet)
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-        }
+    if (gd_gnuplot_wanted(c->plots, &note)) {
+        gd_error perr = {0};
+        if (draw(dir, c, p, s->pts, files, &nfiles, &perr) != GD_OK && !a->quiet)
+            fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
     }
     files[nfiles++] = "summary.json";
     if (gd_sweep_write_summary(dir, c, p, s->pts, files, nfiles, &err) != GD_OK)
@@ -544,6 +504,123 @@ static int finish(sweep_cli *s, const cli_case_args *a, const gd_case *c, const 
     return 0;
 }
 
+/* ---- the phases of a sweep ---- */
+
+/* Rank 0 prepares the directory and the journal; the others get what it read. Returns 1 when the
+ * sweep can run, else 0 with *rc the exit status. */
+static int share_journal(sweep_cli *s, const cli_case_args *a, const char *dir, char **text, size_t *tlen, int *rc,
+                         gd_error *err)
+{
+    int ok = 1;
+    if (s->rank == 0 && prepare(s, a, dir, text, tlen, err) != GD_OK) {
+        *rc = cli_fail(err);
+        ok = 0;
+    }
+    if (s->size > 1) {
+        ok = cli_mpi_bcast_int(ok);
+        *rc = cli_mpi_bcast_int(*rc);
+        if (ok && cli_mpi_bcast_text(text, tlen) != 0) {
+            fprintf(stderr, "geardyn: rank %d: MPI broadcast of the journal failed\n", s->rank);
+            cli_mpi_abort(1);
+        }
+        if (ok && s->rank != 0 && load_text(s, *text, *tlen, err) != GD_OK) {
+            fprintf(stderr, "geardyn: rank %d: %s\n", s->rank, err->msg);
+            cli_mpi_abort(1);
+        }
+    }
+    return ok;
+}
+
+/* SIGINT and SIGTERM stop the sweep after the running points (the previous handlers saved). */
+static void catch_signals(struct sigaction *old_int, struct sigaction *old_term)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESTART;
+    sigaction(SIGINT, &sa, old_int);
+    sigaction(SIGTERM, &sa, old_term);
+    if (old_int->sa_handler == SIG_IGN) /* started in the background by a shell: leave it so */
+        sigaction(SIGINT, old_int, NULL);
+}
+
+/* The options of the library's sweep: threads (per rank under MPI), this rank, the callbacks. */
+static void sweep_options(sweep_cli *s, const cli_case_args *a, gd_sweep_opts *o)
+{
+    gd_sweep_opts_default(o);
+    o->threads = a->threads;
+    if (s->size > 1 && a->threads == 0 && !getenv("OMP_NUM_THREADS")) {
+        long np = sysconf(_SC_NPROCESSORS_ONLN) / cli_mpi_local_size();
+        o->threads = np > 1 ? (int)np : 1;
+    }
+    if (s->size > 1 && !cli_mpi_threads_ok())
+        o->threads = 1;
+    o->rank = s->rank;
+    o->nranks = s->size;
+    o->point_done = on_point;
+    o->should_stop = should_stop;
+    o->user = s;
+}
+
+/* Under MPI after this rank's points (status st): the other ranks report to rank 0, which
+ * journals their records until every rank is done. */
+static void gather_ranks(sweep_cli *s, gd_status st, const gd_error *err)
+{
+    if (s->size > 1 && s->rank != 0) {
+        int status = st == GD_OK ? 0 : st == GD_ERR_INTERRUPTED ? 1 : 2;
+        cli_mpi_send_done(status, st == GD_OK ? "" : err->msg);
+    } else if (s->size > 1) {
+        if (st != GD_OK && st != GD_ERR_INTERRUPTED) {
+            if (s->progress)
+                fputc('\n', stderr);
+            fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n", err->msg);
+            cli_mpi_abort(1);
+        }
+        cli_mpi_handlers h = {on_remote_record, on_remote_done, s};
+        while (s->ranks_done < s->size - 1) {
+            pthread_mutex_lock(&s->io);
+            int prc = cli_mpi_poll(1, &h);
+            pthread_mutex_unlock(&s->io);
+            if (prc) {
+                if (s->progress)
+                    fputc('\n', stderr);
+                fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n",
+                        s->fatal_err.msg);
+                cli_mpi_abort(1);
+            }
+        }
+    }
+}
+
+/* Rank 0 at the end: the final files when every point is done, else why not; the exit status. */
+static int conclude(sweep_cli *s, const cli_case_args *a, const gd_case *c, const char *dir, double wall,
+                    int threads, gd_status st, const gd_error *err)
+{
+    const gd_sweep_plan *plan = s->p;
+    progress_line(s, 1);
+    if (s->fd >= 0)
+        close(s->fd);
+    s->fd = -1;
+    int pending = gd_sweep_pending(plan, s->pts);
+    if (pending == 0)
+        return finish(s, a, c, dir, wall, threads);
+    if (g_signal || st == GD_ERR_INTERRUPTED || s->remote_interrupted) {
+        fprintf(stderr, "geardyn: sweep interrupted%s: %d of %d points done and kept in %s; run the same "
+                        "command with --resume to finish it\n",
+                g_signal == SIGINT ? " (SIGINT)" : g_signal == SIGTERM ? " (SIGTERM)" : "", plan->nslots - pending,
+                plan->nslots, s->journal);
+        return g_signal ? 128 + g_signal : 1;
+    }
+    if (st != GD_OK || s->remote_failed) {
+        fprintf(stderr, "geardyn: %s; %d of %d points done and kept: run again with --resume\n",
+                st != GD_OK ? err->msg : s->remote_msg, plan->nslots - pending, plan->nslots);
+        return st != GD_OK ? gd_status_exit_code(st) : 1;
+    }
+    fprintf(stderr, "geardyn: internal error: %d points were not run\n", pending);
+    return 1;
+}
+
 int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
 {
     gd_error err = {0};
@@ -569,115 +646,26 @@ int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
     char *text = NULL;
     size_t tlen = 0;
 
-    /* rank 0 prepares the directory and the journal; the others get what it read */
-    int ok = 1;
-    if (s.rank == 0 && prepare(&s, a, dir, &text, &tlen, &err) != GD_OK) {
-        rc = cli_fail(&err);
-        ok = 0;
-    }
-    if (s.size > 1) {
-        ok = cli_mpi_bcast_int(ok);
-        rc = cli_mpi_bcast_int(rc);
-        if (ok && cli_mpi_bcast_text(&text, &tlen) != 0) {
-            fprintf(stderr, "geardyn: rank %d: MPI broadcast of the journal failed\n", s.rank);
-            cli_mpi_abort(1);
-        }
-        if (ok && s.rank != 0 && load_text(&s, text, tlen, &err) != GD_OK) {
-            fprintf(stderr, "geardyn: rank %d: %s\n", s.rank, err.msg);
-            cli_mpi_abort(1);
-        }
-    }
-    if (!ok)
+    if (!share_journal(&s, a, dir, &text, &tlen, &rc, &err))
         goto out;
     s.done = s.done_at_start = plan.nslots - gd_sweep_pending(&plan, pts);
     s.progress = s.rank == 0 && !a->quiet && isatty(2);
 
-    struct sigaction sa, old_int, old_term;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
-    if (old_int.sa_handler == SIG_IGN) /* started in the background by a shell: leave it so */
-        sigaction(SIGINT, &old_int, NULL);
-
+    struct sigaction old_int, old_term;
+    catch_signals(&old_int, &old_term);
     gd_sweep_opts o;
-    gd_sweep_opts_default(&o);
-    o.threads = a->threads;
-    if (s.size > 1 && a->threads == 0 && !getenv("OMP_NUM_THREADS")) {
-        long np = sysconf(_SC_NPROCESSORS_ONLN) / cli_mpi_local_size();
-        o.threads = np > 1 ? (int)np : 1;
-    }
-    if (s.size > 1 && !cli_mpi_threads_ok())
-        o.threads = 1;
-    o.rank = s.rank;
-    o.nranks = s.size;
-    o.point_done = on_point;
-    o.should_stop = should_stop;
-    o.user = &s;
-    int threads = o.threads;
-#ifdef _OPENMP
-    if (threads <= 0)
-        threads = omp_get_max_threads();
-#else
-    threads = 1;
-#endif
+    sweep_options(&s, a, &o);
+    int threads = cli_threads(o.threads);
     s.t0 = now();
     progress_line(&s, 0);
     gd_status st = gd_sweep_run(c, &plan, pts, &o, &err);
-
-    if (s.size > 1 && s.rank != 0) {
-        int status = st == GD_OK ? 0 : st == GD_ERR_INTERRUPTED ? 1 : 2;
-        cli_mpi_send_done(status, st == GD_OK ? "" : err.msg);
-    } else if (s.size > 1) {
-        if (st != GD_OK && st != GD_ERR_INTERRUPTED) {
-            if (s.progress)
-                fputc('\n', stderr);
-            fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n", err.msg);
-            cli_mpi_abort(1);
-        }
-        cli_mpi_handlers h = {on_remote_record, on_remote_done, &s};
-        while (s.ranks_done < s.size - 1) {
-            pthread_mutex_lock(&s.io);
-            int prc = cli_mpi_poll(1, &h);
-            pthread_mutex_unlock(&s.io);
-            if (prc) {
-                if (s.progress)
-                    fputc('\n', stderr);
-                fprintf(stderr, "geardyn: %s; the finished points are kept: run again with --resume\n",
-                        s.fatal_err.msg);
-                cli_mpi_abort(1);
-            }
-        }
-    }
+    gather_ranks(&s, st, &err);
     double wall = now() - s.t0;
     sigaction(SIGINT, &old_int, NULL);
     sigaction(SIGTERM, &old_term, NULL);
 
-    if (s.rank == 0) {
-        progress_line(&s, 1);
-        if (s.fd >= 0)
-            close(s.fd);
-        s.fd = -1;
-        int pending = gd_sweep_pending(&plan, pts);
-        if (pending == 0) {
-            rc = finish(&s, a, c, dir, wall, threads);
-        } else if (g_signal || st == GD_ERR_INTERRUPTED || s.remote_interrupted) {
-            fprintf(stderr, "geardyn: sweep interrupted%s: %d of %d points done and kept in %s; run the same "
-                            "command with --resume to finish it\n",
-                    g_signal == SIGINT ? " (SIGINT)" : g_signal == SIGTERM ? " (SIGTERM)" : "", plan.nslots - pending,
-                    plan.nslots, s.journal);
-            rc = g_signal ? 128 + g_signal : 1;
-        } else if (st != GD_OK || s.remote_failed) {
-            fprintf(stderr, "geardyn: %s; %d of %d points done and kept: run again with --resume\n",
-                    st != GD_OK ? err.msg : s.remote_msg, plan.nslots - pending, plan.nslots);
-            rc = st != GD_OK ? gd_status_exit_code(st) : 1;
-        } else {
-            fprintf(stderr, "geardyn: internal error: %d points were not run\n", pending);
-            rc = 1;
-        }
-    }
+    if (s.rank == 0)
+        rc = conclude(&s, a, c, dir, wall, threads, st, &err);
     if (s.size > 1)
         rc = cli_mpi_bcast_int(rc);
 out:

@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
 
 static const char *half_name[2] = {"left", "right"};
 
@@ -131,18 +130,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_tca_result *r,
     }
     if (n >= (int)sizeof script)
         return gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long");
-    gd_status st = gd_gnuplot_run(dir, script, err);
-    const char *names[] = {"contact_pattern", "gte"};
-    for (int i = 0; i < 2; i++)
-        for (int fi = 0; fi < 2; fi++) {
-            char tmp[1400], fin[1400];
-            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], fmt[fi][1]);
-            snprintf(fin, sizeof fin, "%s/%s%s", dir, names[i], fmt[fi][1]);
-            if (st == GD_OK && rename(tmp, fin) != 0)
-                st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-            unlink(tmp);
-        }
-    return st;
+    static const char *names[] = {"contact_pattern", "gte"};
+    return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
 int run_tca(const cli_case_args *a, gd_case *cp, const char *dir)
@@ -175,19 +164,11 @@ int run_tca(const cli_case_args *a, gd_case *cp, const char *dir)
         return cli_fail(&err);
     }
     const char *note = NULL;
-    if (c.plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, &c, &r, &perr) == GD_OK) {
-                static const char *pics[] = {"contact_pattern.png", "contact_pattern.svg", "gte.png", "gte.svg"};
-                for (int i = 0; i < 4; i++)
-                    files[nfiles++] = pics[i];
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, &c, &r, &perr);
+        static const char *pics[] = {"contact_pattern.png", "contact_pattern.svg", "gte.png", "gte.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 4, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
     st = gd_summary_write_tca(dir, &c, &r, files, nfiles, &err);

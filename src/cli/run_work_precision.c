@@ -4,7 +4,6 @@
 #include "cli.h"
 
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -140,50 +139,12 @@ static gd_status write_tables(const char *dir, const gd_wp_result *res, gd_error
     return gd_atomic_commit(&f, err);
 }
 
-/* A growing script buffer. */
-typedef struct sbuf {
-    char *p;
-    size_t n, cap;
-    int bad;
-} sbuf;
-
-static void sb_printf(sbuf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void sb_printf(sbuf *b, const char *fmt, ...)
-{
-    if (b->bad)
-        return;
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) {
-            b->bad = 1;
-            return;
-        }
-        if (b->p && b->n + (size_t)k < b->cap) {
-            b->n += (size_t)k;
-            return;
-        }
-        size_t cap = b->cap ? 2 * b->cap : 65536;
-        while (cap < b->n + (size_t)k + 1)
-            cap *= 2;
-        char *q = realloc(b->p, cap);
-        if (!q) {
-            b->bad = 1;
-            return;
-        }
-        b->p = q;
-        b->cap = cap;
-    }
-}
-
-static void sb_val(sbuf *b, double v)
+static void sb_val(gd_gnuplot_script *b, double v)
 {
     if (isfinite(v))
-        sb_printf(b, " %.6g", v);
+        gd_gnuplot_printf(b, " %.6g", v);
     else
-        sb_printf(b, " ?");
+        gd_gnuplot_printf(b, " ?");
 }
 
 static double clampe(double v) { return isfinite(v) ? fmax(v, 1e-16) : NAN; }
@@ -234,37 +195,114 @@ static void gp_escape(const char *s, char *out, size_t len)
 static const char *const palette[12] = {"#9400d3", "#009e73", "#56b4e9", "#e69f00", "#f0e442", "#0072b2",
                                          "#e51e10", "#000000", "#a0522d", "#ff69b4", "#808000", "#00ced1"};
 
-/* The diagrams: error against CPU time (and RHS evaluations), one line per family (root
- * finding off dashed), and the order study. */
-static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res, gd_error *err)
+/* The data blocks of the script: $Fi per family (the columns of column()), $Ok per order study. */
+static void script_data(gd_gnuplot_script *b, const gd_wp_result *res)
 {
-    sbuf b = {0};
     int chaotic = res->ref.chaotic;
-    int pairs = c->wp_root_finding_off;
     for (int f = 0; f < res->nfamilies; f++) {
-        sb_printf(&b, "$F%d << EOD\n", f);
+        gd_gnuplot_printf(b, "$F%d << EOD\n", f);
         for (int i = 0; i < res->nruns; i++) {
             const gd_wp_run *r = &res->runs[i];
             if (r->family != f || r->status != GD_WP_OK)
                 continue;
-            sb_val(&b, r->cpu_s);
-            sb_val(&b, (double)r->rhs_evals / (double)r->periods);
-            sb_val(&b, clampe(chaotic ? r->err_short : r->err_poincare));
-            sb_val(&b, clampe(r->err_rms));
-            sb_val(&b, clampe(r->err_events));
-            sb_val(&b, clampe(r->err_mle));
-            sb_printf(&b, "\n");
+            sb_val(b, r->cpu_s);
+            sb_val(b, (double)r->rhs_evals / (double)r->periods);
+            sb_val(b, clampe(chaotic ? r->err_short : r->err_poincare));
+            sb_val(b, clampe(r->err_rms));
+            sb_val(b, clampe(r->err_events));
+            sb_val(b, clampe(r->err_mle));
+            gd_gnuplot_printf(b, "\n");
         }
-        sb_printf(&b, "EOD\n");
+        gd_gnuplot_printf(b, "EOD\n");
     }
     for (int k = 0; k < res->norders; k++) {
-        sb_printf(&b, "$O%d << EOD\n", k);
+        gd_gnuplot_printf(b, "$O%d << EOD\n", k);
         const gd_wp_order *O = &res->orders[k];
         for (int l = 0; l < O->nlevels; l++)
             if (isfinite(O->err[l]))
-                sb_printf(&b, "%d %.6g\n", O->steps[l], clampe(O->err[l]));
-        sb_printf(&b, "EOD\n");
+                gd_gnuplot_printf(b, "%d %.6g\n", O->steps[l], clampe(O->err[l]));
+        gd_gnuplot_printf(b, "EOD\n");
     }
+}
+
+/* The error panels: one line per family (root finding off dashed). */
+static void script_error_panels(gd_gnuplot_script *b, const gd_case *c, const gd_wp_result *res, const char *primary)
+{
+    int chaotic = res->ref.chaotic;
+    int pairs = c->wp_root_finding_off;
+    struct {
+        int xcol, ycol;
+        const char *xl, *yl;
+    } panels[] = {
+        {1, 3, "CPU time (s)", primary},
+        {2, 3, "RHS evaluations per mesh period", primary},
+        {1, 4, "CPU time (s)", "RMS acceleration, relative error"},
+        {1, 5, "CPU time (s)", chaotic ? "event time error (periods), horizon" : "event time error (periods)"},
+        {1, 6, "CPU time (s)", "largest Lyapunov exponent error (per period)"},
+    };
+    int np = chaotic && c->wp_lyapunov ? 5 : 4;
+    for (int p = 0; p < np; p++) {
+        /* a run that went unstable has errors of 1e20: keep the axes on the accurate ones */
+        gd_gnuplot_printf(b, "set xlabel '%s'\nset ylabel '%s'\nset title '%s'\nset yrange [*:10]\n", panels[p].xl,
+                          panels[p].yl, panels[p].yl);
+        gd_gnuplot_printf(b, "plot ");
+        int drawn = 0;
+        for (int f = 0; f < res->nfamilies; f++) {
+            const gd_wp_family *F = &res->families[f];
+            if (!drawable(res, f, panels[p].xcol, panels[p].ycol))
+                continue;
+            const char *color = palette[(pairs ? f / 2 : f) % 12];
+            gd_gnuplot_printf(b, "%s$F%d using %d:%d with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s'",
+                              drawn++ ? ", " : "", f, panels[p].xcol, panels[p].ycol, color, F->root_finding ? 1 : 2,
+                              F->root_finding ? 7 : 6, F->name);
+        }
+        if (!drawn)
+            gd_gnuplot_printf(b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne\n");
+        else if (panels[p].ycol == 3)
+            gd_gnuplot_printf(b, ", %.6g with lines lc rgb '#888888' dt 3 title 'reference floor'\n", res->ref.floor);
+        else
+            gd_gnuplot_printf(b, "\n");
+    }
+}
+
+/* The order study panel: events located (solid) or not (dashed). */
+static void script_order_panel(gd_gnuplot_script *b, const gd_case *c, const gd_wp_result *res)
+{
+    int pairs = c->wp_root_finding_off;
+    gd_gnuplot_printf(b, "set xlabel 'steps per mesh period (fixed step)'\nset ylabel 'error, first %ld periods'\n"
+                         "set title 'Order study: events located (solid) or not (dashed)'\nplot ",
+                      res->horizon_periods);
+    int drawn = 0;
+    for (int k = 0; k < res->norders; k++) {
+        const gd_wp_order *O = &res->orders[k];
+        const gd_wp_family *F = &res->families[O->family];
+        int ok = 0;
+        for (int l = 0; l < O->nlevels; l++)
+            ok |= isfinite(O->err[l]) && O->err[l] <= 10;
+        if (!ok)
+            continue;
+        const char *color = palette[(pairs ? O->family / 2 : O->family) % 12];
+        char ord[32];
+        if (isfinite(O->order))
+            snprintf(ord, sizeof ord, "%.2f", O->order);
+        else
+            snprintf(ord, sizeof ord, "-");
+        gd_gnuplot_printf(b, "%s$O%d using 1:2 with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s: %s'",
+                          drawn++ ? ", " : "", k, color, F->root_finding ? 1 : 2, F->root_finding ? 7 : 6, F->name,
+                          ord);
+    }
+    if (!drawn)
+        gd_gnuplot_printf(b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne");
+    gd_gnuplot_printf(b, "\n");
+}
+
+/* The diagrams: error against CPU time (and RHS evaluations), one line per family (root
+ * finding off dashed), and the order study. */
+static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res, gd_error *err)
+{
+    gd_gnuplot_script b = {0};
+    int chaotic = res->ref.chaotic;
+    script_data(&b, res);
     static const char *fmt[2][3] = {{"pngcairo size 1500,1400 font ',10'", "png", ".png"},
                                     {"svg size 1500,1400 dynamic font 'sans,10'", "svg", ".svg"}};
     char title[600], refm[200];
@@ -276,87 +314,24 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
     else
         snprintf(primary, sizeof primary, "Poincare points error, %ld periods", res->window_periods);
     for (int fm = 0; fm < 2; fm++) {
-        sb_printf(&b, "set terminal %s\nset output '%s/.work_precision%s.tmp'\n", fmt[fm][0], dir, fmt[fm][2]);
-        sb_printf(&b, "set datafile missing '?'\nset grid\nset logscale xy\nset format y '10^{%%L}'\n"
-                      "set key outside right top vertical font ',8'\n"
-                      "set multiplot layout 3,2 title '%s: %s (%s), reference %s, floor %.1e'\n",
-                  title, res->ref.motion, chaotic ? "chaotic" : "periodic", refm, res->ref.floor);
-        struct {
-            int xcol, ycol;
-            const char *xl, *yl;
-        } panels[] = {
-            {1, 3, "CPU time (s)", primary},
-            {2, 3, "RHS evaluations per mesh period", primary},
-            {1, 4, "CPU time (s)", "RMS acceleration, relative error"},
-            {1, 5, "CPU time (s)", chaotic ? "event time error (periods), horizon" : "event time error (periods)"},
-            {1, 6, "CPU time (s)", "largest Lyapunov exponent error (per period)"},
-        };
-        int np = chaotic && c->wp_lyapunov ? 5 : 4;
-        for (int p = 0; p < np; p++) {
-            /* a run that went unstable has errors of 1e20: keep the axes on the accurate ones */
-            sb_printf(&b, "set xlabel '%s'\nset ylabel '%s'\nset title '%s'\nset yrange [*:10]\n", panels[p].xl,
-                      panels[p].yl, panels[p].yl);
-            sb_printf(&b, "plot ");
-            int drawn = 0;
-            for (int f = 0; f < res->nfamilies; f++) {
-                const gd_wp_family *F = &res->families[f];
-                if (!drawable(res, f, panels[p].xcol, panels[p].ycol))
-                    continue;
-                const char *color = palette[(pairs ? f / 2 : f) % 12];
-                sb_printf(&b, "%s$F%d using %d:%d with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s'",
-                          drawn++ ? ", " : "", f, panels[p].xcol, panels[p].ycol, color, F->root_finding ? 1 : 2,
-                          F->root_finding ? 7 : 6, F->name);
-            }
-            if (!drawn)
-                sb_printf(&b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne\n");
-            else if (panels[p].ycol == 3)
-                sb_printf(&b, ", %.6g with lines lc rgb '#888888' dt 3 title 'reference floor'\n", res->ref.floor);
-            else
-                sb_printf(&b, "\n");
-        }
-        if (res->norders > 0) {
-            sb_printf(&b, "set xlabel 'steps per mesh period (fixed step)'\nset ylabel 'error, first %ld periods'\n"
-                          "set title 'Order study: events located (solid) or not (dashed)'\nplot ",
-                      res->horizon_periods);
-            int drawn = 0;
-            for (int k = 0; k < res->norders; k++) {
-                const gd_wp_order *O = &res->orders[k];
-                const gd_wp_family *F = &res->families[O->family];
-                int ok = 0;
-                for (int l = 0; l < O->nlevels; l++)
-                    ok |= isfinite(O->err[l]) && O->err[l] <= 10;
-                if (!ok)
-                    continue;
-                const char *color = palette[(pairs ? O->family / 2 : O->family) % 12];
-                char ord[32];
-                if (isfinite(O->order))
-                    snprintf(ord, sizeof ord, "%.2f", O->order);
-                else
-                    snprintf(ord, sizeof ord, "-");
-                sb_printf(&b, "%s$O%d using 1:2 with linespoints lc rgb '%s' dt %d pt %d ps 0.8 title '%s: %s'",
-                          drawn++ ? ", " : "", k, color, F->root_finding ? 1 : 2, F->root_finding ? 7 : 6, F->name,
-                          ord);
-            }
-            if (!drawn)
-                sb_printf(&b, "'-' using 1:2 with points pt -1 title 'no finite error'\n1 1\ne");
-            sb_printf(&b, "\n");
-        }
-        sb_printf(&b, "unset multiplot\nunset output\n");
+        gd_gnuplot_printf(&b, "set terminal %s\nset output '%s/.work_precision%s.tmp'\n", fmt[fm][0], dir,
+                          fmt[fm][2]);
+        gd_gnuplot_printf(&b, "set datafile missing '?'\nset grid\nset logscale xy\nset format y '10^{%%L}'\n"
+                              "set key outside right top vertical font ',8'\n"
+                              "set multiplot layout 3,2 title '%s: %s (%s), reference %s, floor %.1e'\n",
+                          title, res->ref.motion, chaotic ? "chaotic" : "periodic", refm, res->ref.floor);
+        script_error_panels(&b, c, res, primary);
+        if (res->norders > 0)
+            script_order_panel(&b, c, res);
+        gd_gnuplot_printf(&b, "unset multiplot\nunset output\n");
     }
     if (b.bad) {
         free(b.p);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
     }
-    gd_status st = gd_gnuplot_run(dir, b.p, err);
+    static const char *names[] = {"work_precision"};
+    gd_status st = gd_gnuplot_draw(dir, b.p, names, 1, err);
     free(b.p);
-    for (int fm = 0; fm < 2; fm++) {
-        char tmp[1400], fin[1400];
-        snprintf(tmp, sizeof tmp, "%s/.work_precision%s.tmp", dir, fmt[fm][2]);
-        snprintf(fin, sizeof fin, "%s/work_precision%s", dir, fmt[fm][2]);
-        if (st == GD_OK && rename(tmp, fin) != 0)
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot rename the picture", fin);
-        unlink(tmp);
-    }
     return st;
 }
 
@@ -391,18 +366,11 @@ int run_work_precision(const cli_case_args *a, gd_case *cp, const char *dir)
         files[nfiles++] = "orders.csv";
     }
     const char *note = NULL;
-    if (c.plots) {
-        if (!gd_gnuplot_available()) {
-            note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        } else {
-            gd_error perr = {0};
-            if (draw(dir, &c, &res, &perr) == GD_OK) {
-                files[nfiles++] = "work_precision.png";
-                files[nfiles++] = "work_precision.svg";
-            } else {
-                fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
-            }
-        }
+    if (gd_gnuplot_wanted(c.plots, &note)) {
+        gd_error perr = {0};
+        gd_status pst = draw(dir, &c, &res, &perr);
+        static const char *pics[] = {"work_precision.png", "work_precision.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 2, files, &nfiles);
     }
     files[nfiles++] = "summary.json";
     st = gd_summary_write_workprec(dir, &c, &m, &res, files, nfiles, &err);
