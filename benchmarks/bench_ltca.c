@@ -49,11 +49,13 @@ static int bench(const char *label, int modified, int repeats)
         return 1;
     }
     const int npos = c.ltca_positions_per_cycle;
+    const gd_pair pair = gd_pair_from_case(&c);
+    const gd_ltca_settings set = gd_ltca_settings_from_case(&c);
     double best[2] = {1e300, 1e300}, pp = 0;
     long iters[2] = {0, 0}, points = 0;
     for (int dense = 0; dense < 2; dense++) {
         gd_ltca *w;
-        if (gd_ltca_create(&c, &w, &err) != GD_OK) {
+        if (gd_ltca_create(&pair, &set, &w, &err) != GD_OK) {
             fprintf(stderr, "%s: %s\n", label, err.msg);
             return 1;
         }
@@ -84,7 +86,7 @@ static int bench(const char *label, int modified, int repeats)
     for (int r = 0; r < repeats; r++) {
         gd_ltca_result res;
         double t0 = now();
-        if (gd_ltca_run_opts(&c, 0, 0, &res, &err) != GD_OK) {
+        if (gd_ltca_run_opts(&pair, &set, 0, 0, &res, &err) != GD_OK) {
             fprintf(stderr, "%s: %s\n", label, err.msg);
             return 1;
         }

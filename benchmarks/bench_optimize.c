@@ -62,13 +62,14 @@ int main(int argc, char **argv)
     }
     double x[6];
     gd_opt_gear_table2(x);
-    gd_case t = c;
+    gd_pair t = gd_pair_from_case(&c);
+    const gd_ltca_settings set = gd_ltca_settings_from_case(&c);
     gd_opt_gear_apply(&t, x);
     double best_create = 1e300, best_eval = 1e300, f = 0;
     for (int r = 0; r < repeats; r++) {
         double t0 = now();
         gd_ltca *w;
-        if (gd_ltca_create(&t, &w, &err) != GD_OK) {
+        if (gd_ltca_create(&t, &set, &w, &err) != GD_OK) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }
@@ -76,7 +77,7 @@ int main(int argc, char **argv)
         gd_ltca_free(w);
         best_create = fmin(best_create, t1 - t0);
         t0 = now();
-        if (gd_opt_gear_lte_pp(&t, &f, &err) != GD_OK) {
+        if (gd_opt_gear_lte_pp(&t, &set, &f, &err) != GD_OK) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }
@@ -115,7 +116,10 @@ int main(int argc, char **argv)
 
     if (full) {
         gd_opt_gear *g;
-        if (gd_opt_gear_create(&c, &g, &err) != GD_OK) {
+        const gd_pair pair = gd_pair_from_case(&c);
+        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
+        gd_opt_gear_bounds(&c, lower, upper);
+        if (gd_opt_gear_create(&pair, &set, lower, upper, &g, &err) != GD_OK) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }

@@ -47,8 +47,10 @@ static int bench(const char *label, int modified, int formulation, int repeats)
         fprintf(stderr, "%s: %s\n", label, err.msg);
         return 1;
     }
+    const gd_pair pair = gd_pair_from_case(&c);
+    gd_tca_settings set = gd_tca_settings_from_case(&c);
     gd_tca *t;
-    if (gd_tca_create(&c, &t, &err) != GD_OK) {
+    if (gd_tca_create(&pair, &set, &t, &err) != GD_OK) {
         fprintf(stderr, "%s: %s\n", label, err.msg);
         return 1;
     }
@@ -81,11 +83,11 @@ static int bench(const char *label, int modified, int formulation, int repeats)
     gd_tca_free(t);
     /* the whole analysis */
     double best_run = 1e300;
-    c.tca_formulation = formulation == GD_TCA_TANGENCY ? GD_TCA_TANGENCY : GD_TCA_SEPARATION;
+    set.formulation = formulation == GD_TCA_TANGENCY ? GD_TCA_TANGENCY : GD_TCA_SEPARATION;
     for (int r = 0; r < repeats; r++) {
         gd_tca_result res;
         double t0 = now();
-        if (gd_tca_run(&c, &res, &err) != GD_OK) {
+        if (gd_tca_run(&pair, &set, &res, &err) != GD_OK) {
             fprintf(stderr, "%s: %s\n", label, err.msg);
             return 1;
         }

@@ -61,7 +61,7 @@ ANY = '*'
 PUBLIC = {
     'gd_error.h': 'core',
     'gd_case.h': 'case',
-    'gd_geometry.h': 'geometry', 'gd_flank.h': 'geometry',
+    'gd_pair.h': 'geometry', 'gd_geometry.h': 'geometry', 'gd_flank.h': 'geometry',
     'gd_contact.h': 'contact', 'gd_compliance.h': 'contact', 'gd_tca.h': 'contact',
     'gd_ltca.h': 'contact',
     'gd_excitation.h': 'excitation',

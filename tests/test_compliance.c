@@ -3,6 +3,7 @@
  * and the single-pair stiffness of spur pairs at the pitch point against ISO 6336-1's single
  * stiffness c' (an empirical fit of measurements and FE: two independent routes, within 10 %). */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "geardyn/gd_compliance.h"
 #include "tap.h"
 
@@ -64,10 +65,10 @@ int main(void)
             continue;
         }
         gd_geometry g;
-        gd_geometry_compute(&c, &g, &e);
+        gd_geometry_compute(PAIR_OF(&c), &g, &e);
         gd_tooth tp, tg;
-        gd_tooth_init(&c, &g, 0, &tp, &e);
-        gd_tooth_init(&c, &g, 1, &tg, &e);
+        gd_tooth_init(PAIR_OF(&c), &g, 0, &tp, &e);
+        gd_tooth_init(PAIR_OF(&c), &g, 1, &tg, &e);
         gd_load_point tipg, tipp;
         gd_load_point_at(&tg, g.ra[1], &tipg);
         gd_load_point_at(&tp, g.ra[0], &tipp);

@@ -9,6 +9,7 @@
  * The handler is set once per process, so every check runs in a child of its own (fork) that
  * reports through its exit status: a child killed by SIGABRT is GSL's abort. */
 #include "geardyn/gd_analysis.h"
+#include "pair_util.h"
 #include "geardyn/gd_compliance.h"
 #include "geardyn/gd_contact.h"
 #include "geardyn/gd_geometry.h"
@@ -109,7 +110,7 @@ static int ep_geometry(void)
     gd_error e = {0};
     gd_status st = gd_case_init(&c, &e);
     if (st == GD_OK)
-        st = gd_geometry_compute(&c, &g, &e);
+        st = gd_geometry_compute(PAIR_OF(&c), &g, &e);
     gd_case_free(&c);
     return handler_is_off(st, &e);
 }
@@ -134,7 +135,7 @@ static int ep_tca_create(void)
     if (st == GD_OK)
         st = gd_case_set(&c, "scene.analysis=tca", 0, &e);
     if (st == GD_OK)
-        st = gd_tca_create(&c, &t, &e);
+        st = gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &e);
     int rc = handler_is_off(st, &e);
     gd_tca_free(t);
     gd_case_free(&c);

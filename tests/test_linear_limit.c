@@ -21,6 +21,7 @@
  * are the method's solution at step ends (order 8 at rtol 1e-11: 1e-12 of the amplitude),
  * where the cubic dense output between the long steps of that table is 2e-6 off. */
 #include "physics_util.h"
+#include "pair_util.h"
 #include "tap.h"
 #include "geardyn/gd_analysis.h"
 #include "geardyn/gd_scene.h"
@@ -91,7 +92,7 @@ int main(void)
     gd_error e;
     memset(&e, 0, sizeof e);
     gd_geometry g;
-    PU_CHECK(gd_geometry_compute(&c, &g, &e), &e);
+    PU_CHECK(gd_geometry_compute(PAIR_OF(&c), &g, &e), &e);
     double cb = cos(g.beta_b);
     double mn = c.equivalent_mass_kg / (cb * cb), km = c.mesh_stiffness_n_per_m;
     double omega_n = sqrt(km / mn);

@@ -13,6 +13,7 @@
  *     after they return;
  *  7. threads asking for the same new case at once: one computation. */
 #include "ltca_util.h"
+#include "pair_util.h"
 #include "excitation/ltca_cache.h"
 #include "geardyn/gd_excitation.h"
 #include "geardyn/gd_scene.h"
@@ -40,9 +41,9 @@ static uint64_t fnv1a(const unsigned char *p, size_t n)
     return h;
 }
 
-static uint64_t same_hash(const gd_case *c, int npos)
+static uint64_t same_hash(const gd_pair *pair, const gd_ltca_settings *set, int npos)
 {
-    (void)c, (void)npos;
+    (void)pair, (void)set, (void)npos;
     return 42;
 }
 
@@ -66,18 +67,18 @@ static void key_bytes(void)
     gd_case a, b, d;
     if (small_case(&a, 300, 1000) || small_case(&b, 300, 4000) || small_case(&d, 310, 1000))
         return;
-    size_t n = gd_ltca_cache_key_bytes(&a, 0, NULL, 0);
+    size_t n = gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, NULL, 0);
     unsigned char *ka = malloc(n), *kb = malloc(n), *kd = malloc(n);
-    size_t nb = gd_ltca_cache_key_bytes(&b, 0, kb, n), nd = gd_ltca_cache_key_bytes(&d, 0, kd, n);
-    tap_ok(n > 100 && gd_ltca_cache_key_bytes(&a, 0, ka, n) == n, "key bytes: %zu of them, the size asked first", n);
-    tap_ok(fnv1a(ka, n) == gd_ltca_cache_key(&a, 0), "gd_ltca_cache_key is FNV-1a of the key bytes (%016llx)",
-           (unsigned long long)gd_ltca_cache_key(&a, 0));
+    size_t nb = gd_ltca_cache_key_bytes(PAIR_OF(&b), LTCA_SET_OF(&b), 0, kb, n), nd = gd_ltca_cache_key_bytes(PAIR_OF(&d), LTCA_SET_OF(&d), 0, kd, n);
+    tap_ok(n > 100 && gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, ka, n) == n, "key bytes: %zu of them, the size asked first", n);
+    tap_ok(fnv1a(ka, n) == gd_ltca_cache_key(PAIR_OF(&a), LTCA_SET_OF(&a), 0), "gd_ltca_cache_key is FNV-1a of the key bytes (%016llx)",
+           (unsigned long long)gd_ltca_cache_key(PAIR_OF(&a), LTCA_SET_OF(&a), 0));
     tap_ok(nb == n && memcmp(ka, kb, n) == 0, "key bytes: the same at another speed");
     tap_ok(nd == n && memcmp(ka, kd, n) != 0, "key bytes: differ with the torque");
-    tap_ok(gd_ltca_cache_key_bytes(&a, 4, kd, n) == n && memcmp(ka, kd, n) != 0,
+    tap_ok(gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 4, kd, n) == n && memcmp(ka, kd, n) != 0,
            "key bytes: differ with the positions (4 instead of the case's 2)");
     unsigned char few[8] = {0};
-    tap_ok(gd_ltca_cache_key_bytes(&a, 0, few, sizeof few) == n && memcmp(few, "geardyn-", 8) == 0,
+    tap_ok(gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, few, sizeof few) == n && memcmp(few, "geardyn-", 8) == 0,
            "key bytes: a short buffer gets what fits, the count is still the whole");
     free(ka), free(kb), free(kd);
     gd_case_free(&a), gd_case_free(&b), gd_case_free(&d);
@@ -91,9 +92,9 @@ static void repeated(void)
     gd_error e = {0};
     long n0 = gd_ltca_cache_computations(), r0 = gd_ltca_cache_references();
     const gd_ltca_excitation *x1 = NULL, *x2 = NULL, *x3 = NULL;
-    gd_ltca_excitation_cached(&a, &x1, &e);
-    gd_ltca_excitation_cached(&a, &x2, &e);
-    gd_ltca_excitation_cached(&b, &x3, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &x1, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &x2, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&b), LTCA_SET_OF(&b), &x3, &e);
     tap_ok(x1 && x1 == x2 && x2 == x3 && gd_ltca_cache_computations() - n0 == 1,
            "the same case three times (two speeds): one computation (%ld), one excitation (%s)",
            gd_ltca_cache_computations() - n0, e.msg);
@@ -103,7 +104,7 @@ static void repeated(void)
     gd_ltca_excitation_release(x3);
     gd_ltca_excitation_release(NULL);
     tap_ok(gd_ltca_cache_references() == r0, "released: back to %ld", r0);
-    gd_ltca_excitation_cached(&a, &x1, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &x1, &e);
     tap_ok(x1 == x2 && gd_ltca_cache_computations() - n0 == 1, "still cached after the release: no computation");
     gd_ltca_excitation_release(x1);
     gd_ltca_excitation_release(x1); /* once too often: ignored */
@@ -119,19 +120,19 @@ static void collisions(void)
         return;
     gd_error e = {0};
     gd_ltca_excitation ra = {0}, rb = {0};
-    gd_ltca_excitation_compute(&a, 2, &ra, &e);
-    gd_ltca_excitation_compute(&b, 2, &rb, &e);
+    gd_ltca_excitation_compute(PAIR_OF(&a), LTCA_SET_OF(&a), 2, &ra, &e);
+    gd_ltca_excitation_compute(PAIR_OF(&b), LTCA_SET_OF(&b), 2, &rb, &e);
     long n0 = gd_ltca_cache_computations();
     const gd_ltca_excitation *xa = NULL, *xb = NULL, *xa2 = NULL, *xb2 = NULL;
-    gd_ltca_excitation_cached(&a, &xa, &e);
-    gd_ltca_excitation_cached(&b, &xb, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &xa, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&b), LTCA_SET_OF(&b), &xb, &e);
     tap_ok(xa && xb && xa != xb && gd_ltca_cache_computations() - n0 == 2,
            "every hash forced equal: two cases are two entries, two computations (%ld)", gd_ltca_cache_computations() - n0);
     tap_ok(xa && xb && ra.k[0] && rb.k[0] && xa->k[0][0] == ra.k[0][0] && xb->k[0][0] == rb.k[0][0] &&
                ra.k[0][0] != rb.k[0][0],
            "each has its own stiffness (%.6g and %.6g N/m)", xa ? xa->k[0][0] : 0, xb ? xb->k[0][0] : 0);
-    gd_ltca_excitation_cached(&a, &xa2, &e);
-    gd_ltca_excitation_cached(&b, &xb2, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &xa2, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&b), LTCA_SET_OF(&b), &xb2, &e);
     tap_ok(xa2 == xa && xb2 == xb && gd_ltca_cache_computations() - n0 == 2,
            "and each is found again by its full key, not confused with the other");
     gd_ltca_excitation_release(xa), gd_ltca_excitation_release(xa2);
@@ -148,7 +149,7 @@ static void held(void)
         return;
     gd_error e = {0};
     const gd_ltca_excitation *xa = NULL;
-    if (gd_ltca_excitation_cached(&a, &xa, &e) != GD_OK) {
+    if (gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &xa, &e) != GD_OK) {
         tap_ok(0, "held: %s", e.msg);
         return;
     }
@@ -161,7 +162,7 @@ static void held(void)
         if (small_case(&c, 400 + 10 * i, 1000))
             return;
         const gd_ltca_excitation *x = NULL;
-        bad |= gd_ltca_excitation_cached(&c, &x, &e) != GD_OK || x == xa;
+        bad |= gd_ltca_excitation_cached(PAIR_OF(&c), LTCA_SET_OF(&c), &x, &e) != GD_OK || x == xa;
         gd_ltca_excitation_release(x);
         gd_case_free(&c);
     }
@@ -172,7 +173,7 @@ static void held(void)
            slots);
     tap_ok(same(snap(xa), before), "the held excitation is intact (k %.6g N/m)", xa->k[0][0]);
     const gd_ltca_excitation *again = NULL;
-    gd_ltca_excitation_cached(&a, &again, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&a), LTCA_SET_OF(&a), &again, &e);
     tap_ok(again == xa && gd_ltca_cache_computations() - n0 == 20,
            "and still cached: the oldest entry, but held, was not the one evicted");
     gd_ltca_excitation_release(again);
@@ -188,7 +189,7 @@ static void held(void)
         gd_case c;
         if (small_case(&c, 600 + 10 * i, 1000))
             return;
-        if (gd_ltca_excitation_cached(&c, &x[i], &e) == GD_OK)
+        if (gd_ltca_excitation_cached(PAIR_OF(&c), LTCA_SET_OF(&c), &x[i], &e) == GD_OK)
             s[i] = snap(x[i]);
         else
             bad = 1;
@@ -207,7 +208,7 @@ static void held(void)
     if (small_case(&c, 900, 1000))
         return;
     const gd_ltca_excitation *y = NULL;
-    gd_ltca_excitation_cached(&c, &y, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&c), LTCA_SET_OF(&c), &y, &e);
     gd_ltca_excitation_release(y);
     tap_ok(gd_ltca_cache_entries(NULL) == entries, "once nobody holds them, a new case takes an old one's slot (%d entries)",
            gd_ltca_cache_entries(NULL));
@@ -243,7 +244,7 @@ static void *ask(void *arg)
 {
     int i = (int)(intptr_t)arg;
     gd_error e = {0};
-    gd_ltca_excitation_cached(&shared, &got[i], &e);
+    gd_ltca_excitation_cached(PAIR_OF(&shared), LTCA_SET_OF(&shared), &got[i], &e);
     return NULL;
 }
 

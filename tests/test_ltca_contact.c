@@ -7,6 +7,7 @@
  * reference gd_contact_solve; with misalignment a fixed pinion's halves carry different loads,
  * a floating pinion's equal axial forces. */
 #include "ltca_util.h"
+#include "pair_util.h"
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
@@ -17,7 +18,7 @@ static void check_cycle(const char *label, gd_case *c)
 {
     gd_error e = {0};
     gd_ltca_result r;
-    if (gd_ltca_run_opts(c, 32, 0, &r, &e) != GD_OK) {
+    if (gd_ltca_run_opts(PAIR_OF(c), LTCA_SET_OF(c), 32, 0, &r, &e) != GD_OK) {
         tap_ok(0, "%s: %s", label, e.msg);
         return;
     }
@@ -52,7 +53,7 @@ static void check_matrix_and_solvers(const char *label, gd_case *c)
 {
     gd_error e = {0};
     gd_ltca *w;
-    if (gd_ltca_create(c, &w, &e) != GD_OK) {
+    if (gd_ltca_create(PAIR_OF(c), LTCA_SET_OF(c), &w, &e) != GD_OK) {
         tap_ok(0, "%s: %s", label, e.msg);
         return;
     }
@@ -149,7 +150,7 @@ int main(void)
         !lt_case(&cl, 0, "misalignment.axis_cross_plane_arcmin=0.1", NULL)) {
         gd_error e = {0};
         gd_ltca_result rf, rl;
-        if (gd_ltca_run_opts(&cf, 16, 0, &rf, &e) == GD_OK && gd_ltca_run_opts(&cl, 16, 0, &rl, &e) == GD_OK) {
+        if (gd_ltca_run_opts(PAIR_OF(&cf), LTCA_SET_OF(&cf), 16, 0, &rf, &e) == GD_OK && gd_ltca_run_opts(PAIR_OF(&cl), LTCA_SET_OF(&cl), 16, 0, &rl, &e) == GD_OK) {
             printf("# delta_c = 0.1': fixed pinion shares %.4f / %.4f, floating %.4f / %.4f (axial shift %.3f um)\n",
                    rf.load_share[0], rf.load_share[1], rl.load_share[0], rl.load_share[1], rl.axial_shift[0] * 1e6);
             tap_ok(fabs(rf.load_share[0] - rf.load_share[1]) > 0.2,

@@ -4,6 +4,7 @@
  * force follows the energy balance F_s = v_s sqrt(m k_s), grows with speed as v_s does, and tip
  * relief lowers it. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <string.h>
@@ -32,7 +33,7 @@ int main(void)
     base(&c, NULL);
     tap_ok(gd_model_build(&c, &m, &e) == GD_OK, "model with the LTCA stiffness and impact (%s)", e.msg);
     const gd_ltca_excitation *x;
-    gd_ltca_excitation_cached(&c, &x, &e);
+    gd_ltca_excitation_cached(PAIR_OF(&c), LTCA_SET_OF(&c), &x, &e);
     /* 1. the table passes through the LTCA samples of each half */
     gd_modes md = {0};
     double worst = 0;

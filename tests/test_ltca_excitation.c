@@ -10,6 +10,7 @@
  *  3. the cache key: unchanged by the speed, changed by everything LTCA reads;
  *  4. bad arguments are refused. */
 #include "ltca_util.h"
+#include "pair_util.h"
 #include "geardyn/gd_analysis.h"
 #include "geardyn/gd_geometry.h"
 
@@ -25,7 +26,7 @@ static void stiffness_api(void)
     double kl[N], kr[N], lte[N], km[2];
     gd_error e = {0};
     gd_ltca_result r;
-    if (gd_ltca_mesh_stiffness(&c, N, kl, kr, lte, km, &e) != GD_OK || gd_ltca_run_opts(&c, N, 0, &r, &e) != GD_OK) {
+    if (gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), N, kl, kr, lte, km, &e) != GD_OK || gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), N, 0, &r, &e) != GD_OK) {
         tap_ok(0, "mesh stiffness: %s", e.msg);
         return;
     }
@@ -44,7 +45,7 @@ static void stiffness_api(void)
 
     /* periodic over one pinion pitch */
     gd_ltca *w;
-    if (gd_ltca_create(&c, &w, &e) == GD_OK) {
+    if (gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &e) == GD_OK) {
         gd_ltca_position a, b;
         gd_ltca_solve_at(w, 0.3 * tau, c.torque_nm, &a, &e);
         gd_ltca_solve_at(w, 1.3 * tau, c.torque_nm, &b, &e);
@@ -59,7 +60,7 @@ static void stiffness_api(void)
     if (lt_case(&c, 0, "gear.arrangement=helical", NULL))
         return;
     double sentinel[4] = {-1, -1, -1, -1}, left[4], k2[2];
-    if (gd_ltca_mesh_stiffness(&c, 4, left, sentinel, NULL, k2, &e) != GD_OK)
+    if (gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), 4, left, sentinel, NULL, k2, &e) != GD_OK)
         tap_ok(0, "helical: %s", e.msg);
     tap_ok(sentinel[0] == -1 && sentinel[3] == -1 && isnan(k2[1]) && left[0] > 0,
            "helical pair: k_right untouched, k_mean[1] NaN, k_left %.4g N/m", left[0]);
@@ -73,18 +74,18 @@ static void impact(void)
         return;
     gd_error e = {0};
     gd_ltca_excitation x;
-    if (gd_ltca_excitation_compute(&c, 32, &x, &e) != GD_OK) {
+    if (gd_ltca_excitation_compute(PAIR_OF(&c), LTCA_SET_OF(&c), 32, &x, &e) != GD_OK) {
         tap_ok(0, "excitation: %s", e.msg);
         return;
     }
-    TAP_CLOSE((double)(x.key == gd_ltca_cache_key(&c, 32)), 1.0, 0.0, "the excitation carries its cache key");
+    TAP_CLOSE((double)(x.key == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32)), 1.0, 0.0, "the excitation carries its cache key");
     gd_ltca *w;
-    if (gd_ltca_create(&c, &w, &e) != GD_OK) {
+    if (gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &e) != GD_OK) {
         tap_ok(0, "workspace: %s", e.msg);
         return;
     }
     gd_geometry g;
-    gd_geometry_compute(&c, &g, &e);
+    gd_geometry_compute(PAIR_OF(&c), &g, &e);
     const double tau = 2 * M_PI / c.teeth_pinion, s = g.rb[1] * cos(g.beta_b);
     for (int h = 0; h < 2; h++) {
         const gd_ltca_impact *im = &x.impact[h];
@@ -134,7 +135,7 @@ static void impact(void)
     /* an aligned pair: the halves are mirror images */
     if (lt_case(&c, 0, NULL))
         return;
-    if (gd_ltca_excitation_compute(&c, 16, &x, &e) == GD_OK) {
+    if (gd_ltca_excitation_compute(PAIR_OF(&c), LTCA_SET_OF(&c), 16, &x, &e) == GD_OK) {
         TAP_CLOSE(x.impact[1].phase, x.impact[0].phase, 1e-9, "aligned pair: both halves mesh in at the same phase");
         TAP_REL(x.impact[1].vs_per_omega, x.impact[0].vs_per_omega, 1e-6, "aligned pair: with the same velocity");
         TAP_CLOSE(x.impact[1].z1, -x.impact[0].z1, 1e-12, "aligned pair: at mirrored face positions (m)");
@@ -150,12 +151,12 @@ static void cache_key(void)
     gd_case c;
     if (lt_case(&c, LT_MIS | LT_MOD, NULL))
         return;
-    uint64_t k0 = gd_ltca_cache_key(&c, 32);
-    tap_ok(k0 == gd_ltca_cache_key(&c, 32) && k0 == gd_ltca_cache_key(&c, 0), "cache key: deterministic, npos <= 0 "
+    uint64_t k0 = gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32);
+    tap_ok(k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) && k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 0), "cache key: deterministic, npos <= 0 "
            "means the case's 32 positions (%016llx)", (unsigned long long)k0);
     gd_error e = {0};
     gd_case_set_number(&c, "operating.speed_rpm", 7000, &e);
-    tap_ok(gd_ltca_cache_key(&c, 32) == k0, "cache key: a new speed at the same torque reuses the LTCA");
+    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) == k0, "cache key: a new speed at the same torque reuses the LTCA");
     struct {
         const char *key;
         double value;
@@ -166,12 +167,12 @@ static void cache_key(void)
         gd_case d;
         gd_case_copy(&d, &c, &e);
         gd_case_set_number(&d, ch[i].key, ch[i].value, &e);
-        tap_ok(gd_ltca_cache_key(&d, 32) != k0, "cache key: changes with %s", ch[i].key);
+        tap_ok(gd_ltca_cache_key(PAIR_OF(&d), LTCA_SET_OF(&d), 32) != k0, "cache key: changes with %s", ch[i].key);
         gd_case_free(&d);
     }
     c.pinion_axial = GD_PINION_FIXED;
-    tap_ok(gd_ltca_cache_key(&c, 32) != k0, "cache key: changes with support.pinion_axial");
-    tap_ok(gd_ltca_cache_key(&c, 32) != gd_ltca_cache_key(&c, 64), "cache key: changes with the positions");
+    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) != k0, "cache key: changes with support.pinion_axial");
+    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) != gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 64), "cache key: changes with the positions");
     gd_case_free(&c);
 }
 
@@ -182,10 +183,10 @@ static void refusals(void)
         return;
     gd_error e = {0};
     double k[4];
-    tap_ok(gd_ltca_mesh_stiffness(&c, 1, k, NULL, NULL, NULL, &e) == GD_ERR_INPUT, "one position is refused: %s", e.msg);
+    tap_ok(gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), 1, k, NULL, NULL, NULL, &e) == GD_ERR_INPUT, "one position is refused: %s", e.msg);
     gd_ltca *w;
     gd_ltca_position p;
-    if (gd_ltca_create(&c, &w, &e) == GD_OK) {
+    if (gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &e) == GD_OK) {
         tap_ok(gd_ltca_solve_at(w, 0, 0.0, &p, &e) == GD_ERR_INPUT, "zero torque is refused: %s", e.msg);
         tap_ok(gd_ltca_solve_at(w, 0, -5.0, &p, &e) == GD_ERR_INPUT, "negative torque is refused");
         gd_ltca_free(w);

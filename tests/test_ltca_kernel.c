@@ -16,6 +16,7 @@
  *     former uniform decay length 2h/pi overestimates it by more than 20 % on the lines low on the
  *     tooth, so the test tells the two apart. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "geardyn/gd_compliance.h"
 #include "tap.h"
 
@@ -231,8 +232,8 @@ int main(void)
         gd_case_set(&c, buf, 3, &e);
         gd_geometry g;
         gd_tooth t;
-        if (gd_case_resolve(&c, &e) != GD_OK || gd_geometry_compute(&c, &g, &e) != GD_OK ||
-            gd_tooth_init(&c, &g, 0, &t, &e) != GD_OK) {
+        if (gd_case_resolve(&c, &e) != GD_OK || gd_geometry_compute(PAIR_OF(&c), &g, &e) != GD_OK ||
+            gd_tooth_init(PAIR_OF(&c), &g, 0, &t, &e) != GD_OK) {
             tap_ok(0, "%d teeth: %s", teeth[q], e.msg);
             gd_case_free(&c);
             continue;

@@ -11,6 +11,7 @@
  *     LTE amplitude;
  *  3. the mean stiffness over the cycle does not depend on the number of positions. */
 #include "ltca_util.h"
+#include "pair_util.h"
 #include "geardyn/gd_geometry.h"
 
 #include <math.h>
@@ -27,7 +28,7 @@ static double lte_gap(gd_case *c, double torque, int floating, double *lte_pp, d
     gd_error e = {0};
     gd_ltca_result r;
     gd_geometry g;
-    if (gd_geometry_compute(c, &g, &e) != GD_OK || gd_ltca_run_opts(c, 16, 0, &r, &e) != GD_OK) {
+    if (gd_geometry_compute(PAIR_OF(c), &g, &e) != GD_OK || gd_ltca_run_opts(PAIR_OF(c), LTCA_SET_OF(c), 16, 0, &r, &e) != GD_OK) {
         tap_ok(0, "LTCA at %g N m: %s", torque, e.msg);
         return NAN;
     }
@@ -109,7 +110,7 @@ int main(void)
             continue;
         gd_error e = {0};
         gd_ltca_result r;
-        if (gd_ltca_run_opts(&c, 8, 0, &r, &e) == GD_OK) {
+        if (gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), 8, 0, &r, &e) == GD_OK) {
             km[s] = r.stiffness_mean[0];
             lm[s] = r.lte_mean_arcsec;
             lpp[s] = r.lte_pp_arcsec;
@@ -145,7 +146,7 @@ int main(void)
             double k[2];
             gd_error e = {0};
             double *kl = malloc(sizeof(double) * (size_t)np[i]);
-            if (gd_ltca_mesh_stiffness(&c, np[i], kl, NULL, NULL, k, &e) != GD_OK)
+            if (gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), np[i], kl, NULL, NULL, k, &e) != GD_OK)
                 tap_ok(0, "positions: %s", e.msg);
             kp[i] = k[0];
             free(kl);

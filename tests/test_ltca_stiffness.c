@@ -19,6 +19,7 @@
  *     sinc(k eps_beta), so the fluctuation nearly vanishes when the overlap ratio is an integer and
  *     is clearly present at 1.5 (face widths chosen here for eps_beta = 1, 1.5, 2). */
 #include "ltca_util.h"
+#include "pair_util.h"
 #include "geardyn/gd_geometry.h"
 
 #include <math.h>
@@ -59,7 +60,7 @@ static double fluctuation(gd_case *c, double *a1, double *pp)
     enum { N = 64 };
     double k[N], km[2];
     gd_error e = {0};
-    if (gd_ltca_mesh_stiffness(c, N, k, NULL, NULL, km, &e) != GD_OK) {
+    if (gd_ltca_mesh_stiffness(PAIR_OF(c), LTCA_SET_OF(c), N, k, NULL, NULL, km, &e) != GD_OK) {
         tap_ok(0, "mesh stiffness: %s", e.msg);
         return NAN;
     }
@@ -92,7 +93,7 @@ int main(void)
             continue;
         gd_error e = {0};
         gd_ltca_result r;
-        if (gd_ltca_run_opts(&c, 32, 0, &r, &e) != GD_OK) {
+        if (gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), 32, 0, &r, &e) != GD_OK) {
             tap_ok(0, "%s: %s", iso[i].label, e.msg);
             gd_case_free(&c);
             continue;
@@ -105,7 +106,7 @@ int main(void)
             /* the same pair at the paper's 500 N m: a linear problem (all gaps zero), the same stiffness */
             gd_case c5;
             gd_ltca_result r5;
-            if (!lt_case(&c5, 0, NULL) && gd_ltca_run_opts(&c5, 32, 0, &r5, &e) == GD_OK) {
+            if (!lt_case(&c5, 0, NULL) && gd_ltca_run_opts(PAIR_OF(&c5), LTCA_SET_OF(&c5), 32, 0, &r5, &e) == GD_OK) {
                 double q5, k5iso = iso_mesh_stiffness(&c5, &q5);
                 TAP_REL(r5.stiffness_mean[0], k, 0.02, "aligned unmodified pair: the LTCA stiffness hardly depends on the "
                         "load (500 against 1000 N m: only the contacts at the ends of the lines are added)");
@@ -135,7 +136,7 @@ int main(void)
             continue;
         gd_geometry g;
         gd_error e = {0};
-        gd_geometry_compute(&c, &g, &e);
+        gd_geometry_compute(PAIR_OF(&c), &g, &e);
         double km = fluctuation(&c, &A1[q], &PP[q]);
         printf("# eps_beta %.4f (b = %.3f mm): mean %.5g N/m, first harmonic %.4f, peak-to-peak %.4f of the mean\n",
                g.eps_beta, b, km, A1[q], PP[q]);

@@ -4,6 +4,7 @@
  * repaired, not refused; evaluations in parallel give the run of one thread; a box holding a
  * modification that does not fit is refused with the key of the responsible bound. TAP output. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "ltca_util.h"
 #include "tap.h"
 
@@ -25,6 +26,14 @@ static gd_status spy_eval(void *state, const double *y, double *f, gd_error *err
     return GD_OK;
 }
 
+/* The gear problem of a case: its pair, its LTCA settings, its [optimize] bounds. */
+static gd_status gear_create(const gd_case *c, gd_opt_gear **g, gd_error *e)
+{
+    double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
+    gd_opt_gear_bounds(c, lower, upper);
+    return gd_opt_gear_create(PAIR_OF(c), LTCA_SET_OF(c), lower, upper, g, e);
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -35,7 +44,7 @@ int main(void)
     /* the objective at Table 2 against the ltca analysis */
     double f;
     gd_ltca_result r;
-    if (gd_opt_gear_lte_pp(&c, &f, &e) == GD_OK && gd_ltca_run_opts(&c, 0, 0, &r, &e) == GD_OK) {
+    if (gd_opt_gear_lte_pp(PAIR_OF(&c), LTCA_SET_OF(&c), &f, &e) == GD_OK && gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), 0, 0, &r, &e) == GD_OK) {
         tap_ok(f == r.lte_pp_arcsec, "objective at Table 2 = LTE amplitude of gd_ltca_run: %.15g vs %.15g arcsec", f,
                r.lte_pp_arcsec);
         gd_ltca_result_free(&r);
@@ -43,7 +52,7 @@ int main(void)
         tap_ok(0, "LTE amplitude: %s", e.msg);
     }
     double x[6], t2[6];
-    gd_opt_gear_from_case(&c, x);
+    gd_opt_gear_from_pair(PAIR_OF(&c), x);
     gd_opt_gear_table2(t2);
     tap_ok(memcmp(x, t2, sizeof x) == 0, "the Table 2 case holds x = [y1, y2, y3, y4, y5, y7] = Table 2");
 
@@ -52,13 +61,13 @@ int main(void)
     gd_case_set(&c, "optimize.root_relief_length_max_mm=12", 91, &e);
     gd_case_set(&c, "optimize.tip_relief_length_max_mm=14", 92, &e);
     gd_opt_gear *g = NULL;
-    if (gd_case_resolve(&c, &e) != GD_OK || gd_opt_gear_create(&c, &g, &e) != GD_OK) {
+    if (gd_case_resolve(&c, &e) != GD_OK || gear_create(&c, &g, &e) != GD_OK) {
         tap_ok(0, "gear problem: %s", e.msg);
         gd_case_free(&c);
         return tap_done();
     }
     gd_geometry geo;
-    gd_geometry_compute(&c, &geo, &e);
+    gd_geometry_compute(PAIR_OF(&c), &geo, &e);
     /* roll length of the tip and of the start of active profile from the radii (ISO 21771) */
     double rho_a = sqrt(geo.ra[0] * geo.ra[0] - geo.rb[0] * geo.rb[0]);
     double rho_a2 = sqrt(geo.ra[1] * geo.ra[1] - geo.rb[1] * geo.rb[1]);

@@ -11,6 +11,7 @@
  * 4. gd_ltca_halves: 2 for a herringbone pair, 1 for a single helical pair, equal to its TCA's.
  * 5. gd_sim_model returns the model given to gd_sim_create; gd_sim_period_index counts periods. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -60,9 +61,9 @@ static void flank_relief(void)
     gd_case c;
     make_case(&c, sets, 8);
     gd_geometry g;
-    CHECK(gd_geometry_compute(&c, &g, &err));
+    CHECK(gd_geometry_compute(PAIR_OF(&c), &g, &err));
     gd_flank f;
-    CHECK(gd_flank_pinion(&c, &g, 0, &f, &err));
+    CHECK(gd_flank_pinion(PAIR_OF(&c), &g, 0, &f, &err));
     double rb = g.rb[0], h, l;
     gd_flank_relief(&f, g.rho_sap[0] / rb, 0, &h, &l);
     TAP_CLOSE(h, 10e-6, 1e-12, "root relief at the start of active profile = y1");
@@ -85,7 +86,7 @@ static void flank_relief(void)
     gd_case c0;
     make_case(&c0, sets, 1);
     gd_flank f0;
-    CHECK(gd_flank_pinion(&c0, &g, 0, &f0, &err));
+    CHECK(gd_flank_pinion(PAIR_OF(&c0), &g, 0, &f0, &err));
     tap_ok(!f0.modified && f.modified, "flank without and with modification");
     double worst = 0;
     for (int i = 0; i <= 10; i++) {
@@ -109,7 +110,7 @@ static void operating_pressure_angle(void)
     gd_case c;
     make_case(&c, sets, 3);
     gd_tca *t;
-    CHECK(gd_tca_create(&c, &t, &err));
+    CHECK(gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err));
     const double d2r = M_PI / 180;
     double an = 20 * d2r, beta = 33.27 * d2r, at = atan(tan(an) / cos(beta));
     double awt = inv_inv(gd_involute(at) + 2 * (0.4 - 0.1) * tan(an) / (19 + 72));
@@ -123,7 +124,7 @@ static void topography(void)
     gd_case c;
     make_case(&c, NULL, 0);
     gd_tca *t;
-    CHECK(gd_tca_create(&c, &t, &err));
+    CHECK(gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err));
     const gd_geometry *g = gd_tca_geometry(t);
     const gd_flank *f1 = gd_tca_flank(t, 0, 0);
     gd_tca_topography_reset(t);
@@ -176,7 +177,7 @@ static void ltca_halves(void)
         gd_case c;
         make_case(&c, sets, k);
         gd_ltca *w;
-        CHECK(gd_ltca_create(&c, &w, &err));
+        CHECK(gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &err));
         tap_ok(gd_ltca_halves(w) == 2 - k, "gd_ltca_halves of a %s pair: %d", k ? "helical" : "herringbone",
                gd_ltca_halves(w));
         tap_ok(gd_ltca_halves(w) == gd_tca_halves(gd_ltca_tca(w)), "equal to its TCA workspace's halves");

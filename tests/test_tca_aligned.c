@@ -15,6 +15,7 @@
  *    band and the TE stays zero) whose transverse section at z is the section z = 0 at pinion
  *    angle phi + k z. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -46,7 +47,7 @@ static gd_tca_result run(const gd_case *c)
 {
     gd_tca_result r;
     gd_error err = {0};
-    if (gd_tca_run(c, &r, &err) != GD_OK) {
+    if (gd_tca_run(PAIR_OF(c), TCA_SET_OF(c), &r, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);
     }
@@ -273,7 +274,7 @@ int main(void)
         /* contact lines */
         gd_tca *t;
         gd_error err = {0};
-        gd_tca_create(&c, &t, &err);
+        gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err);
         double dplane = 0, dline = 0, dangle = 0;
         int nlines = 0, npts = 0;
         double np_[3] = {cos(at), -sin(at), 0};
@@ -351,7 +352,7 @@ int main(void)
         gd_tca_result_free(&r);
         gd_tca *t;
         gd_error err = {0};
-        gd_tca_create(&c, &t, &err);
+        gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err);
         double dmoved = 0, dnominal = INFINITY;
         double nm[3] = {cos(aop), -sin(aop), 0}, nn[3] = {cos(at), -sin(at), 0};
         for (int k = 0; k < 4; k++) {

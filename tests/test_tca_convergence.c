@@ -8,6 +8,7 @@
  * 3. The GTE peak-to-peak sampled at N positions per mesh cycle converges as N doubles; its
  *    extremes sit at the changes of tooth pair, where the GTE has a corner, so the order is 1. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -41,7 +42,7 @@ static gd_tca_result run_with(int np, int nz, int npos, int refine)
     gd_case_set(&c, d, 22, &err);
     gd_case_set(&c, e, 23, &err);
     gd_tca_result r;
-    if (gd_case_resolve(&c, &err) != GD_OK || gd_tca_run(&c, &r, &err) != GD_OK) {
+    if (gd_case_resolve(&c, &err) != GD_OK || gd_tca_run(PAIR_OF(&c), TCA_SET_OF(&c), &r, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);
     }

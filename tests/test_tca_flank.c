@@ -16,6 +16,7 @@
  *    and second derivatives match central differences; the unmodified helicoid has principal
  *    curvatures 0 (along its generator) and cos(beta_b)/rho. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -75,8 +76,8 @@ static void flanks(const gd_case *c, int half, gd_flank *f1, gd_flank *f2)
 {
     gd_geometry g;
     gd_error err = {0};
-    if (gd_geometry_compute(c, &g, &err) != GD_OK || gd_flank_pinion(c, &g, half, f1, &err) != GD_OK ||
-        gd_flank_gear(c, &g, half, f2, &err) != GD_OK) {
+    if (gd_geometry_compute(PAIR_OF(c), &g, &err) != GD_OK || gd_flank_pinion(PAIR_OF(c), &g, half, f1, &err) != GD_OK ||
+        gd_flank_gear(PAIR_OF(c), &g, half, f2, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);
     }
@@ -124,7 +125,7 @@ int main(void)
         gd_case c = make_case(s, 4);
         gd_geometry g;
         gd_error err = {0};
-        gd_geometry_compute(&c, &g, &err);
+        gd_geometry_compute(PAIR_OF(&c), &g, &err);
         double ra1 = R.r1 + R.mn, ra2 = R.r2 + R.mn, a = R.r1 + R.r2;
         double rho_a = sqrt(ra1 * ra1 - R.rb1 * R.rb1);
         double rho_sap = a * sin(R.at) - sqrt(ra2 * ra2 - R.rb2 * R.rb2);

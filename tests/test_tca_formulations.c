@@ -10,6 +10,7 @@
  *    Newton solve of r_gear(u2, z2, phi2) = r_pinion finds (GSL hybridsj here, with the gear placed
  *    by the frames documented in docs/tca.md written out again). */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -43,7 +44,7 @@ static void compare(const char *label, const char *const *sets, int n)
     gd_case c = make_case(sets, n);
     gd_tca *t;
     gd_error err = {0};
-    if (gd_tca_create(&c, &t, &err) != GD_OK) {
+    if (gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);
     }
@@ -153,7 +154,7 @@ int main(void)
         gd_case c = make_case(crown, 10);
         gd_tca *t;
         gd_error err = {0};
-        gd_tca_create(&c, &t, &err);
+        gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err);
         const gd_geometry *g = gd_tca_geometry(t);
         const double am = M_PI / (180 * 60);
         double di = 0.3 * am, dc = -0.4 * am;

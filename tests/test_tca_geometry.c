@@ -9,6 +9,7 @@
  *    unmodified lead length longer than the face, a relief that takes half the tip, a centre
  *    distance error that leaves a contact ratio below 1, a spur arrangement with a helix angle. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -63,7 +64,7 @@ int main(void)
     gd_status st = resolve_with(NULL, 0, &c, &err);
     tap_ok(st == GD_OK, "the default case (Table 1) resolves (%s)", err.msg);
     gd_geometry g;
-    st = gd_geometry_compute(&c, &g, &err);
+    st = gd_geometry_compute(PAIR_OF(&c), &g, &err);
     tap_ok(st == GD_OK, "gd_geometry_compute on Table 1");
     const double d2r = M_PI / 180;
     double mn = 5e-3, beta = 33.27 * d2r, an = 20 * d2r, z1 = 30, z2 = 72, b = 40e-3;
@@ -109,7 +110,7 @@ int main(void)
         const char *sets[] = {"gear.profile_shift_pinion=0.4", "gear.profile_shift_gear=-0.1", "gear.teeth_pinion=19"};
         st = resolve_with(sets, 3, &c, &err);
         tap_ok(st == GD_OK, "profile-shifted pair resolves (%s)", err.msg);
-        gd_geometry_compute(&c, &g, &err);
+        gd_geometry_compute(PAIR_OF(&c), &g, &err);
         double r1s = 19 * mt / 2;
         double awt = inv_inv(inv(at) + 2 * tan(an) * (0.4 - 0.1) / (19 + 72));
         TAP_CLOSE(g.alpha_wt, awt, 1e-12, "working transverse pressure angle, inv(a_wt) = inv(a_t) + 2 tan(a_n) (x1+x2)/(z1+z2)");

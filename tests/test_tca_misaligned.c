@@ -24,6 +24,7 @@
  *    as a TAP TODO: not reproduced, and not reproducible with Table 2 as read (docs/tca.md).
  * 3. The same parabola test passes on flanks crowned over the whole profile and face. */
 #include "geardyn/geardyn.h"
+#include "pair_util.h"
 #include "tap.h"
 
 #include <gsl/gsl_errno.h>
@@ -51,7 +52,7 @@ static gd_tca_result run(const gd_case *c)
 {
     gd_tca_result r;
     gd_error err = {0};
-    if (gd_tca_run(c, &r, &err) != GD_OK) {
+    if (gd_tca_run(PAIR_OF(c), TCA_SET_OF(c), &r, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);
     }
@@ -240,7 +241,7 @@ int main(void)
         double margin = INFINITY;
         gd_tca *t;
         gd_error err = {0};
-        gd_tca_create(&c, &t, &err);
+        gd_tca_create(PAIR_OF(&c), TCA_SET_OF(&c), &t, &err);
         const gd_flank *f = gd_tca_flank(t, 0, 0);
         for (int h = 0; h < 2; h++)
             for (int k = 0; k < r.npos; k++) {

@@ -13,7 +13,6 @@
 #ifndef GD_COMPLIANCE_H
 #define GD_COMPLIANCE_H
 
-#include "geardyn/gd_case.h"
 #include "geardyn/gd_geometry.h"
 
 #ifdef __cplusplus
@@ -49,7 +48,7 @@ typedef struct gd_load_point {
 } gd_load_point;
 
 /* body 0 pinion, 1 gear */
-GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body, gd_tooth *t, gd_error *err);
+GD_API gd_status gd_tooth_init(const gd_pair *pair, const gd_geometry *g, int body, gd_tooth *t, gd_error *err);
 /* A tooth of constant half-thickness y from x_root to x_tip (a beam; for tests). */
 GD_API gd_status gd_tooth_init_beam(gd_tooth *t, double E, double nu, double x_root, double x_tip, double y,
                                     gd_error *err);

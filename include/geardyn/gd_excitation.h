@@ -11,15 +11,16 @@
 extern "C" {
 #endif
 
-/* The LTCA excitation of the case (its ltca_positions_per_cycle), from the cache or computed: a
+/* The LTCA excitation of the pair (set->positions_per_cycle), from the cache or computed: a
  * reference the caller must give back with gd_ltca_excitation_release once it no longer reads *out
  * (the pointer stays valid until then). Entries are found by the full bytes of their inputs
  * (gd_ltca_cache_key_bytes), not by the hash alone. The cache keeps 16 excitations nobody holds
  * (the least recently used goes first) and never frees a held one: while more are held at once it
  * grows. On failure *out is NULL and there is nothing to release. */
-GD_API gd_status gd_ltca_excitation_cached(const gd_case *c, const gd_ltca_excitation **out, gd_error *err);
+GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set, const gd_ltca_excitation **out,
+                                           gd_error *err);
 /* Give back a reference from gd_ltca_excitation_cached (NULL: nothing). The excitation stays
- * cached for the next case with the same inputs until the cache needs its slot. */
+ * cached for the next caller with the same inputs until the cache needs its slot. */
 GD_API void gd_ltca_excitation_release(const gd_ltca_excitation *x);
 /* How many LTCA excitations the cache has computed so far (for tests and statistics). */
 GD_API long gd_ltca_cache_computations(void);

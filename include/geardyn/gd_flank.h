@@ -50,18 +50,18 @@ typedef struct gd_flank_eval {
     double ruu[3], ruz[3], rzz[3];   /* order >= 2 */
 } gd_flank_eval;
 
-/* Whether the case's [modification] fits on the pinion flank: a relief amount needs a length, the
+/* Whether the pair's modification fits on the pinion flank: a relief amount needs a length, the
  * root and tip relief lengths must fit on the active profile, the unmodified lead length on the
  * face, and no relief may take away half the tooth thickness. On failure GD_ERR_INPUT with the
- * problem and the valid range, and *bad_key names the [modification] key (gd_case_resolve adds
+ * problem and the valid range, and *bad_key names the [modification] key (gd_scene_resolve adds
  * the file and line). */
-GD_API gd_status gd_modification_check(const gd_case *c, const gd_geometry *g, const char **bad_key, gd_error *err);
-/* The pinion flank of half `half` (0 left, 1 right) with the case's [modification] (checked). */
-GD_API gd_status gd_flank_pinion(const gd_case *c, const gd_geometry *g, int half, gd_flank *f, gd_error *err);
+GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g, const char **bad_key, gd_error *err);
+/* The pinion flank of half `half` (0 left, 1 right) with the pair's modification (checked). */
+GD_API gd_status gd_flank_pinion(const gd_pair *pair, const gd_geometry *g, int half, gd_flank *f, gd_error *err);
 /* The gear flank of half `half`: unmodified involute helicoid, opposite hand to the pinion. */
-GD_API gd_status gd_flank_gear(const gd_case *c, const gd_geometry *g, int half, gd_flank *f, gd_error *err);
+GD_API gd_status gd_flank_gear(const gd_pair *pair, const gd_geometry *g, int half, gd_flank *f, gd_error *err);
 /* Hand (+1 right, -1 left, 0 spur) of the pinion helix in half `half`. */
-GD_API int gd_flank_pinion_hand(const gd_case *c, int half);
+GD_API int gd_flank_pinion_hand(const gd_pair *pair, int half);
 
 /* order 0: position; 1: and first derivatives; 2: and second derivatives. */
 GD_API void gd_flank_eval_at(const gd_flank *f, double u, double z, int order, gd_flank_eval *e);

@@ -2,7 +2,7 @@
 #ifndef GD_GEOMETRY_H
 #define GD_GEOMETRY_H
 
-#include "geardyn/gd_case.h"
+#include "geardyn/gd_pair.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -34,20 +34,20 @@ typedef struct gd_geometry {
     const char *bad_key;     /* on GD_ERR_GEOMETRY: the [gear] key most responsible */
 } gd_geometry;
 
-GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err);
+GD_API gd_status gd_geometry_compute(const gd_pair *pair, gd_geometry *g, gd_error *err);
 /* Involute function inv(a) = tan a - a and its inverse (Newton, GSL-free closed loop). */
 GD_API double gd_involute(double a);
 
 /* Mass and polar inertia of one helical half of body `which` (0 pinion, 1 gear): a
  * cylinder of the reference radius over the face width plus half of the relief groove
  * as a cylinder of the root radius, less the bore (docs/model.md). */
-GD_API void gd_body_half(const gd_case *c, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
+GD_API void gd_body_half(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
 /* Mean mesh stiffness of one half along the tooth normal, N/m, from ISO 6336-1
  * (method B: c' and c_gamma_alpha times the contact face width, transverse), divided by
  * cos^2(beta_b) to refer it to the normal direction (docs/model.md). */
-GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g);
+GD_API double gd_iso6336_mesh_stiffness(const gd_pair *pair, const gd_geometry *g);
 /* Axial stiffness of a groove shaft: E pi rf^2 / groove width (N/m). */
-GD_API double gd_groove_shaft_stiffness(const gd_case *c, const gd_geometry *g, int which);
+GD_API double gd_groove_shaft_stiffness(const gd_pair *pair, const gd_geometry *g, int which);
 
 #ifdef __cplusplus
 }

@@ -66,10 +66,21 @@ typedef struct gd_ltca_position {
 
 typedef struct gd_ltca gd_ltca;
 
+/* The load, the pinion's axial support and the discretisation of LTCA (the case's
+ * operating.torque_nm, support.pinion_axial and [solver] ltca_* and tca_* keys). */
+typedef struct gd_ltca_settings {
+    double torque_nm;        /* pinion torque over both halves (> 0; gd_ltca_run and the excitations) */
+    int pinion_axial;        /* gd_pinion_axial (gd_case.h): floating or fixed */
+    int positions_per_cycle; /* pinion positions per mesh cycle */
+    int face_slices;         /* slices per half: the face grid of the TCA under it */
+    int profile_points;      /* the profile grid of the TCA under it */
+    int refine;              /* the TCA's refinement of the grid minimum */
+} gd_ltca_settings;
+
 /* Workspace of one pair: TCA workspace, tooth compliance tables, matrices; create once, solve
- * many positions (not thread-safe: one per thread). The case's [solver] ltca_face_slices sets the
- * slices per half (the TCA face grid), [support] pinion_axial the axial support of the pinion. */
-GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err);
+ * many positions (not thread-safe: one per thread). set->face_slices sets the slices per half (the
+ * TCA face grid), set->pinion_axial the axial support of the pinion; the torque is given per solve. */
+GD_API gd_status gd_ltca_create(const gd_pair *pair, const gd_ltca_settings *set, gd_ltca **out, gd_error *err);
 GD_API void gd_ltca_free(gd_ltca *w);
 /* Solve one position under a pinion torque (N m, > 0). The points stay valid until the next
  * solve on w (gd_ltca_points). The previous solve's loaded set is the warm start. */
@@ -141,10 +152,13 @@ typedef struct gd_ltca_result {
     double wall_s;
 } gd_ltca_result;
 
-GD_API gd_status gd_ltca_run(const gd_case *c, gd_ltca_result *r, gd_error *err);
-/* As gd_ltca_run with npos positions (<= 0: the case's) and, with with_impact, the mesh-in of
- * each half (extra solves near the entry of the incoming pair). */
-GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, gd_ltca_result *r, gd_error *err);
+/* Every position of one mesh cycle (set->positions_per_cycle) under set->torque_nm, with the mesh-in
+ * of each half. */
+GD_API gd_status gd_ltca_run(const gd_pair *pair, const gd_ltca_settings *set, gd_ltca_result *r, gd_error *err);
+/* As gd_ltca_run with npos positions (<= 0: set->positions_per_cycle) and, with with_impact, the
+ * mesh-in of each half (extra solves near the entry of the incoming pair). */
+GD_API gd_status gd_ltca_run_opts(const gd_pair *pair, const gd_ltca_settings *set, int npos, int with_impact,
+                                  gd_ltca_result *r, gd_error *err);
 GD_API void gd_ltca_result_free(gd_ltca_result *r);
 
 /* ---- excitations of the dynamic model (docs/ltca.md section 8) -------------------------------- */
@@ -152,9 +166,9 @@ GD_API void gd_ltca_result_free(gd_ltca_result *r);
 /* Mesh stiffness of each half (Eq. 14, N/m along the normal) at npos equally spaced pinion
  * positions over one mesh cycle (phase 0 = TCA's pinion angle 0), the loaded transmission error
  * (arcsec, may be NULL), and the mean stiffness of each half (may be NULL). k_right may be NULL,
- * and is not written for a helical or spur pair (one half). Torque from the case. */
-GD_API gd_status gd_ltca_mesh_stiffness(const gd_case *c, int npos, double *k_left, double *k_right,
-                                        double *lte_arcsec, double k_mean[2], gd_error *err);
+ * and is not written for a helical or spur pair (one half). Torque set->torque_nm. */
+GD_API gd_status gd_ltca_mesh_stiffness(const gd_pair *pair, const gd_ltca_settings *set, int npos, double *k_left,
+                                        double *k_right, double *lte_arcsec, double k_mean[2], gd_error *err);
 
 /* Everything the dynamic model takes from LTCA in one run. */
 typedef struct gd_ltca_excitation {
@@ -166,21 +180,24 @@ typedef struct gd_ltca_excitation {
     double lte_pp_arcsec;
     double load_share[2];
     gd_ltca_impact impact[2];
-    uint64_t key;            /* gd_ltca_cache_key(c, npos) */
+    uint64_t key;            /* gd_ltca_cache_key(pair, set, npos) */
 } gd_ltca_excitation;
 
-GD_API gd_status gd_ltca_excitation_compute(const gd_case *c, int npos, gd_ltca_excitation *x, gd_error *err);
+GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_settings *set, int npos,
+                                            gd_ltca_excitation *x, gd_error *err);
 GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x);
-/* 64-bit hash (FNV-1a) of every case value LTCA depends on: the [gear] geometry and material, the
- * [modification], the [misalignment], the resolved pinion torque, [support] pinion_axial and the
- * LTCA/TCA discretisation keys, with npos (<= 0: the case's ltca_positions_per_cycle). Equal keys:
- * the same LTCA (a sweep over speed at constant torque reuses it). */
-GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos);
-/* The bytes gd_ltca_cache_key hashes, in order: every value above with its key's name, and npos;
- * exactly what determines the LTCA, so that equal bytes mean the same LTCA even where two hashes
- * collide. Written to buf as far as they fit in cap (buf may be NULL with cap 0); returns their
- * count (call once with cap 0 for the size). */
-GD_API size_t gd_ltca_cache_key_bytes(const gd_case *c, int npos, unsigned char *buf, size_t cap);
+/* 64-bit hash (FNV-1a) of every value LTCA depends on: the pair's geometry and material (all of
+ * gd_pair but the density), its modification and misalignment, and every field of the settings
+ * but positions_per_cycle, with npos (<= 0: set->positions_per_cycle). Equal keys: the same LTCA (a
+ * sweep over speed at constant torque reuses it). */
+GD_API uint64_t gd_ltca_cache_key(const gd_pair *pair, const gd_ltca_settings *set, int npos);
+/* The bytes gd_ltca_cache_key hashes, in order: every value above, each after the name of its
+ * case key ("gear.teeth_pinion"), field by field (no padding bytes), and npos; exactly what
+ * determines the LTCA, so that equal bytes mean the same LTCA even where two hashes collide.
+ * Written to buf as far as they fit in cap (buf may be NULL with cap 0); returns their count (call
+ * once with cap 0 for the size). */
+GD_API size_t gd_ltca_cache_key_bytes(const gd_pair *pair, const gd_ltca_settings *set, int npos, unsigned char *buf,
+                                      size_t cap);
 
 #ifdef __cplusplus
 }

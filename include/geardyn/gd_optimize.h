@@ -26,6 +26,8 @@
 #define GD_OPTIMIZE_H
 
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_ltca.h"
+#include "geardyn/gd_pair.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -171,9 +173,10 @@ GD_API void gd_opt_testfn_problem(gd_opt_testfn *t, gd_opt_problem *p);
 GD_API void gd_opt_testfn_free(gd_opt_testfn *t);
 
 /* The gear problem of the paper's section 4 (Eq. 13): minimise the peak-to-peak loaded
- * transmission error (LTCA, Eq. 12, arcsec over one mesh cycle at the case's positions) of the
- * case's pair, load and misalignment over x = [y1, y2, y3, y4, y5, y7] (y6 = y5, symmetric lead
- * relief) in the case's [modification] units (um and mm), within the [optimize] bounds and the
+ * transmission error (LTCA, Eq. 12, arcsec over one mesh cycle at set->positions_per_cycle) of
+ * the pair, under set->torque_nm, with its misalignment, over x = [y1, y2, y3, y4, y5, y7] (y6 =
+ * y5, symmetric lead relief) in the [modification] units (um and mm), within the bounds [lower,
+ * upper] (gd_opt_gear_bounds: the case's [optimize] bounds) and the
  * linear constraint y2 + y4 <= the active profile of the pinion (roll length from the start of
  * active profile to the tip). Every point of the box, once repaired, passes
  * gd_modification_check (checked on the 64 corners at creation; the checks are monotone in
@@ -181,26 +184,31 @@ GD_API void gd_opt_testfn_free(gd_opt_testfn *t);
 #define GD_OPT_GEAR_DIM 6
 typedef struct gd_opt_gear gd_opt_gear;
 
-GD_API gd_status gd_opt_gear_create(const gd_case *c, gd_opt_gear **out, gd_error *err);
+GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const double lower[6],
+                                    const double upper[6], gd_opt_gear **out, gd_error *err);
 GD_API void gd_opt_gear_problem(gd_opt_gear *g, gd_opt_problem *p);
 GD_API void gd_opt_gear_free(gd_opt_gear *g);
 /* Roll length of the pinion's active profile (mm): the right side of y2 + y4 <= it. */
 GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g);
 /* Variable i (0..5): its [modification] key, unit and the paper's symbol (y1 .. y5, y7). */
 GD_API const char *gd_opt_gear_variable(int i, const char **unit, const char **symbol);
-/* x -> the case's [modification] (y6 = y5), and back. */
-GD_API void gd_opt_gear_apply(gd_case *c, const double *x);
-GD_API void gd_opt_gear_from_case(const gd_case *c, double *x);
-/* The objective for the case's own [modification]: LTE peak-to-peak (arcsec). */
-GD_API gd_status gd_opt_gear_lte_pp(const gd_case *c, double *lte_pp_arcsec, gd_error *err);
+/* x -> the pair's modification (y6 = y5), and back. */
+GD_API void gd_opt_gear_apply(gd_pair *pair, const double *x);
+GD_API void gd_opt_gear_from_pair(const gd_pair *pair, double *x);
+/* The objective for the pair's own modification: LTE peak-to-peak (arcsec). */
+GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings *set, double *lte_pp_arcsec,
+                                    gd_error *err);
 /* The paper's optimum (Table 2) in the same variables: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 35 mm. */
 GD_API void gd_opt_gear_table2(double *x);
 
 /* ---- the case's [optimize] section ----------------------------------------------------------- */
 
 /* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
- * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets. */
-GD_API gd_status gd_opt_resolve_case(gd_case *c, gd_error *err);
+ * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets; for the gear
+ * objective, that the box fits on the case's pair (gd_pair_from_case of the resolved case). */
+GD_API gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err);
+/* The [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
+GD_API void gd_opt_gear_bounds(const gd_case *c, double lower[6], double upper[6]);
 /* The case's optimizers list (compare-optimizers) or its algorithm (optimize): count, <= max. */
 GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
 /* The case's objectives (gd_opt_objective), count <= max. */

@@ -1,16 +1,32 @@
-/* The scene: the one place a case becomes physics. Its geometry and the values derived from it
- * (gd_scene_resolve, the second step of gd_case_resolve), the dimensionless dynamic model with its
- * LTCA excitations (gd_model_build), and the solver options of its [solver] section. */
+/* The scene: the one place a case becomes physics. Its gear pair and the contact-analysis
+ * settings of TCA and LTCA (gd_pair_from_case, gd_tca_settings_from_case,
+ * gd_ltca_settings_from_case), its geometry and the values derived from it (gd_scene_resolve, the
+ * second step of gd_case_resolve), the dimensionless dynamic model with its LTCA excitations
+ * (gd_model_build), and the solver options of its [solver] section. */
 #ifndef GD_SCENE_H
 #define GD_SCENE_H
 
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_ltca.h"
 #include "geardyn/gd_model.h"
+#include "geardyn/gd_pair.h"
+#include "geardyn/gd_tca.h"
 #include "geardyn/gd_sim.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
+
+/* The case's gear pair: [gear] design data, [modification] (as the case holds it: resolve the case
+ * first for modification.apply = false to give zero amounts) and [misalignment]. */
+GD_API gd_pair gd_pair_from_case(const gd_case *c);
+/* The pair's modification (the seven amounts and lengths) into the case's [modification]. */
+GD_API void gd_pair_modification_to_case(const gd_pair *pair, gd_case *c);
+/* The case's [solver] tca_* keys. */
+GD_API gd_tca_settings gd_tca_settings_from_case(const gd_case *c);
+/* The case's operating.torque_nm (resolved from the power when not given), support.pinion_axial
+ * and [solver] ltca_positions_per_cycle, ltca_face_slices, tca_profile_points and tca_refine. */
+GD_API gd_ltca_settings gd_ltca_settings_from_case(const gd_case *c);
 
 /* Geometry and what follows from it: bodies (masses, inertias, equivalent mass), the limits of
  * the modification, the operating contact ratio, the mesh stiffness (ISO 6336 or LTCA), the groove

@@ -42,6 +42,14 @@ GD_API const char *gd_edge_kind_name(int bit_index);
 
 typedef struct gd_tca gd_tca;
 
+/* The contact-analysis settings of TCA (the case's [solver] tca_* keys). */
+typedef struct gd_tca_settings {
+    int profile_points, face_points; /* grid on the pinion flank: along the profile, across each half's face */
+    int refine;                      /* 1: the grid minimum refined to the exact minimum (Newton) */
+    int positions_per_cycle, cycles; /* gd_tca_run: pinion positions per mesh cycle, mesh cycles */
+    int formulation;                 /* gd_tca_run: gd_tca_formulation (gd_case.h) */
+} gd_tca_settings;
+
 /* The first contact of one half at one pinion position. */
 typedef struct gd_tca_contact {
     double phi1;          /* pinion angle */
@@ -73,9 +81,10 @@ typedef struct gd_tca_line_point {
     unsigned edge;              /* the slice minimum lies on this boundary (gd_edge_kind bits) */
 } gd_tca_line_point;
 
-/* Workspace of one pair (every half): geometry, flanks, frames, the flank grid, the Newton
- * solvers. Create once, use for many positions; not thread-safe (one per thread). */
-GD_API gd_status gd_tca_create(const gd_case *c, gd_tca **out, gd_error *err);
+/* Workspace of one pair (every half): geometry, flanks, frames, the flank grid (set->profile_points,
+ * set->face_points, set->refine), the Newton solvers. Create once, use for many positions; not
+ * thread-safe (one per thread). */
+GD_API gd_status gd_tca_create(const gd_pair *pair, const gd_tca_settings *set, gd_tca **out, gd_error *err);
 GD_API void gd_tca_free(gd_tca *t);
 GD_API int gd_tca_halves(const gd_tca *t);
 GD_API const gd_geometry *gd_tca_geometry(const gd_tca *t);
@@ -139,7 +148,7 @@ typedef struct gd_tca_result {
     double wall_s;
 } gd_tca_result;
 
-GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *res, gd_error *err);
+GD_API gd_status gd_tca_run(const gd_pair *pair, const gd_tca_settings *set, gd_tca_result *res, gd_error *err);
 GD_API void gd_tca_result_free(gd_tca_result *r);
 
 #ifdef __cplusplus

@@ -5,6 +5,7 @@
 #include "geardyn/gd_version.h"
 #include "geardyn/gd_error.h"
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_pair.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_model.h"
 #include "geardyn/gd_scene.h"

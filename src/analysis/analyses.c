@@ -31,15 +31,22 @@ static gd_status workprec_check_case(gd_case *c, gd_error *err)
     return GD_OK;
 }
 
+/* [optimize]; the gear objective's box is checked on the case's pair. */
+static gd_status optimize_check_case(gd_case *c, gd_error *err)
+{
+    const gd_pair pair = gd_pair_from_case(c);
+    return gd_opt_resolve_case(c, &pair, err);
+}
+
 static const gd_analysis_type analyses[] = {
     { GD_ANALYSIS_RESPONSE, "response", "the event-exact response of one operating point", NULL },
     { GD_ANALYSIS_SWEEP, "sweep", "the response over a grid of one or two keys, continued up and down",
       sweep_check_case },
     { GD_ANALYSIS_TCA, "tca", "geometric tooth contact analysis", NULL },
     { GD_ANALYSIS_LTCA, "ltca", "loaded tooth contact analysis", ltca_check_case },
-    { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", gd_opt_resolve_case },
+    { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", optimize_check_case },
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, "compare-optimizers", "ALO against NLopt's methods on one budget",
-      gd_opt_resolve_case },
+      optimize_check_case },
     { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
       workprec_check_case },
 };

@@ -38,7 +38,8 @@ int cmd_check(int argc, char **argv)
     gd_geometry g;
     gd_model m;
     gd_error err = {0};
-    if (gd_geometry_compute(&c, &g, &err) == GD_OK && gd_model_build(&c, &m, &err) == GD_OK) {
+    const gd_pair pair = gd_pair_from_case(&c);
+    if (gd_geometry_compute(&pair, &g, &err) == GD_OK && gd_model_build(&c, &m, &err) == GD_OK) {
         const double deg = 180.0 / M_PI;
         printf("\n# derived geometry (ISO 21771), pinion / gear\n");
         printf("transverse_module_mm = %.6g\n", g.mt * 1e3);

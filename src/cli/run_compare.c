@@ -238,7 +238,11 @@ static gd_status build(const gd_case *c, cmp_problem *q, int runs, gd_error *err
     if (!q->pb || !q->pp)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     if (q->objective == GD_OBJ_GEAR_LTE) {
-        gd_status st = gd_opt_gear_create(c, &q->gear, err);
+        const gd_pair pair = gd_pair_from_case(c);
+        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
+        gd_opt_gear_bounds(c, lower, upper);
+        gd_status st = gd_opt_gear_create(&pair, &set, lower, upper, &q->gear, err);
         if (st != GD_OK)
             return st;
         for (int r = 0; r < runs; r++) {

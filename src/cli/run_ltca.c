@@ -155,7 +155,9 @@ int run_ltca(const cli_case_args *a, gd_case *cp, const char *dir)
     gd_case c = *cp;
     gd_error err = {0};
     gd_ltca_result r;
-    if (gd_ltca_run(&c, &r, &err) != GD_OK)
+    const gd_pair pair = gd_pair_from_case(&c);
+    const gd_ltca_settings set = gd_ltca_settings_from_case(&c);
+    if (gd_ltca_run(&pair, &set, &r, &err) != GD_OK)
         return cli_fail(&err);
     if (gd_mkdir_p(dir, &err) != GD_OK) {
         gd_ltca_result_free(&r);

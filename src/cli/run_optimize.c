@@ -124,7 +124,9 @@ static int optimum_case(const gd_case *c, const double *x, int analysis, gd_case
 {
     if (gd_case_copy(out, c, err) != GD_OK)
         return 1;
-    gd_opt_gear_apply(out, x);
+    gd_pair pair = gd_pair_from_case(out);
+    gd_opt_gear_apply(&pair, x);
+    gd_pair_modification_to_case(&pair, out);
     out->analysis = analysis;
     static const char *const keys[] = {"root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
                                        "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
@@ -159,7 +161,11 @@ static gd_status setup_problem(const gd_case *c, opt_out *o, gd_opt_gear **gear,
     o->runs = c->opt_runs;
     gd_status st;
     if (o->gear) {
-        st = gd_opt_gear_create(c, gear, err);
+        const gd_pair pair = gd_pair_from_case(c);
+        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
+        gd_opt_gear_bounds(c, lower, upper);
+        st = gd_opt_gear_create(&pair, &set, lower, upper, gear, err);
         if (st == GD_OK) {
             gd_opt_gear_problem(*gear, p);
             o->active_mm = gd_opt_gear_active_profile_mm(*gear);
@@ -215,9 +221,10 @@ static gd_status compute_lte(const gd_case *c, opt_out *o, gd_error *err)
     const double *xs[3] = {zero, o->table2, o->res[o->best].y};
     gd_status st = GD_OK;
     for (int j = 0; j < 3 && st == GD_OK; j++) {
-        gd_case t = *c;
+        gd_pair t = gd_pair_from_case(c);
+        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
         gd_opt_gear_apply(&t, xs[j]);
-        st = gd_ltca_run_opts(&t, 0, 0, &o->lte[j], err);
+        st = gd_ltca_run_opts(&t, &set, 0, 0, &o->lte[j], err);
     }
     return st;
 }

@@ -46,7 +46,8 @@ static gd_status write_gte(const char *dir, const gd_case *c, const gd_tca_resul
 static gd_status write_path(const char *dir, const gd_case *c, const gd_tca_result *r, gd_error *err)
 {
     gd_geometry g;
-    gd_status st = gd_geometry_compute(c, &g, err);
+    const gd_pair pair = gd_pair_from_case(c);
+    gd_status st = gd_geometry_compute(&pair, &g, err);
     if (st != GD_OK)
         return st;
     gd_atomic_file f;
@@ -139,7 +140,9 @@ int run_tca(const cli_case_args *a, gd_case *cp, const char *dir)
     gd_case c = *cp;
     gd_error err = {0};
     gd_tca_result r;
-    if (gd_tca_run(&c, &r, &err) != GD_OK)
+    const gd_pair pair = gd_pair_from_case(&c);
+    const gd_tca_settings set = gd_tca_settings_from_case(&c);
+    if (gd_tca_run(&pair, &set, &r, &err) != GD_OK)
         return cli_fail(&err);
     if (gd_mkdir_p(dir, &err) != GD_OK) {
         gd_tca_result_free(&r);

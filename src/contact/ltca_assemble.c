@@ -4,6 +4,7 @@
  * linear Hertz), the rigid freedoms (gear rotation; axial shift of a floating herringbone pinion),
  * and the exact solution of the contact problem (Eq. 11). */
 #include "ltca_internal.h"
+#include "geardyn/gd_case.h" /* the enum of the pinion's axial support */
 #include "geardyn/gd_geometry.h"
 
 #include <gsl/gsl_spline.h>
@@ -62,18 +63,16 @@ static void foundation_coefficients(ltca_body *B)
     B->fnd[3] = c0 != 0 ? c45 / c0 - 1 : 0; /* Q* */
 }
 
-GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err)
+GD_API gd_status gd_ltca_create(const gd_pair *pair, const gd_ltca_settings *set, gd_ltca **out, gd_error *err)
 {
     *out = NULL;
     gd_ltca *w = calloc(1, sizeof *w);
     if (!w)
         return gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory");
-    w->c = *c;
-    w->c.src = NULL;
-    w->c.src_line = NULL;
     /* the TCA face grid is the LTCA slicing */
-    w->c.tca_face_points = c->ltca_face_slices;
-    gd_status st = gd_tca_create(&w->c, &w->t, err);
+    const gd_tca_settings ts = {.profile_points = set->profile_points, .face_points = set->face_slices,
+                                .refine = set->refine};
+    gd_status st = gd_tca_create(pair, &ts, &w->t, err);
     if (st != GD_OK) {
         gd_ltca_free(w);
         return st;
@@ -81,12 +80,12 @@ GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err)
     w->g = *gd_tca_geometry(w->t);
     const gd_geometry *g = &w->g;
     w->halves = gd_tca_halves(w->t);
-    w->nslices = c->ltca_face_slices;
-    w->floating = w->halves == 2 && c->pinion_axial == GD_PINION_FLOATING;
+    w->nslices = set->face_slices;
+    w->floating = w->halves == 2 && set->pinion_axial == GD_PINION_FLOATING;
     w->m = w->floating ? 2 : 1;
     w->cb = cos(g->beta_b);
     w->cbeta = cos(g->beta);
-    double E = c->youngs_modulus_gpa * 1e9, nu = c->poisson_ratio;
+    double E = pair->youngs_modulus_gpa * 1e9, nu = pair->poisson_ratio;
     w->hertz = gd_hertz_compliance(E, nu) * w->cb;
     w->Estar = E / (2.0 * (1.0 - nu * nu));
     w->rb2cb = g->rb[1] * w->cb;
@@ -109,12 +108,12 @@ GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err)
     gv.alpha_t = g->alpha_n;
     for (int b = 0; b < 2; b++) {
         ltca_body *B = &w->body[b];
-        st = gd_tooth_init(c, &gv, b, &B->tooth, err);
+        st = gd_tooth_init(pair, &gv, b, &B->tooth, err);
         if (st != GD_OK) {
             gd_ltca_free(w);
             return st;
         }
-        double rbore = 0.5e-3 * (b == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm);
+        double rbore = 0.5e-3 * (b == 0 ? pair->bore_diameter_pinion_mm : pair->bore_diameter_gear_mm);
         if (rbore > 0)
             B->tooth.h_fi = g->rf[b] / rbore; /* the rim ratio of the actual body */
         B->E1 = E / (1.0 - nu * nu);
@@ -130,9 +129,9 @@ GD_API gd_status gd_ltca_create(const gd_case *c, gd_ltca **out, gd_error *err)
     const gd_flank *f1 = gd_tca_flank(w->t, 0, 0);
     w->dz = (f1->z_max - f1->z_min) / (w->nslices - 1);
     /* the first gap window: three times the deflection of the ISO 6336-1 stiffness under the
-     * case's load, at least 2 um; widened whenever a position needs more (docs/ltca.md section 3.1) */
-    double kiso = gd_iso6336_mesh_stiffness(c, g) * w->halves;
-    double fn = c->torque_nm > 0 ? c->torque_nm / (g->rb[0] * w->cb) : 0;
+     * load, at least 2 um; widened whenever a position needs more (docs/ltca.md section 3.1) */
+    double kiso = gd_iso6336_mesh_stiffness(pair, g) * w->halves;
+    double fn = set->torque_nm > 0 ? set->torque_nm / (g->rb[0] * w->cb) : 0;
     w->window0 = w->window = fmax(3.0 * fn / kiso, 2e-6);
     size_t nbits = (size_t)2 * LTCA_PAIR_SPAN * (size_t)w->nslices;
     w->prev = calloc(nbits, 1);

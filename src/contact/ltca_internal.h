@@ -46,7 +46,6 @@ gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const 
                         const unsigned char *hint, gd_contact_solution *sol, gd_error *err);
 
 struct gd_ltca {
-    gd_case c;               /* copy of the scalar keys (no bookkeeping arrays) */
     gd_tca *t;
     gd_geometry g;
     int halves, nslices, floating, m;

@@ -340,7 +340,7 @@ static gd_status result_alloc(gd_ltca_result *r, int H, int npos, gd_error *err)
 }
 
 /* Solve the contact at every position of the cycle, keeping its results and its points. */
-static gd_status sweep_positions(gd_ltca *w, const gd_case *c, gd_ltca_result *r, gd_error *err)
+static gd_status sweep_positions(gd_ltca *w, double torque_nm, gd_ltca_result *r, gd_error *err)
 {
     const int H = r->halves, npos = r->npos;
     int cap = 0, np = 0;
@@ -349,7 +349,7 @@ static gd_status sweep_positions(gd_ltca *w, const gd_case *c, gd_ltca_result *r
     for (int k = 0; k < npos; k++) {
         double phi1 = tau * k / npos;
         gd_ltca_position pos;
-        gd_status st = gd_ltca_solve_at(w, phi1, c->torque_nm, &pos, err);
+        gd_status st = gd_ltca_solve_at(w, phi1, torque_nm, &pos, err);
         if (st != GD_OK)
             return st;
         r->phi1[k] = phi1;
@@ -445,18 +445,19 @@ static void cycle_statistics(gd_ltca_result *r)
     }
 }
 
-GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, gd_ltca_result *r, gd_error *err)
+GD_API gd_status gd_ltca_run_opts(const gd_pair *pair, const gd_ltca_settings *set, int npos, int with_impact,
+                                  gd_ltca_result *r, gd_error *err)
 {
     memset(r, 0, sizeof *r);
     double t0 = gd_clock_wall_s();
     if (npos <= 0)
-        npos = c->ltca_positions_per_cycle;
+        npos = set->positions_per_cycle;
     if (npos < 2)
         return gd_error_set(err, GD_ERR_INPUT, "LTCA: %d positions per mesh cycle (valid: >= 2)", npos);
-    if (!(c->torque_nm > 0))
-        return gd_error_set(err, GD_ERR_INPUT, "operating.torque_nm: %g N m for LTCA (valid: > 0)", c->torque_nm);
+    if (!(set->torque_nm > 0))
+        return gd_error_set(err, GD_ERR_INPUT, "operating.torque_nm: %g N m for LTCA (valid: > 0)", set->torque_nm);
     gd_ltca *w;
-    gd_status st = gd_ltca_create(c, &w, err);
+    gd_status st = gd_ltca_create(pair, set, &w, err);
     if (st != GD_OK)
         return st;
     int H = w->halves;
@@ -464,18 +465,18 @@ GD_API gd_status gd_ltca_run_opts(const gd_case *c, int npos, int with_impact, g
     r->npos = npos;
     r->nslices = w->nslices;
     r->floating = w->floating;
-    r->torque_nm = c->torque_nm;
-    r->normal_force_n = gd_ltca_normal_force(w, c->torque_nm);
-    r->cache_key = gd_ltca_cache_key(c, npos);
+    r->torque_nm = set->torque_nm;
+    r->normal_force_n = gd_ltca_normal_force(w, set->torque_nm);
+    r->cache_key = gd_ltca_cache_key(pair, set, npos);
     st = result_alloc(r, H, npos, err);
     if (st == GD_OK)
-        st = sweep_positions(w, c, r, err);
+        st = sweep_positions(w, set->torque_nm, r, err);
     if (st != GD_OK)
         goto fail;
     cycle_statistics(r);
     if (with_impact)
         for (int h = 0; h < H; h++) {
-            st = mesh_in(w, r, h, c->torque_nm, &r->impact[h], err);
+            st = mesh_in(w, r, h, set->torque_nm, &r->impact[h], err);
             if (st != GD_OK)
                 goto fail;
         }
@@ -488,20 +489,20 @@ fail:
     return st;
 }
 
-GD_API gd_status gd_ltca_run(const gd_case *c, gd_ltca_result *r, gd_error *err)
+GD_API gd_status gd_ltca_run(const gd_pair *pair, const gd_ltca_settings *set, gd_ltca_result *r, gd_error *err)
 {
-    return gd_ltca_run_opts(c, 0, 1, r, err);
+    return gd_ltca_run_opts(pair, set, 0, 1, r, err);
 }
 
 /* ---- excitations of the dynamic model ---------------------------------------------------------- */
 
-GD_API gd_status gd_ltca_mesh_stiffness(const gd_case *c, int npos, double *k_left, double *k_right,
-                                        double *lte_arcsec, double k_mean[2], gd_error *err)
+GD_API gd_status gd_ltca_mesh_stiffness(const gd_pair *pair, const gd_ltca_settings *set, int npos, double *k_left,
+                                        double *k_right, double *lte_arcsec, double k_mean[2], gd_error *err)
 {
     if (npos < 2)
         return gd_error_set(err, GD_ERR_INPUT, "LTCA mesh stiffness: %d positions (valid: >= 2)", npos);
     gd_ltca_result r;
-    gd_status st = gd_ltca_run_opts(c, npos, 0, &r, err);
+    gd_status st = gd_ltca_run_opts(pair, set, npos, 0, &r, err);
     if (st != GD_OK)
         return st;
     for (int k = 0; k < npos; k++) {
@@ -531,13 +532,14 @@ GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x)
     memset(x, 0, sizeof *x);
 }
 
-GD_API gd_status gd_ltca_excitation_compute(const gd_case *c, int npos, gd_ltca_excitation *x, gd_error *err)
+GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_settings *set, int npos,
+                                            gd_ltca_excitation *x, gd_error *err)
 {
     memset(x, 0, sizeof *x);
     if (npos < 2)
         return gd_error_set(err, GD_ERR_INPUT, "LTCA excitation: %d positions (valid: >= 2)", npos);
     gd_ltca_result r;
-    gd_status st = gd_ltca_run_opts(c, npos, 1, &r, err);
+    gd_status st = gd_ltca_run_opts(pair, set, npos, 1, &r, err);
     if (st != GD_OK)
         return st;
     x->halves = r.halves;
@@ -589,60 +591,77 @@ static void key_put(key_sink *k, const void *data, size_t len)
     k->len += len;
 }
 
-static void key_stream(const gd_case *c, int npos, key_sink *k)
+static void key_name(key_sink *k, const char *name) { key_put(k, name, strlen(name) + 1); }
+
+static void key_double(key_sink *k, const char *name, double v)
 {
-    /* every key LTCA reads; keep in step with gd_ltca_create and gd_tca_create */
-    static const char *const keys[] = {
-        "gear.normal_module_mm", "gear.teeth_pinion", "gear.teeth_gear", "gear.helix_angle_deg",
-        "gear.normal_pressure_angle_deg", "gear.profile_shift_pinion", "gear.profile_shift_gear",
-        "gear.addendum_coefficient", "gear.dedendum_coefficient", "gear.face_width_pinion_mm",
-        "gear.face_width_gear_mm", "gear.groove_width_mm", "gear.bore_diameter_pinion_mm",
-        "gear.bore_diameter_gear_mm", "gear.youngs_modulus_gpa", "gear.poisson_ratio", "gear.arrangement",
-        "gear.pinion_hand", "modification.root_relief_amount_um", "modification.root_relief_length_mm",
-        "modification.tip_relief_amount_um", "modification.tip_relief_length_mm",
-        "modification.lead_relief_inner_um", "modification.lead_relief_outer_um",
-        "modification.lead_unmodified_length_mm", "misalignment.axis_in_plane_arcmin",
-        "misalignment.axis_cross_plane_arcmin", "misalignment.centre_distance_error_mm", "operating.torque_nm",
-        "support.pinion_axial", "solver.tca_profile_points", "solver.tca_refine", "solver.ltca_face_slices",
-    };
+    key_name(k, name);
+    if (v == 0)
+        v = 0; /* -0 and +0 alike */
+    key_put(k, &v, sizeof v);
+}
+
+static void key_int(key_sink *k, const char *name, int v)
+{
+    key_name(k, name);
+    key_put(k, &v, sizeof v);
+}
+
+/* Every value LTCA reads (gd_ltca_create, gd_tca_create, gd_tooth_init, gd_geometry_compute,
+ * gd_flank_pinion and gd_flank_gear), one field at a time after the name of its case key. */
+static void key_stream(const gd_pair *p, const gd_ltca_settings *s, int npos, key_sink *k)
+{
     k->h = GD_FNV1A_OFFSET_BASIS;
     k->len = 0;
     key_put(k, "geardyn-ltca-1", 14);
-    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++) {
-        char sec[32];
-        const char *dot = strchr(keys[i], '.');
-        size_t ls = (size_t)(dot - keys[i]);
-        memcpy(sec, keys[i], ls);
-        sec[ls] = 0;
-        const gd_keyspec *s = gd_case_find_key(sec, dot + 1);
-        if (!s)
-            continue;
-        key_put(k, keys[i], strlen(keys[i]) + 1);
-        const char *fp = (const char *)c + s->offset;
-        if (s->type == GD_KEY_DOUBLE) {
-            double v = *(const double *)fp;
-            if (v == 0)
-                v = 0; /* -0 and +0 alike */
-            key_put(k, &v, sizeof v);
-        } else {
-            int v = *(const int *)fp;
-            key_put(k, &v, sizeof v);
-        }
-    }
-    int np = npos > 0 ? npos : c->ltca_positions_per_cycle;
+    key_double(k, "gear.normal_module_mm", p->normal_module_mm);
+    key_int(k, "gear.teeth_pinion", p->teeth_pinion);
+    key_int(k, "gear.teeth_gear", p->teeth_gear);
+    key_double(k, "gear.helix_angle_deg", p->helix_angle_deg);
+    key_double(k, "gear.normal_pressure_angle_deg", p->normal_pressure_angle_deg);
+    key_double(k, "gear.profile_shift_pinion", p->profile_shift_pinion);
+    key_double(k, "gear.profile_shift_gear", p->profile_shift_gear);
+    key_double(k, "gear.addendum_coefficient", p->addendum_coefficient);
+    key_double(k, "gear.dedendum_coefficient", p->dedendum_coefficient);
+    key_double(k, "gear.face_width_pinion_mm", p->face_width_pinion_mm);
+    key_double(k, "gear.face_width_gear_mm", p->face_width_gear_mm);
+    key_double(k, "gear.groove_width_mm", p->groove_width_mm);
+    key_double(k, "gear.bore_diameter_pinion_mm", p->bore_diameter_pinion_mm);
+    key_double(k, "gear.bore_diameter_gear_mm", p->bore_diameter_gear_mm);
+    key_double(k, "gear.youngs_modulus_gpa", p->youngs_modulus_gpa);
+    key_double(k, "gear.poisson_ratio", p->poisson_ratio);
+    key_int(k, "gear.arrangement", p->arrangement);
+    key_int(k, "gear.pinion_hand", p->pinion_hand);
+    key_double(k, "modification.root_relief_amount_um", p->root_relief_amount_um);
+    key_double(k, "modification.root_relief_length_mm", p->root_relief_length_mm);
+    key_double(k, "modification.tip_relief_amount_um", p->tip_relief_amount_um);
+    key_double(k, "modification.tip_relief_length_mm", p->tip_relief_length_mm);
+    key_double(k, "modification.lead_relief_inner_um", p->lead_relief_inner_um);
+    key_double(k, "modification.lead_relief_outer_um", p->lead_relief_outer_um);
+    key_double(k, "modification.lead_unmodified_length_mm", p->lead_unmodified_length_mm);
+    key_double(k, "misalignment.axis_in_plane_arcmin", p->axis_in_plane_arcmin);
+    key_double(k, "misalignment.axis_cross_plane_arcmin", p->axis_cross_plane_arcmin);
+    key_double(k, "misalignment.centre_distance_error_mm", p->centre_distance_error_mm);
+    key_double(k, "operating.torque_nm", s->torque_nm);
+    key_int(k, "support.pinion_axial", s->pinion_axial);
+    key_int(k, "solver.tca_profile_points", s->profile_points);
+    key_int(k, "solver.tca_refine", s->refine);
+    key_int(k, "solver.ltca_face_slices", s->face_slices);
+    int np = npos > 0 ? npos : s->positions_per_cycle;
     key_put(k, &np, sizeof np);
 }
 
-GD_API uint64_t gd_ltca_cache_key(const gd_case *c, int npos)
+GD_API uint64_t gd_ltca_cache_key(const gd_pair *pair, const gd_ltca_settings *set, int npos)
 {
     key_sink k = {0};
-    key_stream(c, npos, &k);
+    key_stream(pair, set, npos, &k);
     return k.h;
 }
 
-GD_API size_t gd_ltca_cache_key_bytes(const gd_case *c, int npos, unsigned char *buf, size_t cap)
+GD_API size_t gd_ltca_cache_key_bytes(const gd_pair *pair, const gd_ltca_settings *set, int npos, unsigned char *buf,
+                                      size_t cap)
 {
     key_sink k = {.buf = buf, .cap = cap};
-    key_stream(c, npos, &k);
+    key_stream(pair, set, npos, &k);
     return k.len;
 }

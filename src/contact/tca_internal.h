@@ -43,7 +43,6 @@ enum {
 typedef int (*tca_fdf_fn)(const double *x, void *p, double *f, double *J);
 
 struct gd_tca {
-    gd_case c;               /* copy of the scalar keys (no bookkeeping arrays) */
     gd_geometry g;
     int halves;
     tca_half h[2];

@@ -3,6 +3,7 @@
  * contact pattern and separation topography (docs/tca.md). */
 #include "tca_internal.h"
 #include "../core/gsl_quiet.h"
+#include "geardyn/gd_case.h" /* the enums of arrangement and formulation */
 #include "geardyn/gd_geometry.h"
 #include "../core/clock.h"
 
@@ -56,17 +57,17 @@ GD_API void gd_tca_topography_reset(gd_tca *t)
 
 /* Frames of the pair: phase offsets, gear centre with the centre-distance error, the misalignment
  * rotation of the gear axis, pitches, operating pressure angle and the gap tolerances. */
-static void set_frames(gd_tca *t, const gd_case *c)
+static void set_frames(gd_tca *t, const gd_pair *pair, const gd_tca_settings *set)
 {
     const gd_geometry *g = &t->g;
     t->theta1 = g->eta_b[0] + gd_involute(g->alpha_wt);
     t->theta2 = g->eta_b[1] + gd_involute(g->alpha_wt);
-    double dE = c->centre_distance_error_mm * 1e-3;
+    double dE = pair->centre_distance_error_mm * 1e-3;
     t->C[0] = g->a + dE;
     t->C[1] = 0;
     t->C[2] = 0;
     const double arcmin = M_PI / (180.0 * 60.0);
-    double di = c->axis_in_plane_arcmin * arcmin, dc = c->axis_cross_plane_arcmin * arcmin;
+    double di = pair->axis_in_plane_arcmin * arcmin, dc = pair->axis_cross_plane_arcmin * arcmin;
     /* M = Rx(dc) Ry(di) */
     double ci = cos(di), si = sin(di), cc = cos(dc), sc = sin(dc);
     double Ry[9] = {ci, 0, si, 0, 1, 0, -si, 0, ci};
@@ -79,16 +80,16 @@ static void set_frames(gd_tca *t, const gd_case *c)
     t->tau2 = 2 * M_PI / g->z[1];
     double cw = (g->rb[0] + g->rb[1]) / (g->a + dE);
     t->alpha_op = acos(fmin(1.0, cw));
-    t->refine = c->tca_refine;
+    t->refine = set->refine;
     t->tol_edge = t->tol_contact = 1e-9 / (g->rb[1] * cos(g->beta_b));
 }
 
 /* The grid on the pinion flank, uniform in roll length and in face position, the node buffers of
  * the pairs and the node positions of each half. */
-static gd_status make_grid(gd_tca *t, const gd_case *c, gd_error *err)
+static gd_status make_grid(gd_tca *t, const gd_tca_settings *set, gd_error *err)
 {
-    t->nprof = c->tca_profile_points;
-    t->nface = c->tca_face_points;
+    t->nprof = set->profile_points;
+    t->nface = set->face_points;
     int nn = t->nprof * t->nface;
     const gd_flank *f1 = &t->h[0].f1;
     t->rho = malloc((size_t)t->nprof * sizeof *t->rho);
@@ -138,41 +139,38 @@ static gd_status alloc_solvers(gd_tca *t, gd_error *err)
     return GD_OK;
 }
 
-GD_API gd_status gd_tca_create(const gd_case *c, gd_tca **out, gd_error *err)
+GD_API gd_status gd_tca_create(const gd_pair *pair, const gd_tca_settings *set, gd_tca **out, gd_error *err)
 {
     gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     *out = NULL;
     gd_tca *t = calloc(1, sizeof *t);
     if (!t)
         return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory");
-    t->c = *c;
-    t->c.src = NULL;
-    t->c.src_line = NULL;
-    gd_status st = gd_geometry_compute(c, &t->g, err);
+    gd_status st = gd_geometry_compute(pair, &t->g, err);
     if (st != GD_OK) {
         gd_tca_free(t);
         return st;
     }
     const gd_geometry *g = &t->g;
-    if (c->arrangement == GD_ARR_SPUR && c->helix_angle_deg != 0) {
+    if (pair->arrangement == GD_ARR_SPUR && pair->helix_angle_deg != 0) {
         gd_tca_free(t);
         return gd_error_set(err, GD_ERR_INPUT, "gear.helix_angle_deg: %g with arrangement = spur (valid: 0)",
-                            c->helix_angle_deg);
+                            pair->helix_angle_deg);
     }
-    t->halves = c->arrangement == GD_ARR_HERRINGBONE ? 2 : 1;
+    t->halves = pair->arrangement == GD_ARR_HERRINGBONE ? 2 : 1;
     for (int h = 0; h < t->halves; h++) {
-        st = gd_flank_pinion(c, g, h, &t->h[h].f1, err);
+        st = gd_flank_pinion(pair, g, h, &t->h[h].f1, err);
         if (st == GD_OK)
-            st = gd_flank_gear(c, g, h, &t->h[h].f2, err);
+            st = gd_flank_gear(pair, g, h, &t->h[h].f2, err);
         if (st != GD_OK) {
             gd_tca_free(t);
             return st;
         }
-        double zc = 0.5 * (c->groove_width_mm * 1e-3 + g->b[0]);
+        double zc = 0.5 * (pair->groove_width_mm * 1e-3 + g->b[0]);
         t->h[h].zc = t->halves == 1 ? 0 : (h == 0 ? -zc : zc);
     }
-    set_frames(t, c);
-    st = make_grid(t, c, err);
+    set_frames(t, pair, set);
+    st = make_grid(t, set, err);
     if (st != GD_OK) {
         gd_tca_free(t);
         return st;
@@ -271,7 +269,7 @@ GD_API void gd_tca_result_free(gd_tca_result *r)
 }
 
 /* The arrays of the result for npos positions of every half; 0 when out of memory. */
-static int alloc_result(const gd_tca *t, const gd_case *c, int npos, gd_tca_result *r)
+static int alloc_result(const gd_tca *t, const gd_tca_settings *set, int npos, gd_tca_result *r)
 {
     int nn = t->nprof * t->nface;
     r->halves = t->halves;
@@ -288,7 +286,7 @@ static int alloc_result(const gd_tca *t, const gd_case *c, int npos, gd_tca_resu
         r->sep[h] = malloc((size_t)nn * sizeof *r->sep[h]);
         r->ease_off[h] = malloc((size_t)nn * sizeof *r->ease_off[h]);
         ok = r->contact[h] && r->gte_arcsec[h] && r->sep[h] && r->ease_off[h];
-        if (ok && c->tca_formulation == GD_TCA_BOTH) {
+        if (ok && set->formulation == GD_TCA_BOTH) {
             r->contact_a[h] = calloc((size_t)npos, sizeof *r->contact_a[h]);
             ok = r->contact_a[h] != NULL;
         }
@@ -298,13 +296,13 @@ static int alloc_result(const gd_tca *t, const gd_case *c, int npos, gd_tca_resu
 
 /* The contact of half h at position k by the formulation of the case (separation always, for the
  * topography), and with both the largest difference of their transmission errors. */
-static gd_status contact_at_position(gd_tca *t, const gd_case *c, int h, int k, gd_tca_result *r, gd_error *err)
+static gd_status contact_at_position(gd_tca *t, const gd_tca_settings *set, int h, int k, gd_tca_result *r, gd_error *err)
 {
     gd_tca_contact cb;
     gd_status st = tca_separation(t, h, r->phi1[k], &cb, err);
     if (st != GD_OK)
         return st;
-    if (c->tca_formulation == GD_TCA_TANGENCY) {
+    if (set->formulation == GD_TCA_TANGENCY) {
         st = tca_tangency(t, h, r->phi1[k], &r->contact[h][k], err);
         if (st != GD_OK)
             return st;
@@ -314,7 +312,7 @@ static gd_status contact_at_position(gd_tca *t, const gd_case *c, int h, int k, 
                                 r->phi1[k] * 180 / M_PI, h ? "right" : "left");
     } else {
         r->contact[h][k] = cb;
-        if (c->tca_formulation == GD_TCA_BOTH) {
+        if (set->formulation == GD_TCA_BOTH) {
             st = tca_tangency(t, h, r->phi1[k], &r->contact_a[h][k], err);
             if (st != GD_OK)
                 return st;
@@ -331,14 +329,14 @@ static gd_status contact_at_position(gd_tca *t, const gd_case *c, int h, int k, 
 
 /* Every position of half h: the contacts, edge kinds, pairs in contact, the transmission error
  * and the topography; the operating pressure angles summed into *asum, *acount. */
-static gd_status run_half(gd_tca *t, const gd_case *c, int h, int npos, gd_tca_result *r, double *asum,
+static gd_status run_half(gd_tca *t, const gd_tca_settings *set, int h, int npos, gd_tca_result *r, double *asum,
                           long *acount, gd_error *err)
 {
     int nn = t->nprof * t->nface;
     r->pairs_min[h] = 1 << 30;
     double psum = 0;
     for (int k = 0; k < npos; k++) {
-        gd_status st = contact_at_position(t, c, h, k, r, err);
+        gd_status st = contact_at_position(t, set, h, k, r, err);
         if (st != GD_OK)
             return st;
         const gd_tca_contact *ck = &r->contact[h][k];
@@ -369,16 +367,16 @@ static gd_status run_half(gd_tca *t, const gd_case *c, int h, int npos, gd_tca_r
     return GD_OK;
 }
 
-GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
+GD_API gd_status gd_tca_run(const gd_pair *pair, const gd_tca_settings *set, gd_tca_result *r, gd_error *err)
 {
     memset(r, 0, sizeof *r);
     double t0 = gd_clock_wall_s();
     gd_tca *t;
-    gd_status st = gd_tca_create(c, &t, err);
+    gd_status st = gd_tca_create(pair, set, &t, err);
     if (st != GD_OK)
         return st;
-    int npos = c->tca_positions_per_cycle * c->tca_cycles;
-    if (!alloc_result(t, c, npos, r)) {
+    int npos = set->positions_per_cycle * set->cycles;
+    if (!alloc_result(t, set, npos, r)) {
         gd_tca_free(t);
         gd_tca_result_free(r);
         return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for %d positions", npos);
@@ -386,11 +384,11 @@ GD_API gd_status gd_tca_run(const gd_case *c, gd_tca_result *r, gd_error *err)
     memcpy(r->rho, t->rho, (size_t)t->nprof * sizeof *r->rho);
     memcpy(r->z, t->z, (size_t)t->nface * sizeof *r->z);
     for (int k = 0; k < npos; k++)
-        r->phi1[k] = t->tau1 * k / c->tca_positions_per_cycle;
+        r->phi1[k] = t->tau1 * k / set->positions_per_cycle;
     double asum = 0;
     long acount = 0;
     for (int h = 0; h < t->halves; h++) {
-        st = run_half(t, c, h, npos, r, &asum, &acount, err);
+        st = run_half(t, set, h, npos, r, &asum, &acount, err);
         if (st != GD_OK) {
             gd_tca_free(t);
             gd_tca_result_free(r);

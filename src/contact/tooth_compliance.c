@@ -109,12 +109,12 @@ GD_API void gd_tooth_free(gd_tooth *t)
     }
 }
 
-GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body, gd_tooth *t, gd_error *err)
+GD_API gd_status gd_tooth_init(const gd_pair *pair, const gd_geometry *g, int body, gd_tooth *t, gd_error *err)
 {
     gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(t, 0, sizeof *t);
-    t->E = c->youngs_modulus_gpa * 1e9;
-    t->nu = c->poisson_ratio;
+    t->E = pair->youngs_modulus_gpa * 1e9;
+    t->nu = pair->poisson_ratio;
     t->rb = g->rb[body];
     t->rf = g->rf[body];
     t->ra = g->ra[body];
@@ -122,7 +122,7 @@ GD_API gd_status gd_tooth_init(const gd_case *c, const gd_geometry *g, int body,
     t->psi_b = s_t / (2 * g->r[body]) + gd_involute(g->alpha_t);
     t->theta_f = half_angle(t, t->rf);
     t->x_root = t->rf * cos(t->theta_f);
-    double rbore = 0.5e-3 * (body == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm);
+    double rbore = 0.5e-3 * (body == 0 ? pair->bore_diameter_pinion_mm : pair->bore_diameter_gear_mm);
     /* Sainsot's fit covers h_fi = r_f / r_int from thin rims to solid blanks; a solid blank is
      * taken at h_fi = 1.6, the solid end of the range the fit was made for */
     t->h_fi = rbore > 0 ? t->rf / rbore : 1.6;

@@ -14,7 +14,7 @@
 #define CACHE_SIZE 16
 
 /* One cached LTCA. Filed under a 64-bit hash of its inputs, but identified by the inputs
- * themselves (gd_ltca_cache_key_bytes): two cases whose hashes collide are not confused. refs
+ * themselves (gd_ltca_cache_key_bytes): two inputs whose hashes collide are not confused. refs
  * counts the references handed out and not released; only an entry with none is evicted. */
 typedef struct entry {
     gd_ltca_excitation *x;
@@ -30,7 +30,7 @@ static entry *cache;
 static int cache_n, cache_slots;
 static unsigned long tick;
 static long computations, references;
-static uint64_t (*cache_hash)(const gd_case *c, int npos) = gd_ltca_cache_key;
+static uint64_t (*cache_hash)(const gd_pair *pair, const gd_ltca_settings *set, int npos) = gd_ltca_cache_key;
 
 static void entry_free(entry *e)
 {
@@ -48,7 +48,7 @@ GD_API long gd_ltca_cache_computations(void)
     return n;
 }
 
-void gd_ltca_cache_set_hash(uint64_t (*hash)(const gd_case *c, int npos))
+void gd_ltca_cache_set_hash(uint64_t (*hash)(const gd_pair *pair, const gd_ltca_settings *set, int npos))
 {
     pthread_mutex_lock(&cache_lock);
     cache_hash = hash ? hash : gd_ltca_cache_key;
@@ -110,18 +110,19 @@ static entry *slot_for_new(void)
     return e;
 }
 
-GD_API gd_status gd_ltca_excitation_cached(const gd_case *c, const gd_ltca_excitation **out, gd_error *err)
+GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set, const gd_ltca_excitation **out,
+                                           gd_error *err)
 {
     *out = NULL;
-    int npos = c->ltca_positions_per_cycle;
-    size_t key_len = gd_ltca_cache_key_bytes(c, npos, NULL, 0);
+    int npos = set->positions_per_cycle;
+    size_t key_len = gd_ltca_cache_key_bytes(pair, set, npos, NULL, 0);
     unsigned char *key = malloc(key_len);
     if (!key)
         return gd_error_set(err, GD_ERR_NOMEM, "LTCA cache: out of memory");
-    gd_ltca_cache_key_bytes(c, npos, key, key_len);
+    gd_ltca_cache_key_bytes(pair, set, npos, key, key_len);
     gd_status st = GD_OK;
     pthread_mutex_lock(&cache_lock);
-    uint64_t hash = cache_hash(c, npos);
+    uint64_t hash = cache_hash(pair, set, npos);
     for (int i = 0; i < cache_n; i++) {
         entry *e = &cache[i];
         if (e->hash == hash && e->key_len == key_len && memcmp(e->key, key, key_len) == 0) {
@@ -138,7 +139,7 @@ GD_API gd_status gd_ltca_excitation_cached(const gd_case *c, const gd_ltca_excit
     gd_ltca_excitation *x = calloc(1, sizeof *x);
     if (!x) {
         st = gd_error_set(err, GD_ERR_NOMEM, "LTCA cache: out of memory");
-    } else if ((st = gd_ltca_excitation_compute(c, npos, x, err)) != GD_OK) {
+    } else if ((st = gd_ltca_excitation_compute(pair, set, npos, x, err)) != GD_OK) {
         free(x);
         x = NULL;
         gd_error_prefix(err, "LTCA for the dynamic model");

@@ -3,12 +3,12 @@
 
 #include <math.h>
 
-GD_API void gd_body_half(const gd_case *c, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2)
+GD_API void gd_body_half(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2)
 {
-    double rho = c->density_kg_per_m3;
-    double rbore = 0.5e-3 * (which == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm);
+    double rho = pair->density_kg_per_m3;
+    double rbore = 0.5e-3 * (which == 0 ? pair->bore_diameter_pinion_mm : pair->bore_diameter_gear_mm);
     double r = g->r[which], rf = g->rf[which];
-    double b = g->b[which], half_groove = 0.5e-3 * c->groove_width_mm;
+    double b = g->b[which], half_groove = 0.5e-3 * pair->groove_width_mm;
     double m_teeth = rho * M_PI * (r * r - rbore * rbore) * b;
     double m_groove = rho * M_PI * (rf * rf - rbore * rbore) * half_groove;
     double i_teeth = 0.5 * rho * M_PI * (pow(r, 4) - pow(rbore, 4)) * b;
@@ -17,10 +17,10 @@ GD_API void gd_body_half(const gd_case *c, const gd_geometry *g, int which, doub
     *inertia_kgm2 = i_teeth + i_groove;
 }
 
-GD_API double gd_groove_shaft_stiffness(const gd_case *c, const gd_geometry *g, int which)
+GD_API double gd_groove_shaft_stiffness(const gd_pair *pair, const gd_geometry *g, int which)
 {
-    double rbore = 0.5e-3 * (which == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm);
+    double rbore = 0.5e-3 * (which == 0 ? pair->bore_diameter_pinion_mm : pair->bore_diameter_gear_mm);
     double area = M_PI * (g->rf[which] * g->rf[which] - rbore * rbore);
-    double len = fmax(c->groove_width_mm * 1e-3, 1e-3); /* a groove of zero width: a 1 mm neck */
-    return c->youngs_modulus_gpa * 1e9 * area / len;
+    double len = fmax(pair->groove_width_mm * 1e-3, 1e-3); /* a groove of zero width: a 1 mm neck */
+    return pair->youngs_modulus_gpa * 1e9 * area / len;
 }

@@ -1,5 +1,6 @@
 /* Tooth flank surfaces: the form-ground 3D-modified pinion flank (paper Eq. 1-6) and the
  * unmodified gear flank, in closed form with first and second derivatives (docs/geometry.md). */
+#include "geardyn/gd_case.h" /* the enums of arrangement and hand */
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_geometry.h"
 
@@ -7,11 +8,11 @@
 #include <stdio.h>
 #include <string.h>
 
-GD_API int gd_flank_pinion_hand(const gd_case *c, int half)
+GD_API int gd_flank_pinion_hand(const gd_pair *pair, int half)
 {
-    if (c->arrangement == GD_ARR_SPUR || c->helix_angle_deg == 0.0)
+    if (pair->arrangement == GD_ARR_SPUR || pair->helix_angle_deg == 0.0)
         return 0;
-    int h = c->pinion_hand == GD_HAND_RIGHT ? 1 : -1;
+    int h = pair->pinion_hand == GD_HAND_RIGHT ? 1 : -1;
     return half == 0 ? h : -h;
 }
 
@@ -28,16 +29,16 @@ static double feed_projection(double cos_bb, double eta_b, double u) { return co
 
 GD_API double gd_flank_feed_projection(const gd_flank *f, double u) { return feed_projection(f->cos_bb, f->eta_b, u); }
 
-GD_API gd_status gd_modification_check(const gd_case *c, const gd_geometry *g, const char **bad_key, gd_error *err)
+GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g, const char **bad_key, gd_error *err)
 {
     const char *dummy;
     if (!bad_key)
         bad_key = &dummy;
     *bad_key = NULL;
-    double y1 = c->root_relief_amount_um * 1e-6, y2 = c->root_relief_length_mm * 1e-3;
-    double y3 = c->tip_relief_amount_um * 1e-6, y4 = c->tip_relief_length_mm * 1e-3;
-    double y5 = c->lead_relief_inner_um * 1e-6, y6 = c->lead_relief_outer_um * 1e-6;
-    double y7 = c->lead_unmodified_length_mm * 1e-3;
+    double y1 = pair->root_relief_amount_um * 1e-6, y2 = pair->root_relief_length_mm * 1e-3;
+    double y3 = pair->tip_relief_amount_um * 1e-6, y4 = pair->tip_relief_length_mm * 1e-3;
+    double y5 = pair->lead_relief_inner_um * 1e-6, y6 = pair->lead_relief_outer_um * 1e-6;
+    double y7 = pair->lead_unmodified_length_mm * 1e-3;
     double active = g->rho_a[0] - g->rho_sap[0];
     double b1 = g->b[0];
     if (y1 > 0 && y2 <= 0) {
@@ -91,7 +92,7 @@ GD_API gd_status gd_modification_check(const gd_case *c, const gd_geometry *g, c
     return GD_OK;
 }
 
-static void common(const gd_case *c, const gd_geometry *g, int i, int hand, gd_flank *f)
+static void common(const gd_pair *pair, const gd_geometry *g, int i, int hand, gd_flank *f)
 {
     memset(f, 0, sizeof *f);
     f->body = i;
@@ -109,20 +110,20 @@ static void common(const gd_case *c, const gd_geometry *g, int i, int hand, gd_f
     f->u_ref = tan(g->alpha_t);
     f->z_lo = f->z_min;
     f->z_hi = f->z_max;
-    (void)c;
+    (void)pair;
 }
 
-GD_API gd_status gd_flank_pinion(const gd_case *c, const gd_geometry *g, int half, gd_flank *f, gd_error *err)
+GD_API gd_status gd_flank_pinion(const gd_pair *pair, const gd_geometry *g, int half, gd_flank *f, gd_error *err)
 {
     const char *key;
-    gd_status st = gd_modification_check(c, g, &key, err);
+    gd_status st = gd_modification_check(pair, g, &key, err);
     if (st != GD_OK)
         return gd_error_prefix(err, "modification.%s", key ? key : "?");
-    common(c, g, 0, gd_flank_pinion_hand(c, half), f);
-    double y1 = c->root_relief_amount_um * 1e-6, y2 = c->root_relief_length_mm * 1e-3;
-    double y3 = c->tip_relief_amount_um * 1e-6, y4 = c->tip_relief_length_mm * 1e-3;
-    double y5 = c->lead_relief_inner_um * 1e-6, y6 = c->lead_relief_outer_um * 1e-6;
-    double y7 = c->lead_unmodified_length_mm * 1e-3;
+    common(pair, g, 0, gd_flank_pinion_hand(pair, half), f);
+    double y1 = pair->root_relief_amount_um * 1e-6, y2 = pair->root_relief_length_mm * 1e-3;
+    double y3 = pair->tip_relief_amount_um * 1e-6, y4 = pair->tip_relief_length_mm * 1e-3;
+    double y5 = pair->lead_relief_inner_um * 1e-6, y6 = pair->lead_relief_outer_um * 1e-6;
+    double y7 = pair->lead_unmodified_length_mm * 1e-3;
     if (y1 > 0) {
         f->root_amount = y1;
         f->root_len = y2;
@@ -136,7 +137,7 @@ GD_API gd_status gd_flank_pinion(const gd_case *c, const gd_geometry *g, int hal
     /* lead: y5 at the inner end (toward the groove: +z of the left half, -z of the right half;
      * -z of a single helical or spur pair), y6 at the outer end */
     double lo_amount = y6, hi_amount = y5;
-    if (c->arrangement != GD_ARR_HERRINGBONE || half == 1) {
+    if (pair->arrangement != GD_ARR_HERRINGBONE || half == 1) {
         lo_amount = y5;
         hi_amount = y6;
     }
@@ -152,10 +153,10 @@ GD_API gd_status gd_flank_pinion(const gd_case *c, const gd_geometry *g, int hal
     return GD_OK;
 }
 
-GD_API gd_status gd_flank_gear(const gd_case *c, const gd_geometry *g, int half, gd_flank *f, gd_error *err)
+GD_API gd_status gd_flank_gear(const gd_pair *pair, const gd_geometry *g, int half, gd_flank *f, gd_error *err)
 {
     (void)err;
-    common(c, g, 1, -gd_flank_pinion_hand(c, half), f);
+    common(pair, g, 1, -gd_flank_pinion_hand(pair, half), f);
     return GD_OK;
 }
 

@@ -42,16 +42,16 @@ static gd_status inverse_involute(double target, double *alpha, gd_error *err)
 }
 
 /* Angles, pitches, the working pressure angle, the radii and the centre distance. */
-static gd_status geometry_radii(const gd_case *c, gd_geometry *g, gd_error *err)
+static gd_status geometry_radii(const gd_pair *pair, gd_geometry *g, gd_error *err)
 {
     const double deg = M_PI / 180.0;
-    g->mn = c->normal_module_mm * 1e-3;
-    g->beta = c->helix_angle_deg * deg;
-    g->alpha_n = c->normal_pressure_angle_deg * deg;
-    g->z[0] = c->teeth_pinion;
-    g->z[1] = c->teeth_gear;
-    g->x[0] = c->profile_shift_pinion;
-    g->x[1] = c->profile_shift_gear;
+    g->mn = pair->normal_module_mm * 1e-3;
+    g->beta = pair->helix_angle_deg * deg;
+    g->alpha_n = pair->normal_pressure_angle_deg * deg;
+    g->z[0] = pair->teeth_pinion;
+    g->z[1] = pair->teeth_gear;
+    g->x[0] = pair->profile_shift_pinion;
+    g->x[1] = pair->profile_shift_gear;
     g->mt = g->mn / cos(g->beta);
     g->alpha_t = atan(tan(g->alpha_n) / cos(g->beta));
     g->beta_b = asin(sin(g->beta) * cos(g->alpha_n));
@@ -64,14 +64,14 @@ static gd_status geometry_radii(const gd_case *c, gd_geometry *g, gd_error *err)
     for (int i = 0; i < 2; i++) {
         g->r[i] = 0.5 * g->z[i] * g->mt;
         g->rb[i] = g->r[i] * cos(g->alpha_t);
-        g->ra[i] = g->r[i] + g->mn * (c->addendum_coefficient + g->x[i]);
-        g->rf[i] = g->r[i] - g->mn * (c->dedendum_coefficient - g->x[i]);
+        g->ra[i] = g->r[i] + g->mn * (pair->addendum_coefficient + g->x[i]);
+        g->rf[i] = g->r[i] - g->mn * (pair->dedendum_coefficient - g->x[i]);
         g->rw[i] = g->rb[i] / cos(g->alpha_wt);
     }
     g->a0 = g->r[0] + g->r[1];
     g->a = g->a0 * cos(g->alpha_t) / cos(g->alpha_wt);
-    g->b[0] = c->face_width_pinion_mm * 1e-3;
-    g->b[1] = c->face_width_gear_mm * 1e-3;
+    g->b[0] = pair->face_width_pinion_mm * 1e-3;
+    g->b[1] = pair->face_width_gear_mm * 1e-3;
     g->b_contact = fmin(g->b[0], g->b[1]);
     return GD_OK;
 }
@@ -79,7 +79,7 @@ static gd_status geometry_radii(const gd_case *c, gd_geometry *g, gd_error *err)
 /* The contact ratios, the start of active profile, the tooth thicknesses and the involute
  * form circle of each member; returns the length of the line of action between the base
  * circles' tangent points. */
-static double geometry_contact(const gd_case *c, gd_geometry *g)
+static double geometry_contact(const gd_pair *pair, gd_geometry *g)
 {
     double ga[2];
     for (int i = 0; i < 2; i++)
@@ -104,7 +104,7 @@ static double geometry_contact(const gd_case *c, gd_geometry *g)
         /* involute form circle: the generating rack's straight flank ends h_a* m_n above its
          * datum line (ISO 53: the rest of the rack tip is the fillet-generating radius), so the
          * generated involute starts at the roll length r sin(alpha_t) - (h_a* - x) m_n / sin(alpha_t) */
-        g->rho_form[i] = g->r[i] * sin(g->alpha_t) - (c->addendum_coefficient - g->x[i]) * g->mn / sin(g->alpha_t);
+        g->rho_form[i] = g->r[i] * sin(g->alpha_t) - (pair->addendum_coefficient - g->x[i]) * g->mn / sin(g->alpha_t);
         g->r_form[i] = sqrt(g->rb[i] * g->rb[i] + (g->rho_form[i] > 0 ? g->rho_form[i] * g->rho_form[i] : 0));
     }
     g->pbn = g->pbt * cos(g->beta_b);
@@ -112,7 +112,7 @@ static double geometry_contact(const gd_case *c, gd_geometry *g)
 }
 
 /* The checks that refuse impossible geometry; g->bad_key names the key to blame. */
-static gd_status geometry_check(const gd_case *c, gd_geometry *g, double loa, gd_error *err)
+static gd_status geometry_check(const gd_pair *pair, gd_geometry *g, double loa, gd_error *err)
 {
     static const char *name[2] = {"pinion", "gear"};
     static const char *shift_key[2] = {"profile_shift_pinion", "profile_shift_gear"};
@@ -125,12 +125,12 @@ static gd_status geometry_check(const gd_case *c, gd_geometry *g, double loa, gd
                                 name[i], g->rf[i] * 1e3);
         /* undercut: the generating rack's tip line (h_a* above the datum) must not cut below
          * the interference point of the base circle: m_n (h_a* - x) <= r sin^2(alpha_t) */
-        double need = g->mn * (c->addendum_coefficient - g->x[i]);
+        double need = g->mn * (pair->addendum_coefficient - g->x[i]);
         g->bad_key = teeth_key[i];
         if (need > g->r[i] * sin(g->alpha_t) * sin(g->alpha_t) + 1e-12)
             return gd_error_set(err, GD_ERR_GEOMETRY,
                 "%s: undercut: z = %d with profile shift %.3g is undercut (needs x >= %.3f)", name[i], g->z[i],
-                g->x[i], c->addendum_coefficient - g->r[i] * pow(sin(g->alpha_t), 2) / g->mn);
+                g->x[i], pair->addendum_coefficient - g->r[i] * pow(sin(g->alpha_t), 2) / g->mn);
         g->bad_key = shift_key[i];
         if (g->tip_thickness_n[i] <= 0.2 * g->mn)
             return gd_error_set(err, GD_ERR_GEOMETRY,
@@ -157,12 +157,12 @@ static gd_status geometry_check(const gd_case *c, gd_geometry *g, double loa, gd
     return GD_OK;
 }
 
-GD_API gd_status gd_geometry_compute(const gd_case *c, gd_geometry *g, gd_error *err)
+GD_API gd_status gd_geometry_compute(const gd_pair *pair, gd_geometry *g, gd_error *err)
 {
     gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
-    gd_status st = geometry_radii(c, g, err);
+    gd_status st = geometry_radii(pair, g, err);
     if (st != GD_OK)
         return st;
-    double loa = geometry_contact(c, g);
-    return geometry_check(c, g, loa, err);
+    double loa = geometry_contact(pair, g);
+    return geometry_check(pair, g, loa, err);
 }

@@ -3,7 +3,7 @@
 
 #include <math.h>
 
-GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g)
+GD_API double gd_iso6336_mesh_stiffness(const gd_pair *pair, const gd_geometry *g)
 {
     static const double C[9] = {0.04723, 0.15551, 0.25791, -0.00635, -0.11654, -0.00193, -0.24188, 0.00529, 0.00182};
     /* ISO 6336-1 virtual numbers of teeth z_n = z / (cos^2 beta_b cos beta) (as ISO/TR 6336-30's
@@ -15,7 +15,7 @@ GD_API double gd_iso6336_mesh_stiffness(const gd_case *c, const gd_geometry *g)
     double cth = 1.0 / q;                                          /* N / (mm um) */
     /* basic rack factor C_B = [1 + 0.5 (1.2 - h_fP/m_n)] [1 - 0.02 (20 deg - alpha_n)], with the
      * rack dedendum h_fP/m_n taken as the dedendum coefficient (0.975 for 1.25 and 20 deg) */
-    double cb = (1.0 + 0.5 * (1.2 - c->dedendum_coefficient)) * (1.0 - 0.02 * (20.0 - g->alpha_n * 180.0 / M_PI));
+    double cb = (1.0 + 0.5 * (1.2 - pair->dedendum_coefficient)) * (1.0 - 0.02 * (20.0 - g->alpha_n * 180.0 / M_PI));
     /* C_M = 0.8 (solid blanks), C_R = 1; the reduction of c' below 100 N/mm line load is not
      * applied: a dynamic model needs the stiffness at every load, and a power sweep must not
      * change the pair silently (docs/model.md) */

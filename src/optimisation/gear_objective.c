@@ -4,9 +4,9 @@
  *
  * One evaluation = one LTCA workspace for the modified flank (gd_ltca_create: the TCA workspace
  * holds the flank, and the API has no call that changes the modification of an existing
- * workspace) and the case's positions over one mesh cycle, exactly as gd_ltca_run solves them
+ * workspace) and the settings' positions over one mesh cycle, exactly as gd_ltca_run solves them
  * (same positions, same order, same warm starts: the same amplitude to the last bit). Each
- * concurrent caller has its own case copy (state), so evaluations run in parallel. */
+ * concurrent caller has its own copy of the pair (state), so evaluations run in parallel. */
 #include "opt_internal.h"
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_geometry.h"
@@ -18,8 +18,14 @@
 
 #define ARCSEC (180.0 * 3600.0 / M_PI)
 
+/* What one evaluation needs: the pair it modifies and the LTCA settings. */
+typedef struct gear_state {
+    gd_pair pair;
+    gd_ltca_settings set;
+} gear_state;
+
 struct gd_opt_gear {
-    gd_case c;               /* the case without its bookkeeping arrays */
+    gear_state s;
     double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
     double A[GD_OPT_GEAR_DIM], b;
     double active_mm;
@@ -42,25 +48,25 @@ GD_API const char *gd_opt_gear_variable(int i, const char **unit, const char **s
     return var_key[i];
 }
 
-GD_API void gd_opt_gear_apply(gd_case *c, const double *x)
+GD_API void gd_opt_gear_apply(gd_pair *pair, const double *x)
 {
-    c->root_relief_amount_um = x[0];
-    c->root_relief_length_mm = x[1];
-    c->tip_relief_amount_um = x[2];
-    c->tip_relief_length_mm = x[3];
-    c->lead_relief_inner_um = x[4];
-    c->lead_relief_outer_um = x[4];
-    c->lead_unmodified_length_mm = x[5];
+    pair->root_relief_amount_um = x[0];
+    pair->root_relief_length_mm = x[1];
+    pair->tip_relief_amount_um = x[2];
+    pair->tip_relief_length_mm = x[3];
+    pair->lead_relief_inner_um = x[4];
+    pair->lead_relief_outer_um = x[4];
+    pair->lead_unmodified_length_mm = x[5];
 }
 
-GD_API void gd_opt_gear_from_case(const gd_case *c, double *x)
+GD_API void gd_opt_gear_from_pair(const gd_pair *pair, double *x)
 {
-    x[0] = c->root_relief_amount_um;
-    x[1] = c->root_relief_length_mm;
-    x[2] = c->tip_relief_amount_um;
-    x[3] = c->tip_relief_length_mm;
-    x[4] = c->lead_relief_inner_um;
-    x[5] = c->lead_unmodified_length_mm;
+    x[0] = pair->root_relief_amount_um;
+    x[1] = pair->root_relief_length_mm;
+    x[2] = pair->tip_relief_amount_um;
+    x[3] = pair->tip_relief_length_mm;
+    x[4] = pair->lead_relief_inner_um;
+    x[5] = pair->lead_unmodified_length_mm;
 }
 
 GD_API void gd_opt_gear_table2(double *x)
@@ -69,24 +75,24 @@ GD_API void gd_opt_gear_table2(double *x)
     memcpy(x, t2, sizeof t2);
 }
 
-GD_API gd_status gd_opt_gear_lte_pp(const gd_case *c, double *lte_pp, gd_error *err)
+GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings *set, double *lte_pp, gd_error *err)
 {
     *lte_pp = NAN;
-    int npos = c->ltca_positions_per_cycle;
+    int npos = set->positions_per_cycle;
     if (npos < 2)
         return gd_error_set(err, GD_ERR_INPUT, "gear-lte: %d LTCA positions per cycle (valid: >= 2)", npos);
-    if (!(c->torque_nm > 0))
-        return gd_error_set(err, GD_ERR_INPUT, "gear-lte: a pinion torque of %g N m (valid: > 0)", c->torque_nm);
+    if (!(set->torque_nm > 0))
+        return gd_error_set(err, GD_ERR_INPUT, "gear-lte: a pinion torque of %g N m (valid: > 0)", set->torque_nm);
     gd_ltca *w;
-    gd_status st = gd_ltca_create(c, &w, err);
+    gd_status st = gd_ltca_create(pair, set, &w, err);
     if (st != GD_OK)
         return st;
-    const double tau = 2 * M_PI / (double)c->teeth_pinion; /* as TCA's tau1 */
+    const double tau = 2 * M_PI / (double)pair->teeth_pinion; /* as TCA's tau1 */
     double lo = INFINITY, hi = -INFINITY;
     for (int k = 0; k < npos && st == GD_OK; k++) {
         double phi1 = tau * k / npos;
         gd_ltca_position pos;
-        st = gd_ltca_solve_at(w, phi1, c->torque_nm, &pos, err);
+        st = gd_ltca_solve_at(w, phi1, set->torque_nm, &pos, err);
         if (st == GD_OK) {
             double v = pos.lte * ARCSEC;
             lo = fmin(lo, v);
@@ -103,11 +109,11 @@ GD_API gd_status gd_opt_gear_lte_pp(const gd_case *c, double *lte_pp, gd_error *
 
 static gd_status state_alloc(void *user, void **state, gd_error *err)
 {
-    gd_case *c = malloc(sizeof *c);
-    if (!c)
+    gear_state *s = malloc(sizeof *s);
+    if (!s)
         return gd_error_set(err, GD_ERR_NOMEM, "gear-lte: out of memory");
-    *c = ((const gd_opt_gear *)user)->c;
-    *state = c;
+    *s = ((const gd_opt_gear *)user)->s;
+    *state = s;
     return GD_OK;
 }
 
@@ -115,9 +121,9 @@ static void state_free(void *state) { free(state); }
 
 static gd_status gear_eval(void *state, const double *y, double *f, gd_error *err)
 {
-    gd_case *c = state;
-    gd_opt_gear_apply(c, y);
-    gd_status st = gd_opt_gear_lte_pp(c, f, err);
+    gear_state *s = state;
+    gd_opt_gear_apply(&s->pair, y);
+    gd_status st = gd_opt_gear_lte_pp(&s->pair, &s->set, f, err);
     if (st != GD_OK)
         return gd_error_prefix(err, "gear-lte at y1..y5, y7 = %g um, %g mm, %g um, %g mm, %g um, %g mm", y[0], y[1],
                                y[2], y[3], y[4], y[5]);
@@ -143,7 +149,7 @@ GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g) { return g->ac
 
 GD_API void gd_opt_gear_free(gd_opt_gear *g) { free(g); }
 
-void opt_gear_case_bounds(const gd_case *c, double lo[6], double hi[6])
+GD_API void gd_opt_gear_bounds(const gd_case *c, double lo[6], double hi[6])
 {
     lo[0] = c->opt_root_amount_min_um;
     hi[0] = c->opt_root_amount_max_um;
@@ -159,12 +165,11 @@ void opt_gear_case_bounds(const gd_case *c, double lo[6], double hi[6])
     hi[5] = c->opt_lead_length_max_mm;
 }
 
-int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *active_mm, const char **bad_key,
-                     double *xbad, gd_error *err)
+int opt_gear_box(const gd_pair *pair, const double lower[6], const double upper[6], double *active_mm,
+                 const char **bad_key, double *xbad, gd_error *err)
 {
-    opt_gear_case_bounds(c, lower, upper);
     gd_geometry g;
-    if (gd_geometry_compute(c, &g, err) != GD_OK)
+    if (gd_geometry_compute(pair, &g, err) != GD_OK)
         return -2;
     *active_mm = (g.rho_a[0] - g.rho_sap[0]) * 1e3;
     double A[GD_OPT_GEAR_DIM] = {0, 1, 0, 1, 0, 0}, b = *active_mm;
@@ -179,7 +184,7 @@ int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *act
     double anchor[GD_OPT_GEAR_DIM];
     if (gd_opt_problem_check(&p, anchor, err) != GD_OK)
         return -3;
-    gd_case t = *c;
+    gd_pair t = *pair;
     for (int corner = 0; corner < 1 << GD_OPT_GEAR_DIM; corner++) {
         double y[GD_OPT_GEAR_DIM];
         for (int i = 0; i < GD_OPT_GEAR_DIM; i++)
@@ -194,18 +199,20 @@ int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *act
     return -1;
 }
 
-GD_API gd_status gd_opt_gear_create(const gd_case *c, gd_opt_gear **out, gd_error *err)
+GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const double lower[6],
+                                    const double upper[6], gd_opt_gear **out, gd_error *err)
 {
     *out = NULL;
     gd_opt_gear *g = calloc(1, sizeof *g);
     if (!g)
         return gd_error_set(err, GD_ERR_NOMEM, "gear-lte: out of memory");
-    g->c = *c;
-    g->c.src = NULL;
-    g->c.src_line = NULL;
+    g->s.pair = *pair;
+    g->s.set = *set;
+    memcpy(g->lower, lower, sizeof g->lower);
+    memcpy(g->upper, upper, sizeof g->upper);
     const char *bad = NULL;
     double xb[GD_OPT_GEAR_DIM];
-    int corner = opt_gear_box(c, g->lower, g->upper, &g->active_mm, &bad, xb, err);
+    int corner = opt_gear_box(pair, g->lower, g->upper, &g->active_mm, &bad, xb, err);
     if (corner != -1) {
         free(g);
         if (corner >= 0)

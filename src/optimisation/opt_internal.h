@@ -43,14 +43,12 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
 gd_status opt_nlopt(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 
-/* The [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
-void opt_gear_case_bounds(const gd_case *c, double lo[6], double hi[6]);
-/* The gear box of the case (gear_objective.c): its bounds and the constraint's right side, and the
- * first corner of the box (bit i: variable i at its upper bound) that fails gd_modification_check
- * once repaired, with the failing [modification] key and the repaired corner; -1 if every corner
- * fits, -2 / -3 if the geometry or the problem is bad (err set). */
-int opt_gear_box(const gd_case *c, double lower[6], double upper[6], double *active_mm, const char **bad_key,
-                     double *xbad, gd_error *err);
+/* The gear box [lower, upper] on the pair (gear_objective.c): the constraint's right side (the
+ * active profile), and the first corner of the box (bit i: variable i at its upper bound) that
+ * fails gd_modification_check once repaired, with the failing [modification] key and the repaired
+ * corner; -1 if every corner fits, -2 / -3 if the geometry or the problem is bad (err set). */
+int opt_gear_box(const gd_pair *pair, const double lower[6], const double upper[6], double *active_mm,
+                 const char **bad_key, double *xbad, gd_error *err);
 
 /* threads to use for a request (0: the OpenMP default), at least 1 */
 int opt_threads(int requested);

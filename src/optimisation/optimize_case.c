@@ -101,14 +101,14 @@ static const char *gear_key(int i, int upper)
     return keys[i][upper];
 }
 
-static gd_status check_gear(gd_case *c, gd_error *err)
+static gd_status check_gear(gd_case *c, const gd_pair *pair, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     double lo[6], hi[6], active;
     /* bounds in order */
     {
         double l[6], h[6];
-        opt_gear_case_bounds(c, l, h);
+        gd_opt_gear_bounds(c, l, h);
         for (int i = 0; i < 6; i++)
             if (!(l[i] < h[i])) {
                 int up = gd_case_key_given(c, "optimize", gear_key(i, 1)) ||
@@ -127,7 +127,8 @@ static gd_status check_gear(gd_case *c, gd_error *err)
     const char *bad = NULL;
     double xb[6];
     gd_error e2 = {0};
-    int corner = opt_gear_box(c, lo, hi, &active, &bad, xb, &e2);
+    gd_opt_gear_bounds(c, lo, hi);
+    int corner = opt_gear_box(pair, lo, hi, &active, &bad, xb, &e2);
     if (corner == -1)
         return GD_OK;
     if (corner < 0) {
@@ -318,7 +319,7 @@ static gd_status resolve_targets(gd_case *c, const objective_kinds *ok, gd_error
     return GD_OK;
 }
 
-GD_API gd_status gd_opt_resolve_case(gd_case *c, gd_error *err)
+GD_API gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
 {
     int compare = c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS;
     objective_kinds ok;
@@ -332,6 +333,6 @@ GD_API gd_status gd_opt_resolve_case(gd_case *c, gd_error *err)
     if (st == GD_OK)
         st = resolve_targets(c, &ok, err);
     if (st == GD_OK && ok.gear)
-        st = check_gear(c, err);
+        st = check_gear(c, pair, err);
     return st;
 }

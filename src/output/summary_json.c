@@ -1,6 +1,7 @@
 /* summary.json: the resolved case, derived values, solver statistics and results (jansson). */
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_scene.h"
 
 #include "json_util.h"
 #include "../case/case_keys.h"
@@ -41,7 +42,8 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
-    if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
+    const gd_pair pair = gd_pair_from_case(c);
+    if (gd_geometry_compute(&pair, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
         json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
         json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * 180 / M_PI));

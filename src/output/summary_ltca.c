@@ -3,6 +3,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_scene.h"
 
 #include "json_util.h"
 
@@ -39,12 +40,13 @@ static json_t *ltca_derived_json(const gd_case *c, const gd_ltca_result *r)
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
-    if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
+    const gd_pair pair = gd_pair_from_case(c);
+    if (gd_geometry_compute(&pair, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
         json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * deg));
         json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
         json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
-        json_object_set_new(geo, "iso6336_mesh_stiffness_n_per_m", gd_json_num(gd_iso6336_mesh_stiffness(c, &g)));
+        json_object_set_new(geo, "iso6336_mesh_stiffness_n_per_m", gd_json_num(gd_iso6336_mesh_stiffness(&pair, &g)));
         json_object_set_new(der, "geometry", geo);
     }
     json_object_set_new(der, "normal_force_n", gd_json_num(r->normal_force_n));

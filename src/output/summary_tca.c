@@ -3,6 +3,7 @@
 #include "geardyn/gd_output.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_scene.h"
 
 #include "json_util.h"
 #include "../case/case_keys.h"
@@ -18,7 +19,8 @@ static json_t *tca_derived_json(const gd_case *c)
     gd_geometry g;
     gd_error e2;
     json_t *der = json_object();
-    if (gd_geometry_compute(c, &g, &e2) == GD_OK) {
+    const gd_pair pair = gd_pair_from_case(c);
+    if (gd_geometry_compute(&pair, &g, &e2) == GD_OK) {
         json_t *geo = json_object();
         json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
         json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * deg));

@@ -277,7 +277,8 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
 {
     memset(m, 0, sizeof *m);
     gd_geometry g;
-    gd_status st = gd_geometry_compute(c, &g, err);
+    const gd_pair pair = gd_pair_from_case(c);
+    gd_status st = gd_geometry_compute(&pair, &g, err);
     if (st != GD_OK)
         return st;
     if (c->model == GD_MODEL_TORSIONAL && c->half_phase_deg != 0.0)
@@ -349,7 +350,9 @@ GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *er
     if (c->stiffness != GD_STIFF_LTCA && !c->impact)
         return GD_OK;
     const gd_ltca_excitation *x;
-    gd_status st = gd_ltca_excitation_cached(c, &x, err);
+    const gd_pair pair = gd_pair_from_case(c);
+    const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+    gd_status st = gd_ltca_excitation_cached(&pair, &set, &x, err);
     if (st != GD_OK)
         return st;
     st = apply_excitation(c, m, x, err);

@@ -15,7 +15,8 @@
 static gd_status resolve_geometry(gd_case *c, gd_geometry *g, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    gd_status st = gd_geometry_compute(c, g, err);
+    const gd_pair pair = gd_pair_from_case(c);
+    gd_status st = gd_geometry_compute(&pair, g, err);
     if (st != GD_OK) {
         if (st == GD_ERR_GEOMETRY && g->bad_key) {
             gd_case_key_where(c, "gear", g->bad_key, w, sizeof w);
@@ -57,7 +58,8 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
         }
     }
     const char *mkey = NULL;
-    if (gd_modification_check(c, g, &mkey, err) != GD_OK) {
+    const gd_pair pair = gd_pair_from_case(c);
+    if (gd_modification_check(&pair, g, &mkey, err) != GD_OK) {
         gd_case_key_where(c, "modification", mkey, w, sizeof w);
         return gd_error_prefix(err, "%s: modification.%s", w, mkey);
     }
@@ -77,8 +79,9 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
 static void resolve_bodies(gd_case *c, const gd_geometry *g)
 {
     double m1, i1, m2, i2;
-    gd_body_half(c, g, 0, &m1, &i1);
-    gd_body_half(c, g, 1, &m2, &i2);
+    const gd_pair pair = gd_pair_from_case(c);
+    gd_body_half(&pair, g, 0, &m1, &i1);
+    gd_body_half(&pair, g, 1, &m2, &i2);
     gd_case_key_derive(c, "gear", "pinion_mass_kg", &c->pinion_mass_kg, m1);
     gd_case_key_derive(c, "gear", "gear_mass_kg", &c->gear_mass_kg, m2);
     gd_case_key_derive(c, "gear", "pinion_inertia_kgm2", &c->pinion_inertia_kgm2, i1);
@@ -105,7 +108,9 @@ static gd_status resolve_ltca(gd_case *c, gd_error *err)
                             "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
     }
     const gd_ltca_excitation *x;
-    gd_status sx = gd_ltca_excitation_cached(c, &x, err);
+    const gd_pair pair = gd_pair_from_case(c);
+    const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+    gd_status sx = gd_ltca_excitation_cached(&pair, &set, &x, err);
     if (sx != GD_OK)
         return gd_error_prefix(err, "%s", c->path[0] ? c->path : "case");
     if (c->stiffness == GD_STIFF_LTCA)
@@ -119,17 +124,18 @@ static gd_status resolve_ltca(gd_case *c, gd_error *err)
  * fraction of the rectangular stiffness, which must leave the low level positive. */
 static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *err)
 {
+    const gd_pair pair = gd_pair_from_case(c);
     if (c->stiffness == GD_STIFF_LTCA || c->impact) {
         gd_status st = resolve_ltca(c, err);
         if (st != GD_OK)
             return st;
     }
     if (c->stiffness != GD_STIFF_LTCA)
-        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, g));
+        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(&pair, g));
     gd_case_key_derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
-           gd_groove_shaft_stiffness(c, g, 0));
+           gd_groove_shaft_stiffness(&pair, g, 0));
     gd_case_key_derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,
-           gd_groove_shaft_stiffness(c, g, 1));
+           gd_groove_shaft_stiffness(&pair, g, 1));
     double frac = g->eps_alpha - floor(g->eps_alpha);
     if (frac < 0.02 || frac > 0.98)
         frac = 0.5;
