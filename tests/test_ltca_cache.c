@@ -1,7 +1,7 @@
 /* The LTCA cache of the dynamic model's excitations (gd_excitation.h, src/excitation/):
  *  1. the key: gd_ltca_cache_key is the FNV-1a hash of exactly the bytes gd_ltca_cache_key_bytes
- *     gives (the same hash as before they were exposed); the bytes ignore the speed and follow the
- *     torque and the positions;
+ *     gives; the bytes ignore the speed and the padding of the settings, and follow the torque and
+ *     the positions;
  *  2. repeated identical cases: one computation, the same excitation, one reference each;
  *  3. entries are told apart by their full key: with every hash forced equal, two cases are still
  *     two entries with their own excitations, each found again;
@@ -67,19 +67,39 @@ static void key_bytes(void)
     gd_case a, b, d;
     if (small_case(&a, 300, 1000) || small_case(&b, 300, 4000) || small_case(&d, 310, 1000))
         return;
-    size_t n = gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, NULL, 0);
+    const gd_pair pa = gd_pair_from_case(&a), pb = gd_pair_from_case(&b), pd = gd_pair_from_case(&d);
+    const gd_ltca_settings sa = gd_ltca_settings_from_case(&a), sb = gd_ltca_settings_from_case(&b),
+                           sd = gd_ltca_settings_from_case(&d);
+    size_t n = gd_ltca_cache_key_bytes(&pa, &sa, 0, NULL, 0);
     unsigned char *ka = malloc(n), *kb = malloc(n), *kd = malloc(n);
-    size_t nb = gd_ltca_cache_key_bytes(PAIR_OF(&b), LTCA_SET_OF(&b), 0, kb, n), nd = gd_ltca_cache_key_bytes(PAIR_OF(&d), LTCA_SET_OF(&d), 0, kd, n);
-    tap_ok(n > 100 && gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, ka, n) == n, "key bytes: %zu of them, the size asked first", n);
-    tap_ok(fnv1a(ka, n) == gd_ltca_cache_key(PAIR_OF(&a), LTCA_SET_OF(&a), 0), "gd_ltca_cache_key is FNV-1a of the key bytes (%016llx)",
-           (unsigned long long)gd_ltca_cache_key(PAIR_OF(&a), LTCA_SET_OF(&a), 0));
+    size_t nb = gd_ltca_cache_key_bytes(&pb, &sb, 0, kb, n), nd = gd_ltca_cache_key_bytes(&pd, &sd, 0, kd, n);
+    tap_ok(n > 100 && gd_ltca_cache_key_bytes(&pa, &sa, 0, ka, n) == n, "key bytes: %zu of them, the size asked first",
+           n);
+    tap_ok(fnv1a(ka, n) == gd_ltca_cache_key(&pa, &sa, 0), "gd_ltca_cache_key is FNV-1a of the key bytes (%016llx)",
+           (unsigned long long)gd_ltca_cache_key(&pa, &sa, 0));
     tap_ok(nb == n && memcmp(ka, kb, n) == 0, "key bytes: the same at another speed");
     tap_ok(nd == n && memcmp(ka, kd, n) != 0, "key bytes: differ with the torque");
-    tap_ok(gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 4, kd, n) == n && memcmp(ka, kd, n) != 0,
+    tap_ok(gd_ltca_cache_key_bytes(&pa, &sa, 4, kd, n) == n && memcmp(ka, kd, n) != 0,
            "key bytes: differ with the positions (4 instead of the case's 2)");
     unsigned char few[8] = {0};
-    tap_ok(gd_ltca_cache_key_bytes(PAIR_OF(&a), LTCA_SET_OF(&a), 0, few, sizeof few) == n && memcmp(few, "geardyn-", 8) == 0,
+    tap_ok(gd_ltca_cache_key_bytes(&pa, &sa, 0, few, sizeof few) == n && memcmp(few, "geardyn-", 8) == 0,
            "key bytes: a short buffer gets what fits, the count is still the whole");
+    /* The settings (a double and five ints) end in padding: two copies with the same fields and
+     * different padding bytes give the same key, as the key is written field by field. */
+    gd_ltca_settings lo, hi;
+    memset(&lo, 0x00, sizeof lo);
+    memset(&hi, 0xff, sizeof hi);
+    lo.torque_nm = hi.torque_nm = sa.torque_nm;
+    lo.pinion_axial = hi.pinion_axial = sa.pinion_axial;
+    lo.positions_per_cycle = hi.positions_per_cycle = sa.positions_per_cycle;
+    lo.face_slices = hi.face_slices = sa.face_slices;
+    lo.profile_points = hi.profile_points = sa.profile_points;
+    lo.refine = hi.refine = sa.refine;
+    tap_ok(memcmp(&lo, &hi, sizeof lo) != 0,
+           "settings: %zu bytes, %zu of them fields: the copies differ in their padding", sizeof lo, sizeof lo.torque_nm + 5 * sizeof lo.refine);
+    tap_ok(gd_ltca_cache_key_bytes(&pa, &lo, 0, kb, n) == n && memcmp(ka, kb, n) == 0 &&
+           gd_ltca_cache_key_bytes(&pa, &hi, 0, kd, n) == n && memcmp(ka, kd, n) == 0,
+           "key bytes: the padding of the settings does not reach them");
     free(ka), free(kb), free(kd);
     gd_case_free(&a), gd_case_free(&b), gd_case_free(&d);
 }

@@ -150,7 +150,8 @@ int main(void)
         !lt_case(&cl, 0, "misalignment.axis_cross_plane_arcmin=0.1", NULL)) {
         gd_error e = {0};
         gd_ltca_result rf, rl;
-        if (gd_ltca_run_opts(PAIR_OF(&cf), LTCA_SET_OF(&cf), 16, 0, &rf, &e) == GD_OK && gd_ltca_run_opts(PAIR_OF(&cl), LTCA_SET_OF(&cl), 16, 0, &rl, &e) == GD_OK) {
+        if (gd_ltca_run_opts(PAIR_OF(&cf), LTCA_SET_OF(&cf), 16, 0, &rf, &e) == GD_OK &&
+            gd_ltca_run_opts(PAIR_OF(&cl), LTCA_SET_OF(&cl), 16, 0, &rl, &e) == GD_OK) {
             printf("# delta_c = 0.1': fixed pinion shares %.4f / %.4f, floating %.4f / %.4f (axial shift %.3f um)\n",
                    rf.load_share[0], rf.load_share[1], rl.load_share[0], rl.load_share[1], rl.axial_shift[0] * 1e6);
             tap_ok(fabs(rf.load_share[0] - rf.load_share[1]) > 0.2,

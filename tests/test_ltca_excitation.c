@@ -26,7 +26,8 @@ static void stiffness_api(void)
     double kl[N], kr[N], lte[N], km[2];
     gd_error e = {0};
     gd_ltca_result r;
-    if (gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), N, kl, kr, lte, km, &e) != GD_OK || gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), N, 0, &r, &e) != GD_OK) {
+    if (gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), N, kl, kr, lte, km, &e) != GD_OK ||
+        gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), N, 0, &r, &e) != GD_OK) {
         tap_ok(0, "mesh stiffness: %s", e.msg);
         return;
     }
@@ -78,7 +79,8 @@ static void impact(void)
         tap_ok(0, "excitation: %s", e.msg);
         return;
     }
-    TAP_CLOSE((double)(x.key == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32)), 1.0, 0.0, "the excitation carries its cache key");
+    TAP_CLOSE((double)(x.key == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32)), 1.0, 0.0,
+              "the excitation carries its cache key");
     gd_ltca *w;
     if (gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &e) != GD_OK) {
         tap_ok(0, "workspace: %s", e.msg);
@@ -152,11 +154,14 @@ static void cache_key(void)
     if (lt_case(&c, LT_MIS | LT_MOD, NULL))
         return;
     uint64_t k0 = gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32);
-    tap_ok(k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) && k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 0), "cache key: deterministic, npos <= 0 "
+    tap_ok(k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) &&
+               k0 == gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 0),
+           "cache key: deterministic, npos <= 0 "
            "means the case's 32 positions (%016llx)", (unsigned long long)k0);
     gd_error e = {0};
     gd_case_set_number(&c, "operating.speed_rpm", 7000, &e);
-    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) == k0, "cache key: a new speed at the same torque reuses the LTCA");
+    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) == k0,
+           "cache key: a new speed at the same torque reuses the LTCA");
     struct {
         const char *key;
         double value;
@@ -172,7 +177,8 @@ static void cache_key(void)
     }
     c.pinion_axial = GD_PINION_FIXED;
     tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) != k0, "cache key: changes with support.pinion_axial");
-    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) != gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 64), "cache key: changes with the positions");
+    tap_ok(gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 32) != gd_ltca_cache_key(PAIR_OF(&c), LTCA_SET_OF(&c), 64),
+           "cache key: changes with the positions");
     gd_case_free(&c);
 }
 
@@ -183,7 +189,8 @@ static void refusals(void)
         return;
     gd_error e = {0};
     double k[4];
-    tap_ok(gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), 1, k, NULL, NULL, NULL, &e) == GD_ERR_INPUT, "one position is refused: %s", e.msg);
+    tap_ok(gd_ltca_mesh_stiffness(PAIR_OF(&c), LTCA_SET_OF(&c), 1, k, NULL, NULL, NULL, &e) == GD_ERR_INPUT,
+           "one position is refused: %s", e.msg);
     gd_ltca *w;
     gd_ltca_position p;
     if (gd_ltca_create(PAIR_OF(&c), LTCA_SET_OF(&c), &w, &e) == GD_OK) {

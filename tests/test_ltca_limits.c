@@ -28,7 +28,8 @@ static double lte_gap(gd_case *c, double torque, int floating, double *lte_pp, d
     gd_error e = {0};
     gd_ltca_result r;
     gd_geometry g;
-    if (gd_geometry_compute(PAIR_OF(c), &g, &e) != GD_OK || gd_ltca_run_opts(PAIR_OF(c), LTCA_SET_OF(c), 16, 0, &r, &e) != GD_OK) {
+    if (gd_geometry_compute(PAIR_OF(c), &g, &e) != GD_OK ||
+        gd_ltca_run_opts(PAIR_OF(c), LTCA_SET_OF(c), 16, 0, &r, &e) != GD_OK) {
         tap_ok(0, "LTCA at %g N m: %s", torque, e.msg);
         return NAN;
     }

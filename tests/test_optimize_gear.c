@@ -44,7 +44,8 @@ int main(void)
     /* the objective at Table 2 against the ltca analysis */
     double f;
     gd_ltca_result r;
-    if (gd_opt_gear_lte_pp(PAIR_OF(&c), LTCA_SET_OF(&c), &f, &e) == GD_OK && gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), 0, 0, &r, &e) == GD_OK) {
+    if (gd_opt_gear_lte_pp(PAIR_OF(&c), LTCA_SET_OF(&c), &f, &e) == GD_OK &&
+        gd_ltca_run_opts(PAIR_OF(&c), LTCA_SET_OF(&c), 0, 0, &r, &e) == GD_OK) {
         tap_ok(f == r.lte_pp_arcsec, "objective at Table 2 = LTE amplitude of gd_ltca_run: %.15g vs %.15g arcsec", f,
                r.lte_pp_arcsec);
         gd_ltca_result_free(&r);

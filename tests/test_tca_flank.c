@@ -76,7 +76,8 @@ static void flanks(const gd_case *c, int half, gd_flank *f1, gd_flank *f2)
 {
     gd_geometry g;
     gd_error err = {0};
-    if (gd_geometry_compute(PAIR_OF(c), &g, &err) != GD_OK || gd_flank_pinion(PAIR_OF(c), &g, half, f1, &err) != GD_OK ||
+    if (gd_geometry_compute(PAIR_OF(c), &g, &err) != GD_OK ||
+        gd_flank_pinion(PAIR_OF(c), &g, half, f1, &err) != GD_OK ||
         gd_flank_gear(PAIR_OF(c), &g, half, f2, &err) != GD_OK) {
         printf("Bail out! %s\n", err.msg);
         exit(1);

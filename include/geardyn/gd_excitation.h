@@ -17,8 +17,8 @@ extern "C" {
  * (gd_ltca_cache_key_bytes), not by the hash alone. The cache keeps 16 excitations nobody holds
  * (the least recently used goes first) and never frees a held one: while more are held at once it
  * grows. On failure *out is NULL and there is nothing to release. */
-GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set, const gd_ltca_excitation **out,
-                                           gd_error *err);
+GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set,
+                                           const gd_ltca_excitation **out, gd_error *err);
 /* Give back a reference from gd_ltca_excitation_cached (NULL: nothing). The excitation stays
  * cached for the next caller with the same inputs until the cache needs its slot. */
 GD_API void gd_ltca_excitation_release(const gd_ltca_excitation *x);

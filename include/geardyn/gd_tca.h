@@ -122,8 +122,8 @@ GD_API void gd_tca_topography(const gd_tca *t, int half, int *nprof, int *nface,
                               const double **sep, const double **ease_off);
 GD_API void gd_tca_topography_reset(gd_tca *t);
 
-/* The `tca` analysis of a case: every half over [solver] tca_cycles mesh cycles with
- * tca_positions_per_cycle positions per cycle. */
+/* The `tca` analysis: every half over set->cycles mesh cycles with set->positions_per_cycle
+ * positions per cycle, by set->formulation. */
 typedef struct gd_tca_result {
     int halves, npos, nprof, nface;
     double *phi1;                   /* npos */

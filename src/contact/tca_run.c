@@ -294,9 +294,10 @@ static int alloc_result(const gd_tca *t, const gd_tca_settings *set, int npos, g
     return ok;
 }
 
-/* The contact of half h at position k by the formulation of the case (separation always, for the
+/* The contact of half h at position k by the formulation of the settings (separation always, for the
  * topography), and with both the largest difference of their transmission errors. */
-static gd_status contact_at_position(gd_tca *t, const gd_tca_settings *set, int h, int k, gd_tca_result *r, gd_error *err)
+static gd_status contact_at_position(gd_tca *t, const gd_tca_settings *set, int h, int k, gd_tca_result *r,
+                                     gd_error *err)
 {
     gd_tca_contact cb;
     gd_status st = tca_separation(t, h, r->phi1[k], &cb, err);

@@ -110,8 +110,8 @@ static entry *slot_for_new(void)
     return e;
 }
 
-GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set, const gd_ltca_excitation **out,
-                                           gd_error *err)
+GD_API gd_status gd_ltca_excitation_cached(const gd_pair *pair, const gd_ltca_settings *set,
+                                           const gd_ltca_excitation **out, gd_error *err)
 {
     *out = NULL;
     int npos = set->positions_per_cycle;

@@ -131,7 +131,8 @@ static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *e
             return st;
     }
     if (c->stiffness != GD_STIFF_LTCA)
-        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(&pair, g));
+        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m,
+                           gd_iso6336_mesh_stiffness(&pair, g));
     gd_case_key_derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
            gd_groove_shaft_stiffness(&pair, g, 0));
     gd_case_key_derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,
