@@ -69,7 +69,8 @@ typedef struct gd_ltca gd_ltca;
 /* The load, the pinion's axial support and the discretisation of LTCA (the case's
  * operating.torque_nm, support.pinion_axial and [solver] ltca_* and tca_* keys). */
 typedef struct gd_ltca_settings {
-    double torque_nm;        /* pinion torque over both halves (> 0; gd_ltca_run and the excitations) */
+    double torque_nm;        /* pinion torque over both halves (> 0): the load of gd_ltca_run and the
+                                excitations; gd_ltca_create sizes its first gap window by it */
     int pinion_axial;        /* gd_pinion_axial (gd_case.h): floating or fixed */
     int positions_per_cycle; /* pinion positions per mesh cycle */
     int face_slices;         /* slices per half: the face grid of the TCA under it */
@@ -79,7 +80,8 @@ typedef struct gd_ltca_settings {
 
 /* Workspace of one pair: TCA workspace, tooth compliance tables, matrices; create once, solve
  * many positions (not thread-safe: one per thread). set->face_slices sets the slices per half (the
- * TCA face grid), set->pinion_axial the axial support of the pinion; the torque is given per solve. */
+ * TCA face grid), set->pinion_axial the axial support of the pinion; the torque of a solve is its
+ * argument (set->torque_nm only sizes the first gap window). */
 GD_API gd_status gd_ltca_create(const gd_pair *pair, const gd_ltca_settings *set, gd_ltca **out, gd_error *err);
 GD_API void gd_ltca_free(gd_ltca *w);
 /* Solve one position under a pinion torque (N m, > 0). The points stay valid until the next
