@@ -36,7 +36,7 @@ static const cli_help commands[] = {
      "the filters.",
      {{"--from S", "only events at or after time S (seconds)"},
       {"--to S", "only events at or before time S (seconds)"},
-      {"--clearance NAME", "only one clearance, as named in the log (mesh-L, mesh-R, bearing-1, ...)"},
+      {"--clearance NAME", "only one clearance, as named in the log: mesh (torsional), mesh-L, mesh-R, bearing-1L, bearing-1R, bearing-2L, bearing-2R"},
       {"--kind KIND", "only one kind: contact, separation, back-contact or back-separation"},
       {"--recorded", "only the recorded window (no transient)"},
       {"--csv OUT", "also write the selected rows to OUT"}}},
