@@ -1,7 +1,6 @@
 /* The LTCA cache of the dynamic model's excitations (gd_excitation.h, src/excitation/):
  *  1. the key: gd_ltca_cache_key is the FNV-1a hash of exactly the bytes gd_ltca_cache_key_bytes
- *     gives (the same hash as before they were exposed); the bytes ignore the speed and follow the
- *     torque and the positions;
+ *     gives; the bytes ignore the speed and follow the torque and the positions;
  *  2. repeated identical cases: one computation, the same excitation, one reference each;
  *  3. entries are told apart by their full key: with every hash forced equal, two cases are still
  *     two entries with their own excitations, each found again;
