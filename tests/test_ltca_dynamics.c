@@ -1,4 +1,4 @@
-/* The LTCA excitations in the dynamic model (issue: stiffness = ltca, impact = on):
+/* The LTCA excitations in the dynamic model (excitation.stiffness = ltca, excitation.impact = on):
  * the model's stiffness passes through every LTCA sample of each half; the derived mean mesh
  * stiffness is the halves' mean; LTCA is computed once for a sweep over speed (cache); the impact
  * force follows the energy balance F_s = v_s sqrt(m k_s), grows with speed as v_s does, and tip

@@ -13,7 +13,7 @@
  *     plate's stiffness under the line loads a contact line makes (along the face at one height,
  *     across the height, segments ending inside the face) within 7 % on the teeth of the spur pair
  *     30/72 and of the virtual spur gears of the paper's helical teeth (49 and 117 teeth); the
- *     former uniform decay length 2h/pi overestimates it by more than 20 % on the lines low on the
+ *     uniform decay length 2h/pi (a shear membrane's) overestimates it by more than 20 % on the lines low on the
  *     tooth, so the test tells the two apart. */
 #include "geardyn/geardyn.h"
 #include "pair_util.h"

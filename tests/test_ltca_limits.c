@@ -7,7 +7,7 @@
  *  2. the results converge as the face is sliced finer (11, 21, 41, 81 slices per half): the mean
  *     mesh stiffness and the mean LTE at 11, 21 and 41 slices against 81 (with the face kernel
  *     averaged over the slices a uniform line load is exact at any slicing, so what remains is the
- *     resolution of the line ends: small, and no longer a clean power of the spacing), and the
+ *     resolution of the line ends: small, and not a clean power of the spacing), and the
  *     LTE amplitude;
  *  3. the mean stiffness over the cycle does not depend on the number of positions. */
 #include "ltca_util.h"

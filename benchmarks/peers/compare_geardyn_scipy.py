@@ -92,7 +92,7 @@ def scene(exe, label, case, extra, periods, rtols_g, rtols_s, naive_rtols, tmp):
     print("|---|---|---|---|---|---|---|---|---|")
     # the samples (RMS) from geardyn's septic dense output, or on step ends (solver.exact_samples): SciPy's
     # come from its own dense output (t_eval); the cheapest geardyn setting that reaches a target counts
-    # ERK8 is Verner's 8(7) (the default), ERK8F Fehlberg's 7(8) (the default until session 7)
+    # ERK8 is Verner's 8(7) (the default), ERK8F Fehlberg's 7(8)
     methods = (("ERK5", "solver.order=5"), ("ERK8", "solver.order=8"), ("ERK8F", "solver.table=ARKODE_FEHLBERG_13_7_8"))
     for label, how in methods:
         for exact in ("off", "on"):

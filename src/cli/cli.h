@@ -63,5 +63,6 @@ int run_optimize(const cli_case_args *a, gd_case *c, const char *dir);
 int run_compare(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
+int cmd_keys(int argc, char **argv);
 
 #endif

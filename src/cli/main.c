@@ -1,5 +1,6 @@
 /* geardyn: the command-line tool. Dispatches to the subcommands. */
 #include "cli.h"
+#include "help.h"
 #include "sweep_mpi.h"
 
 #include <gsl/gsl_errno.h>
@@ -7,24 +8,13 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const char *usage =
-    "usage: geardyn COMMAND [ARGS]\n"
-    "\n"
-    "  geardyn run CASE [--set section.key=value ...] [--out DIR] [--quiet]\n"
-    "                   [--threads N] [--resume]\n"
-    "        run the scene of a case file; results, tables and pictures go to DIR\n"
-    "        (default: [output] directory, else results/<case name>)\n"
-    "        sweeps: --threads N OpenMP threads (default: all), --resume finishes an\n"
-    "        interrupted sweep; mpirun -n N geardyn run ... spreads one over N ranks\n"
-    "  geardyn check CASE [--set section.key=value ...]\n"
-    "        validate a case and print every resolved parameter with its unit and source\n"
-    "  geardyn events FILE [--from S] [--to S] [--clearance NAME] [--kind KIND]\n"
-    "                      [--recorded] [--csv OUT]\n"
-    "        summarise an event log (events.csv): counts per clearance and kind, impact\n"
-    "        regime, impact velocities; filter by time window, clearance and kind\n"
-    "  geardyn --help | --version\n"
-    "\n"
-    "Exit status: 0 success, 2 bad input (case file, option, value), 1 any other failure.\n";
+/* The commands; their text is in help.c. */
+static const struct {
+    const char *name;
+    int (*fn)(int argc, char **argv);
+} commands[] = {
+    {"run", cmd_run}, {"check", cmd_check}, {"events", cmd_events}, {"keys", cmd_keys}, {"help", cmd_help},
+};
 
 int cli_fail(const gd_error *err)
 {
@@ -43,12 +33,12 @@ int main(int argc, char **argv)
     atexit(cli_mpi_finalize);
 #endif
     if (argc < 2) {
-        fputs(usage, stderr);
+        cli_help_usage(stderr);
         return 2;
     }
     const char *cmd = argv[1];
-    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0 || strcmp(cmd, "help") == 0) {
-        fputs(usage, stdout);
+    if (strcmp(cmd, "--help") == 0 || strcmp(cmd, "-h") == 0) {
+        cli_help_usage(stdout);
         return 0;
     }
     if (strcmp(cmd, "--version") == 0) {
@@ -56,12 +46,16 @@ int main(int argc, char **argv)
                GD_HAVE_MPI ? "on" : "off");
         return 0;
     }
-    if (strcmp(cmd, "run") == 0)
-        return cmd_run(argc - 1, argv + 1);
-    if (strcmp(cmd, "check") == 0)
-        return cmd_check(argc - 1, argv + 1);
-    if (strcmp(cmd, "events") == 0)
-        return cmd_events(argc - 1, argv + 1);
-    fprintf(stderr, "geardyn: unknown command '%s'\n\n%s", cmd, usage);
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        if (strcmp(cmd, commands[i].name) != 0)
+            continue;
+        if (argc > 2 && (strcmp(argv[2], "--help") == 0 || strcmp(argv[2], "-h") == 0)) {
+            cli_help_print(stdout, cli_help_find(cmd));
+            return 0;
+        }
+        return commands[i].fn(argc - 1, argv + 1);
+    }
+    fprintf(stderr, "geardyn: unknown command '%s'\n\n", cmd);
+    cli_help_usage(stderr);
     return 2;
 }

@@ -43,7 +43,7 @@ static void spring(gd_model *m, int i, int j, double k, double c)
 /* Reorder the entries of a sparse list so that consecutive entries act on different rows (the
  * first entry of every row, then the second of every row, ...), keeping the order within each row.
  * The RHS subtracts the entries from the rows in list order: each row sees the same operations in
- * the same order (the same bits), and consecutive updates no longer wait for each other. */
+ * the same order (the same bits), and consecutive updates do not wait for each other. */
 static void interleave_rows(gd_nz *list, int n)
 {
     gd_nz out[GD_MAX_NNZ];

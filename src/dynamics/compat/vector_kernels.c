@@ -7,7 +7,7 @@
  * selectable at run time: solver.vector_kernels = geardyn (the default) or sundials.
  *
  * Why this file exists (docs/performance.md, "Where the time goes"): Debian 12's SUNDIALS 6.4.1
- * is built without optimisation (-O0), and its serial vector kernels were 57 % of all
+ * is built without optimisation (-O0), and its serial vector kernels are 57 % of all
  * instructions of a bta run (N_VLinearCombination_Serial alone 44 %: about 2 300 instructions
  * per stage sum of 20-element vectors). SUNDIALS' vector interface is an operations table that a
  * program may fill with its own implementations (the documented route for custom N_Vectors);
