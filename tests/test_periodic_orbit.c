@@ -140,8 +140,8 @@ static void linear_limit(void)
     }
     printf("# continuation 0.5 -> 1.5: %d points, %ld Newton iterations, %d bifurcations, end: %s\n", br.npoints,
            br.newton_iterations, br.nbif, br.end_reason);
-    tap_ok(br.end == GD_END_BOUND && pmax > 1.45 && br.nbif == 0,
-           "linear continuation reaches Omega %.4g (bound 1.5) with no bifurcation (%d)", pmax, br.nbif);
+    tap_ok(br.end == GD_END_BOUND && fabs(pmax - 1.5) < 1e-12 && br.nbif == 0,
+           "linear continuation ends on the bound Omega 1.5 (%.15g) with no bifurcation (%d)", pmax, br.nbif);
     TAP_CLOSE(dy, 0.0, 1e-8, "linear continuation: max |y - y_harmonic| over the branch");
     TAP_CLOSE(dmu, 0.0, 1e-8, "linear continuation: max |mu - eig exp(A T)| over the branch");
     gd_branch_free(&br);

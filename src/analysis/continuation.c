@@ -197,6 +197,39 @@ static double adapt(const gd_cont_opts *co, double ds, int iters)
     return ds;
 }
 
+/* The step crossed the bound pb: the last point is the orbit at p = pb, corrected with the
+ * parameter fixed (the bordering row e_p, the predictor on the tangent where it meets pb). */
+static gd_status end_on_bound(cont *c, const double *u, const double *t, double pb, gd_error *err)
+{
+    const int N = c->sh.N;
+    double up[UMAX], u1[UMAX], e[UMAX] = {0};
+    double s = (pb - u[N]) / t[N];
+    for (int i = 0; i <= N; i++)
+        up[i] = u1[i] = u[i] + s * t[i];
+    up[N] = u1[N] = pb;
+    e[N] = 1.0;
+    int iters = 0;
+    gd_error e1 = {0};
+    c->br->corrections++;
+    gd_status st = gd_shoot_correct(&c->sh, u1, e, up, c->co->po.tol, c->co->po.max_iter, &iters, &e1);
+    c->br->newton_iterations += iters;
+    gd_po po;
+    double t1[UMAX];
+    if (st == GD_OK)
+        st = gd_shoot_tangent(&c->sh, t, t1, &e1);
+    if (st == GD_OK)
+        st = gd_shoot_orbit(&c->sh, u1, &po, &e1);
+    c->br->end = GD_END_BOUND;
+    if (st != GD_OK) { /* the branch ends at the last point inside */
+        snprintf(c->br->end_reason, sizeof c->br->end_reason, "the parameter left [%.9g, %.9g] after p = %.9g "
+                 "(no orbit at the bound: %s)", c->co->p_min, c->co->p_max, u[N], e1.msg);
+        return st == GD_ERR_NOMEM ? gd_error_set(err, st, "%s", e1.msg) : GD_OK;
+    }
+    po.iterations = iters;
+    snprintf(c->br->end_reason, sizeof c->br->end_reason, "the bound p = %.9g reached", pb);
+    return push_point(c->br, &po, t1[N], s, err);
+}
+
 static gd_status run(cont *c, const gd_po *start, gd_error *err)
 {
     const gd_cont_opts *co = c->co;
@@ -228,12 +261,8 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
             ds = fmax(0.5 * ds, co->ds_min);
             continue;
         }
-        if (u1[N] < co->p_min || u1[N] > co->p_max) {
-            c->br->end = GD_END_BOUND;
-            snprintf(c->br->end_reason, sizeof c->br->end_reason, "the parameter left [%.9g, %.9g] after p = %.9g",
-                     co->p_min, co->p_max, u[N]);
-            return GD_OK;
-        }
+        if (u1[N] < co->p_min || u1[N] > co->p_max)
+            return end_on_bound(c, u, t, u1[N] < co->p_min ? co->p_min : co->p_max, err);
         if ((t1[N] > 0) != (t[N] > 0))
             st = locate(c, GD_BIF_FOLD, u, t, t[N], ds, err);
         if (st == GD_OK && (pd_test(&po1) > 0) != (pd_test(&po) > 0))
