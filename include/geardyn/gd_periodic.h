@@ -7,8 +7,8 @@
  * event). Its stability comes from the Floquet multipliers, the eigenvalues of the monodromy
  * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
  * follows an orbit in a numeric parameter p, with an adaptive step, and locates by bisection the
- * folds (the tangent's parameter component changes sign) and period doublings (a real multiplier
- * passes -1) between its points. */
+ * folds (the tangent's parameter component changes sign), period doublings (a real multiplier
+ * passes -1) and changes of the contact sequence (grazing) between its points. */
 #ifndef GD_PERIODIC_H
 #define GD_PERIODIC_H
 
@@ -74,14 +74,21 @@ typedef struct gd_cont_opts {
 /* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], 400 points, +1, 1e-8 */
 GD_API void gd_cont_opts_default(gd_cont_opts *co);
 
-typedef enum gd_bif_kind { GD_BIF_FOLD = 0, GD_BIF_PERIOD_DOUBLING = 1 } gd_bif_kind;
+typedef enum gd_bif_kind {
+    GD_BIF_FOLD = 0,           /* saddle-node: the tangent's parameter component changes sign */
+    GD_BIF_PERIOD_DOUBLING = 1, /* a real multiplier passes -1 */
+    GD_BIF_CONTACT_CHANGE = 2  /* the events of a clearance per orbit change in number: a contact appears or
+                                * disappears (through a grazing, where the orbit touches the boundary) */
+} gd_bif_kind;
 GD_API const char *gd_bif_kind_name(int kind);
 
 typedef struct gd_bifurcation {
     int kind;                /* gd_bif_kind */
+    int clearance;           /* the clearance of a contact change (index into model->clear), else -1 */
     double p;                /* parameter at the middle of the final bracket */
-    double p_lo, p_hi;       /* parameter at the ends of the final bracket */
-    double mu_re, mu_im;     /* the critical multiplier at the middle (fold: nearest 1; PD: nearest -1) */
+    double p_lo, p_hi;       /* parameter at the ends of the final bracket (p_lo: the end towards the branch
+                              * point before it, so p_lo > p_hi on a branch running to lower p) */
+    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; else nearest 1) */
     double y[GD_MAX_STATE];  /* Poincare point at the middle */
     int after;               /* index of the branch point before which it lies */
 } gd_bifurcation;

@@ -1,9 +1,10 @@
 /* Pseudo-arclength continuation of a periodic orbit in a parameter (docs/continuation.md section
  * 3): predictor along the unit tangent, Newton corrector on the shooting system bordered by the
  * arclength condition (shooting.c), an adaptive step, and the location by bisection in the
- * arclength of the folds (the tangent's parameter component changes sign) and period doublings
+ * arclength of the folds (the tangent's parameter component changes sign), period doublings
  * (det(M + I), the product of 1 + mu over the multipliers, changes sign: a real multiplier passed
- * -1) found between two points. */
+ * -1) and changes of the contact sequence (the events of a clearance per orbit change in number:
+ * a contact appears or disappears, through a grazing) found between two points. */
 #include "shooting.h"
 
 #include <math.h>
@@ -29,8 +30,8 @@ GD_API void gd_cont_opts_default(gd_cont_opts *co)
 
 GD_API const char *gd_bif_kind_name(int kind)
 {
-    static const char *names[] = {"fold", "period-doubling"};
-    return kind >= 0 && kind <= GD_BIF_PERIOD_DOUBLING ? names[kind] : "?";
+    static const char *names[] = {"fold", "period-doubling", "contact-change"};
+    return kind >= 0 && kind <= GD_BIF_CONTACT_CHANGE ? names[kind] : "?";
 }
 
 GD_API void gd_branch_free(gd_branch *br)
@@ -124,11 +125,30 @@ static void critical_multiplier(const gd_po *po, double target, double *re, doub
     *im = po->mu_im[best];
 }
 
-/* A sign change of the test function of `kind` between (u0, t0, tau0) and the point at arclength
- * ds1: bisection in the arclength from u0 along t0 until the bracket is below locate_tol. */
-static gd_status locate(cont *c, int kind, const double *u0, const double *t0, double tau0, double ds1, gd_error *err)
+/* The test function of `kind` at a point with tangent t and orbit po: its sign changes at the
+ * bifurcation. A change of the contact sequence compares the events of clearance c per orbit with
+ * those of the point before (ref): +1 the same, -1 different. */
+static double test_value(int kind, int c, long ref, const double *t, int N, const gd_po *po)
+{
+    switch (kind) {
+    case GD_BIF_FOLD:
+        return t[N];
+    case GD_BIF_PERIOD_DOUBLING:
+        return pd_test(po);
+    default:
+        return po->events[c] == ref ? 1.0 : -1.0;
+    }
+}
+
+/* A sign change of the test function of `kind` (clearance c for a contact change) between the point
+ * (u0, t0, po0) and the one at arclength ds1: bisection in the arclength from u0 along t0 until the
+ * bracket is below locate_tol. */
+static gd_status locate(cont *c, int kind, int clr, const double *u0, const double *t0, const gd_po *po0, double ds1,
+                        gd_error *err)
 {
     const int N = c->sh.N;
+    const long ref = clr >= 0 ? po0->events[clr] : 0;
+    const double tau0 = test_value(kind, clr, ref, t0, N, po0);
     double lo = 0.0, hi = ds1, p_lo = u0[N], p_hi = NAN;
     double u[UMAX], t[UMAX];
     gd_po po;
@@ -138,8 +158,7 @@ static gd_status locate(cont *c, int kind, const double *u0, const double *t0, d
         gd_status st = step_from(c, u0, t0, mid, u, t, &po, &iters, err);
         if (st != GD_OK)
             return st;
-        double tau = kind == GD_BIF_FOLD ? t[N] : pd_test(&po);
-        if ((tau > 0) == (tau0 > 0))
+        if ((test_value(kind, clr, ref, t, N, &po) > 0) == (tau0 > 0))
             lo = mid, p_lo = u[N];
         else
             hi = mid, p_hi = u[N];
@@ -150,13 +169,31 @@ static gd_status locate(cont *c, int kind, const double *u0, const double *t0, d
     gd_bifurcation b;
     memset(&b, 0, sizeof b);
     b.kind = kind;
+    b.clearance = clr;
     b.p = u[N];
     b.p_lo = p_lo;
     b.p_hi = isnan(p_hi) ? u0[N] + ds1 * t0[N] : p_hi;
-    critical_multiplier(&po, kind == GD_BIF_FOLD ? 1.0 : -1.0, &b.mu_re, &b.mu_im);
+    critical_multiplier(&po, kind == GD_BIF_PERIOD_DOUBLING ? -1.0 : 1.0, &b.mu_re, &b.mu_im);
     memcpy(b.y, po.y[0], sizeof(double) * (size_t)po.n);
     b.after = c->br->npoints;
     return push_bif(c->br, &b, err);
+}
+
+/* Locate every test function that changed sign between (u, t, po) and the point (t1, po1) at
+ * arclength ds. */
+static gd_status detect(cont *c, const double *u, const double *t, const gd_po *po, const double *t1,
+                        const gd_po *po1, double ds, gd_error *err)
+{
+    const int N = c->sh.N;
+    gd_status st = GD_OK;
+    if ((t1[N] > 0) != (t[N] > 0))
+        st = locate(c, GD_BIF_FOLD, -1, u, t, po, ds, err);
+    if (st == GD_OK && (pd_test(po1) > 0) != (pd_test(po) > 0))
+        st = locate(c, GD_BIF_PERIOD_DOUBLING, -1, u, t, po, ds, err);
+    for (int k = 0; k < GD_MAX_CLEAR && st == GD_OK; k++)
+        if (po1->events[k] != po->events[k])
+            st = locate(c, GD_BIF_CONTACT_CHANGE, k, u, t, po, ds, err);
+    return st;
 }
 
 /* the start: the orbit corrected at its parameter, the tangent pointing to co->direction */
@@ -263,10 +300,7 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
         }
         if (u1[N] < co->p_min || u1[N] > co->p_max)
             return end_on_bound(c, u, t, u1[N] < co->p_min ? co->p_min : co->p_max, err);
-        if ((t1[N] > 0) != (t[N] > 0))
-            st = locate(c, GD_BIF_FOLD, u, t, t[N], ds, err);
-        if (st == GD_OK && (pd_test(&po1) > 0) != (pd_test(&po) > 0))
-            st = locate(c, GD_BIF_PERIOD_DOUBLING, u, t, pd_test(&po), ds, err);
+        st = detect(c, u, t, &po, t1, &po1, ds, err);
         if (st == GD_OK)
             st = push_point(c->br, &po1, t1[N], ds, err);
         if (st != GD_OK)
