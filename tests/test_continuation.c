@@ -19,7 +19,10 @@
  * 4. Brute force on both sides of each bifurcation, 0.01 away in Omega, from the branch point
  *    nearest it: on the side where the branch exists the simulation stays on the orbit shooting
  *    finds there (to 1e-6); on the other side it leaves (by more than 1e-2), and beyond the
- *    period doubling it settles on a period-2 orbit (P(y) - y > 1e-3, P^2(y) - y < 1e-6). */
+ *    period doubling it settles on a period-2 orbit (P(y) - y > 1e-3, P^2(y) - y < 1e-6).
+ * 5. Branch switching at the period doubling (alpha 0): the period-2 orbit found 0.01 beyond it is
+ *    stable and is the attractor of simulation there (to 1e-6); its branch, continued to 1.5, has
+ *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -79,7 +82,7 @@ static void stable_points(const char *name, const gd_model *m, const gd_solver_o
             au_die(&e);
         for (int j = 0; j < m->n; j++)
             y[j] = q->y[0][j] + 1e-3;
-        int N = (int)ceil(log(1e-10) / log(q->mu_max));
+        int N = (int)ceil(log(1e-10) / log(q->mu_max)) * q->nper; /* whole orbit periods: back to y[0] */
         if (gd_sim_period_map(&mq, o, y, N, y, NULL, NULL, &e) != GD_OK)
             au_die(&e);
         dmax = fmax(dmax, dist(y, q->y[0], m->n));
@@ -140,6 +143,48 @@ static void both_sides(const char *name, const gd_model *m, const gd_solver_opts
     } else {
         tap_ok(d_out > 1e-2, "%s fold at %.6f: 0.01 beyond, simulation leaves the branch (%.3g)", name, b->p, d_out);
     }
+}
+
+/* 5. branch switching at the period doubling b: the period-2 orbit 0.01 beyond it against settled
+ * simulation (either of its two Poincare points), and its branch continued to 1.5 */
+static void period_two(const char *name, const gd_model *m, const gd_solver_opts *o, const gd_bifurcation *b)
+{
+    gd_error e = {0};
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po p2;
+    if (gd_po_period_doubled(gd_model_at_mesh_frequency, (void *)m, o, &po, b, 0.01, 0.05, &p2, &e) != GD_OK)
+        au_die(&e);
+    gd_model mq;
+    double y[GD_MAX_STATE];
+    memcpy(y, b->y, sizeof y);
+    if (gd_model_at_mesh_frequency(p2.p, &mq, (void *)m, &e) != GD_OK ||
+        gd_sim_period_map(&mq, o, y, 3000, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    double d = fmin(dist(y, p2.y[0], m->n), dist(y, p2.y[1], m->n));
+    printf("# period-2 orbit at Omega %.6f: mu_max %.6f, Newton %d, events %ld\n", p2.p, p2.mu_max, p2.iterations,
+           p2.events[0]);
+    tap_ok(p2.nper == 2 && p2.stable && d < 1e-6 && dist(p2.y[0], p2.y[1], m->n) > 1e-3,
+           "%s: the period-2 orbit switched to at Omega %.6f is stable (%.6f) and the attractor of simulation "
+           "(%.3g)", name, p2.p, p2.mu_max, d);
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.po.nper = 2;
+    co.p_min = 0.5;
+    co.p_max = 1.5;
+    co.ds_max = 0.05;
+    gd_branch br;
+    if (gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co, &p2, &br, &e) != GD_OK)
+        au_die(&e);
+    printf("# the period-2 branch from Omega %.6f: %d points, %d bifurcations, end: %s\n", p2.p, br.npoints, br.nbif,
+           br.end_reason);
+    for (int i = 0; i < br.nbif; i++)
+        printf("#   %s at Omega %.10f, multiplier %.6f%+.6fi\n", gd_bif_kind_name(br.bif[i].kind), br.bif[i].p,
+               br.bif[i].mu_re, br.bif[i].mu_im);
+    char label[200];
+    snprintf(label, sizeof label, "%s, period 2", name);
+    stable_points(label, m, o, &br);
+    gd_branch_free(&br);
 }
 
 /* the bifurcations of kind `kind` of a branch, in branch order */
@@ -218,8 +263,10 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
         both_sides(name, &m, &o, &up, fold[0], -1); /* the upper fold: the branch is stable below it */
         both_sides(name, &m, &o, &up, fold[1], +1); /* the lower fold: the impacting branch is stable above */
     }
-    if (expect_pd && npd == 1)
+    if (expect_pd && npd == 1) {
         both_sides(name, &m, &o, &up, pd[0], -1);
+        period_two(name, &m, &o, pd[0]);
+    }
     gd_branch_free(&up);
     gd_branch_free(&up1);
     gd_branch_free(&down);

@@ -122,6 +122,15 @@ GD_API gd_status gd_continue(gd_model_at_fn model_at, void *ctx, const gd_solver
                              const gd_po *start, gd_branch *br, gd_error *err);
 GD_API void gd_branch_free(gd_branch *br);
 
+/* Branch switching at the period doubling b of a branch of orbits of po->nper mesh periods: the
+ * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp) from the
+ * bifurcation's orbit moved by +-eps along the eigenvector of its multiplier -1. An orbit that
+ * converges back to the period-nper one is refused; GD_ERR_SOLVER when no trial finds a doubled
+ * orbit. out->p is its parameter. */
+GD_API gd_status gd_po_period_doubled(gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o,
+                                      const gd_po_opts *po, const gd_bifurcation *b, double dp, double eps,
+                                      gd_po *out, gd_error *err);
+
 #ifdef __cplusplus
 }
 #endif
