@@ -22,7 +22,10 @@
  *    period doubling it settles on a period-2 orbit (P(y) - y > 1e-3, P^2(y) - y < 1e-6).
  * 5. Branch switching at the period doubling (alpha 0): the period-2 orbit found 0.01 beyond it is
  *    stable and is the attractor of simulation there (to 1e-6); its branch, continued to 1.5, has
- *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6. */
+ *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6.
+ * 6. A brute-force sweep up and down in steps of 0.005 jumps once each way, in the grid interval
+ *    that contains the upper fold (up) and the lower fold (down): the hysteresis interval of the
+ *    sweep is bounded by the two folds. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -187,6 +190,40 @@ static void period_two(const char *name, const gd_model *m, const gd_solver_opts
     gd_branch_free(&br);
 }
 
+/* 6. A brute-force sweep up and down (Omega 0.55 .. 0.80 by 0.005, each point 400 periods from the
+ * state the previous one ended in): the grid interval where the settled Poincare point jumps (by
+ * more than 0.05) contains the fold that ends the branch being followed: the upper fold going up,
+ * the lower fold going down. */
+static void sweep_jumps(const char *name, const gd_case *c, const gd_model *m, const gd_solver_opts *o,
+                        double fold_hi, double fold_lo)
+{
+    gd_error e = {0};
+    for (int dir = 1; dir >= -1; dir -= 2) {
+        double y[GD_MAX_STATE], prev[GD_MAX_STATE], jump_lo = NAN, jump_hi = NAN;
+        gd_modes md;
+        int jumps = 0;
+        if (gd_initial_state(c, m, y, &md, &e) != GD_OK)
+            au_die(&e);
+        for (int k = 0; k <= 50; k++) {
+            double Om = dir > 0 ? 0.55 + 0.005 * k : 0.80 - 0.005 * k;
+            gd_model mq;
+            if (gd_model_at_mesh_frequency(Om, &mq, (void *)m, &e) != GD_OK ||
+                gd_sim_period_map(&mq, o, y, 400, y, NULL, NULL, &e) != GD_OK)
+                au_die(&e);
+            if (k > 0 && dist(y, prev, m->n) > 0.05) {
+                jumps++;
+                jump_lo = Om - 0.005 * dir;
+                jump_hi = Om;
+            }
+            memcpy(prev, y, sizeof prev);
+        }
+        double fold = dir > 0 ? fold_hi : fold_lo;
+        tap_ok(jumps == 1 && (fold - jump_lo) * (fold - jump_hi) < 0,
+               "%s: the sweep %s jumps once (%d), between Omega %.3f and %.3f, around the fold at %.6f", name,
+               dir > 0 ? "up" : "down", jumps, jump_lo, jump_hi, fold);
+    }
+}
+
 /* the bifurcations of kind `kind` of a branch, in branch order */
 static int of_kind(const gd_branch *br, int kind, const gd_bifurcation **out, int max)
 {
@@ -262,6 +299,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     if (nf == 2) {
         both_sides(name, &m, &o, &up, fold[0], -1); /* the upper fold: the branch is stable below it */
         both_sides(name, &m, &o, &up, fold[1], +1); /* the lower fold: the impacting branch is stable above */
+        sweep_jumps(name, &c, &m, &o, fold[0]->p, fold[1]->p);
     }
     if (expect_pd && npd == 1) {
         both_sides(name, &m, &o, &up, pd[0], -1);
