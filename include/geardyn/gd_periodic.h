@@ -62,16 +62,29 @@ typedef gd_status (*gd_model_at_fn)(double p, gd_model *m, void *ctx, gd_error *
  * does) is refused. */
 GD_API gd_status gd_model_at_mesh_frequency(double Omega, gd_model *m, void *ctx, gd_error *err);
 
+/* A gd_model_at_fn whose parameter sets a numeric case key: the key takes the value scale * p, the
+ * case is resolved and the model built again at every call (LTCA excitations come from their
+ * cache), so every speed-dependent part of the model follows (the mesh-in pulse among them).
+ * ctx: a gd_case_param; the case is changed, so one continuation at a time may use it. */
+typedef struct gd_case_param {
+    gd_case *c;
+    const char *key;         /* "operating.speed_rpm", "operating.torque_nm", ... */
+    double scale;            /* key value per unit of p (for the speed: rpm per unit of Omega) */
+} gd_case_param;
+GD_API gd_status gd_model_at_case_key(double p, gd_model *m, void *ctx, gd_error *err);
+
 typedef struct gd_cont_opts {
     gd_po_opts po;
     double p_min, p_max;     /* the branch ends when p leaves [p_min, p_max] */
     double ds, ds_min, ds_max; /* arclength step in (y, p): first, smallest, largest */
+    double dp_max;           /* largest change of p in one step (0: no limit besides ds_max) */
     int max_points;          /* branch points at most (the start included) */
     int direction;           /* +1: set out towards increasing p; -1 decreasing */
     double locate_tol;       /* a bifurcation is located when its arclength bracket is below this */
 } gd_cont_opts;
 
-/* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], 400 points, +1, 1e-8 */
+/* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], no dp_max, 400 points, +1,
+ * locate_tol 1e-8 */
 GD_API void gd_cont_opts_default(gd_cont_opts *co);
 
 typedef enum gd_bif_kind {

@@ -282,17 +282,21 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
     while (c->br->npoints < co->max_points) {
         int iters = 0;
         gd_error e1 = {0};
+        if (co->dp_max > 0 && fabs(ds * t[N]) > co->dp_max)
+            ds = fmax(co->dp_max / fabs(t[N]), co->ds_min);
         st = step_from(c, u, t, ds, u1, t1, &po1, &iters, &e1);
         double turn = 0;
         for (int i = 0; i <= N && st == GD_OK; i++)
             turn += t[i] * t1[i];
         if (st == GD_ERR_NOMEM || st == GD_ERR_INTERNAL)
             return gd_error_set(err, st, "%s", e1.msg);
-        if (st != GD_OK || turn < 0.5) { /* no convergence, or a turn too sharp for this step */
+        int too_far = st == GD_OK && co->dp_max > 0 && fabs(u1[N] - u[N]) > co->dp_max;
+        if (st != GD_OK || turn < 0.5 || too_far) { /* no convergence, a turn too sharp, or p moved too far */
             if (ds <= co->ds_min) {
                 c->br->end = GD_END_STEP;
                 snprintf(c->br->end_reason, sizeof c->br->end_reason, "no convergence at the smallest step %.3g "
-                         "from p = %.9g: %s", ds, u[N], st != GD_OK ? e1.msg : "the tangent turns too sharply");
+                         "from p = %.9g: %s", ds, u[N], st != GD_OK ? e1.msg : too_far ? "the parameter moves more than dp_max"
+                         : "the tangent turns too sharply");
                 return GD_OK;
             }
             ds = fmax(0.5 * ds, co->ds_min);

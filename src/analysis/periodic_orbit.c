@@ -1,6 +1,9 @@
 /* A periodic orbit at a fixed parameter: Newton shooting from a guess (shooting.c), the Floquet
- * multipliers by GSL's nonsymmetric eigensolver, and the model of a given mesh frequency. */
+ * multipliers by GSL's nonsymmetric eigensolver, and the model at a parameter value (a mesh
+ * frequency, or a case key with the model built again). */
 #include "shooting.h"
+#include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_eigen.h>
 #include <gsl/gsl_errno.h>
@@ -115,4 +118,15 @@ GD_API gd_status gd_model_at_mesh_frequency(double Omega, gd_model *m, void *ctx
     m->period = 2.0 * M_PI / Omega;
     m->mesh_freq_hz = Omega * m->omega_n / (2.0 * M_PI);
     return GD_OK;
+}
+
+GD_API gd_status gd_model_at_case_key(double p, gd_model *m, void *ctx, gd_error *err)
+{
+    const gd_case_param *a = ctx;
+    gd_status st = gd_case_set_number(a->c, a->key, a->scale * p, err);
+    if (st == GD_OK)
+        st = gd_case_resolve(a->c, err);
+    if (st == GD_OK)
+        st = gd_model_build(a->c, m, err);
+    return st == GD_OK ? GD_OK : gd_error_prefix(err, "the model at %s = %.9g", a->key, a->scale * p);
 }
