@@ -5,7 +5,9 @@
  *   2. The same orbit by Newton shooting from the state after the transient, and a continuation
  *      of it in the mesh frequency (points, Newton iterations per correction, CPU per point)
  *      against a brute-force sweep point (300 transient and 200 recorded periods).
- *   3. The Kahraman & Singh curve, alpha 0, Omega 0.5 to 1.5 (tests/test_continuation.c): CPU.
+ *   3. The paper's bta model (cases/paper/sweep-speed.ini) continued in the speed from 3000 to
+ *      5500 rpm: points, bifurcations, CPU per point against a sweep point.
+ *   4. The Kahraman & Singh curve, alpha 0, Omega 0.5 to 1.5 (tests/test_continuation.c): CPU.
  * Usage: bench_periodic [repeats] (best of the repeats). CPU time (getrusage) is the figure to quote
  * on a shared machine; instruction counts under valgrind --tool=callgrind are steadier still. */
 #include "geardyn/geardyn.h"
@@ -109,6 +111,47 @@ static void bta(int repeats)
     gd_case_free(&c);
 }
 
+/* the paper's bta model in the speed, 3000 to 5500 rpm (tests/test_continuation_bta.c) */
+static void bta_paper(void)
+{
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    gd_error e = {0};
+    const char *sets[] = {"operating.speed_rpm=3000", NULL};
+    load(&c, &m, "cases/paper/sweep-speed.ini", sets);
+    gd_solver_opts_from_case(&c, &o);
+    gd_case_param cp = {&c, "operating.speed_rpm", 3000.0 / m.Omega};
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    double t0 = cpu();
+    if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 500, y, NULL, NULL, &e))
+        die(&e);
+    double t_period = (cpu() - t0) / 500;
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.po.tol = 1e-8;
+    co.ds = 1.0;
+    co.ds_max = 20.0;
+    co.dp_max = 50.0 / cp.scale;
+    co.locate_tol = 1e-6;
+    co.p_min = 3000.0 / cp.scale;
+    co.p_max = 5500.0 / cp.scale;
+    gd_po start;
+    gd_branch br;
+    t0 = cpu();
+    if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
+        gd_continue(gd_model_at_case_key, &cp, &o, &co, &start, &br, &e) != GD_OK)
+        die(&e);
+    double t = cpu() - t0;
+    printf("bta paper case, 3000 to 5500 rpm: %d points, %d bifurcations, %ld corrections, %.2f Newton iterations per "
+           "correction, %.3g s CPU, %.3g ms per point: %.3f of a sweep point (500 periods of %.3g ms)\n", br.npoints,
+           br.nbif, br.corrections, (double)br.newton_iterations / (double)br.corrections, t, 1e3 * t / br.npoints,
+           t / br.npoints / (500 * t_period), 1e3 * t_period);
+    gd_branch_free(&br);
+    gd_case_free(&c);
+}
+
 static void ks(int repeats)
 {
     gd_case c;
@@ -149,6 +192,7 @@ int main(int argc, char **argv)
 {
     int repeats = argc > 1 ? atoi(argv[1]) : 3;
     bta(repeats);
+    bta_paper();
     ks(repeats);
     return 0;
 }
