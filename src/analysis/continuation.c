@@ -241,6 +241,8 @@ static gd_status end_on_bound(cont *c, const double *u, const double *t, double 
     const int N = c->sh.N;
     double up[UMAX], u1[UMAX], e[UMAX] = {0};
     double s = (pb - u[N]) / t[N];
+    if (!isfinite(s)) /* a tangent without a parameter component: start from the last point */
+        s = 0.0;
     for (int i = 0; i <= N; i++)
         up[i] = u1[i] = u[i] + s * t[i];
     up[N] = u1[N] = pb;

@@ -36,6 +36,8 @@ static int by_modulus(const void *a, const void *b)
 
 GD_API gd_status gd_floquet(const double *M, int n, double *mu_re, double *mu_im, gd_error *err)
 {
+    if (n < 1 || n > GD_MAX_STATE)
+        return gd_error_set(err, GD_ERR_INPUT, "a %d x %d monodromy matrix (valid: 1 to %d)", n, n, GD_MAX_STATE);
     gsl_matrix *A = gsl_matrix_alloc((size_t)n, (size_t)n);
     gsl_vector_complex *ev = gsl_vector_complex_alloc((size_t)n);
     gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc((size_t)n);

@@ -45,7 +45,6 @@ static gd_status maps_plain(gd_shoot *sh, const double *u, double p, double *y1,
     gd_status st = sh->model_at(p, &m, sh->ctx, err);
     for (int k = 0; k < sh->nseg && st == GD_OK; k++) {
         st = gd_sim_period_map(&m, &sh->o, u + k * sh->n, sh->per_seg, y1 + k * sh->n, NULL, NULL, err);
-        sh->maps_plain++;
     }
     return st;
 }
@@ -63,7 +62,6 @@ gd_status gd_shoot_eval(gd_shoot *sh, const double *u, int with_p, gd_error *err
         double y1[GD_MAX_STATE];
         gd_sim_stats ss;
         st = gd_sim_period_map(&m, &sh->o, u + k * n, sh->per_seg, y1, sh->Mk + (size_t)k * n * n, &ss, err);
-        sh->maps_tangent++;
         if (st != GD_OK)
             return st;
         const double *next = u + ((k + 1) % sh->nseg) * n;

@@ -18,7 +18,6 @@ typedef struct gd_shoot {
     double rp[GD_PO_MAX_PERIODS * GD_MAX_STATE]; /* dr/dp (central difference) */
     double *Mk;                                  /* nseg monodromies of the segments, n x n each */
     long events[GD_MAX_CLEAR];                   /* events of the segments, by clearance */
-    long maps_tangent, maps_plain;               /* segment integrations with and without the monodromy */
 } gd_shoot;
 
 gd_status gd_shoot_init(gd_shoot *sh, gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o, int n,
