@@ -124,6 +124,22 @@ GD_API void gd_sim_lyapunov_start(gd_sim *s);
  * are made consistent with it and the integrator is reset. */
 GD_API gd_status gd_sim_set_state(gd_sim *s, const double *y, gd_error *err);
 GD_API int gd_sim_lyapunov(const gd_sim *s, double *exponents, double *elapsed);
+
+/* Variational mode (the monodromy of a periodic orbit): set the opts.n_tangent tangent vectors
+ * to the columns of V (n x n_tangent, row-major) and integrate them from now on without the
+ * renormalisation of every mesh period, so that they are D phi(t, t0) V, with the saltation
+ * matrix applied at every located event. */
+GD_API gd_status gd_sim_set_tangent(gd_sim *s, const double *V, gd_error *err);
+/* The tangent vectors as the columns of V (n x n_tangent, row-major). */
+GD_API void gd_sim_get_tangent(const gd_sim *s, double *V);
+
+/* The stroboscopic map of nper mesh periods from the state y0 at t = 0 (modes consistent with
+ * y0): y1 = phi(nper T, 0, y0), and when M is not NULL its Jacobian, the monodromy matrix
+ * (n x n, row-major), from the variational equations with a saltation matrix at every located
+ * event (o->n_tangent is replaced by n, or 0 when M is NULL). st (may be NULL): the statistics
+ * of the run, its events by clearance among them. */
+GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
+                                   double *y1, double *M, gd_sim_stats *st, gd_error *err);
 GD_API const gd_model *gd_sim_model(const gd_sim *s);
 
 #ifdef __cplusplus

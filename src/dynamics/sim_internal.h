@@ -39,6 +39,7 @@ struct gd_sim {
     int k, N;                /* tangent vectors, total length n (1 + k) */
     double lyap_sum[GD_MAX_STATE];
     double lyap_t0;          /* absolute time where the sums started */
+    int tangent_free;        /* 1: no renormalisation (gd_sim_set_tangent): the tangent vectors are D phi V */
     gsl_matrix *qr, *Q, *R;
     gsl_vector *tau;
     double t_step0;          /* start of the last step (local) */

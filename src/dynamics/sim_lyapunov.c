@@ -1,6 +1,7 @@
-/* Lyapunov exponents from the tangent vectors integrated with the trajectory: their
+/* The tangent vectors integrated with the trajectory. For Lyapunov exponents: their
  * reproducible initial directions, the QR (GSL Householder) renormalisation at every mesh
- * period with the sums of log|R_ii|, and the exponents from those sums. */
+ * period with the sums of log|R_ii|, and the exponents from those sums. For a monodromy
+ * matrix: vectors set by the caller and integrated without renormalisation (sim_map.c). */
 #include "sim_internal.h"
 
 #include <gsl/gsl_errno.h>
@@ -77,3 +78,23 @@ GD_API int gd_sim_lyapunov(const gd_sim *s, double *exponents, double *elapsed)
     return s->k;
 }
 
+
+GD_API gd_status gd_sim_set_tangent(gd_sim *s, const double *V, gd_error *err)
+{
+    const int n = s->m.n, k = s->k;
+    double *y = NV_DATA_S(s->y);
+    for (int v = 0; v < k; v++)
+        for (int i = 0; i < n; i++)
+            y[(v + 1) * n + i] = V[i * k + v];
+    s->tangent_free = 1;
+    return gd_sim_reset_at(s, s->t, err);
+}
+
+GD_API void gd_sim_get_tangent(const gd_sim *s, double *V)
+{
+    const int n = s->m.n, k = s->k;
+    const double *y = NV_DATA_S(s->y);
+    for (int v = 0; v < k; v++)
+        for (int i = 0; i < n; i++)
+            V[i * k + v] = y[(v + 1) * n + i];
+}

@@ -491,7 +491,7 @@ GD_API gd_status gd_sim_period(gd_sim *s, gd_error *err)
                                 "damping, or reduce the excitation", s->m.clear[c].name, s->open_periods[j], s->period);
     }
     memcpy(s->events_at_start, s->by_clear, sizeof s->by_clear);
-    if (s->k > 0) {
+    if (s->k > 0 && !s->tangent_free) {
         st = gd_sim_orthonormalise(s, 1, err);
         if (st != GD_OK)
             return st;

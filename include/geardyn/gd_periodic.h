@@ -1,0 +1,150 @@
+/* Periodic orbits of a gear model and their continuation (docs/continuation.md).
+ *
+ * An orbit of n mesh periods is a fixed point of the n-fold stroboscopic map. It is found by
+ * Newton shooting: single shooting over the n periods, or multiple shooting with one segment per
+ * mesh period, whose Jacobian blocks are the monodromy matrices of the segments
+ * (gd_sim_period_map: variational equations with a saltation matrix at every located contact
+ * event). Its stability comes from the Floquet multipliers, the eigenvalues of the monodromy
+ * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
+ * follows an orbit in a numeric parameter p, with an adaptive step, and locates by bisection the
+ * folds (the tangent's parameter component changes sign), period doublings (a real multiplier
+ * passes -1) and changes of the contact sequence (grazing) between its points. */
+#ifndef GD_PERIODIC_H
+#define GD_PERIODIC_H
+
+#include "geardyn/gd_sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GD_PO_MAX_PERIODS 16
+
+typedef struct gd_po_opts {
+    int nper;                /* period of the orbit in mesh periods, 1 .. GD_PO_MAX_PERIODS */
+    int multiple;            /* 1: one shooting segment per mesh period; 0: one segment of nper periods */
+    double tol;              /* converged when the max-norm of the shooting residual is below tol */
+    int max_iter;            /* Newton iterations at most */
+    double dp_rel;           /* relative step of the central difference of the residual in p */
+} gd_po_opts;
+
+/* nper 1, multiple shooting, tol 1e-9, 12 iterations, dp_rel 1e-6 */
+GD_API void gd_po_opts_default(gd_po_opts *po);
+
+typedef struct gd_po {
+    int n, nper, nseg;       /* state size, mesh periods, shooting segments */
+    double p;                /* the parameter (continuation) */
+    double y[GD_PO_MAX_PERIODS][GD_MAX_STATE]; /* the state at t = 0 of each segment (y[0]: the orbit's
+                                                * Poincare point at mesh phase 0) */
+    double M[GD_MAX_STATE * GD_MAX_STATE];     /* monodromy of the whole orbit (n x n, row-major) */
+    double mu_re[GD_MAX_STATE], mu_im[GD_MAX_STATE]; /* Floquet multipliers, largest modulus first */
+    double mu_max;           /* the largest modulus */
+    int stable;              /* mu_max < 1 */
+    int iterations;          /* Newton iterations (linear solves) of the last correction */
+    double residual;         /* max-norm of the shooting residual at the solution */
+    long events[GD_MAX_CLEAR]; /* located events per orbit period, by clearance */
+} gd_po;
+
+/* The eigenvalues of the n x n matrix M (row-major), sorted by decreasing modulus. */
+GD_API gd_status gd_floquet(const double *M, int n, double *mu_re, double *mu_im, gd_error *err);
+
+/* The orbit of po->nper mesh periods of model m near the state y0 at t = 0 (the guesses of the
+ * other segments are the images of y0). */
+GD_API gd_status gd_po_solve(const gd_model *m, const gd_solver_opts *o, const gd_po_opts *po, const double *y0,
+                             gd_po *orbit, gd_error *err);
+
+/* The model at parameter value p (into *m). */
+typedef gd_status (*gd_model_at_fn)(double p, gd_model *m, void *ctx, gd_error *err);
+
+/* A gd_model_at_fn whose parameter is the dimensionless mesh frequency Omega: ctx is the
+ * const gd_model * whose copy gets Omega and the mesh period 2 pi / Omega. Exact for a model in
+ * which nothing else depends on the speed; a model with a mesh-in impact pulse (whose phase width
+ * does) is refused. */
+GD_API gd_status gd_model_at_mesh_frequency(double Omega, gd_model *m, void *ctx, gd_error *err);
+
+/* A gd_model_at_fn whose parameter sets a numeric case key: the key takes the value scale * p, the
+ * case is resolved and the model built again at every call (LTCA excitations come from their
+ * cache), so every speed-dependent part of the model follows (the mesh-in pulse among them).
+ * ctx: a gd_case_param; the case is changed, so one continuation at a time may use it. */
+typedef struct gd_case_param {
+    gd_case *c;
+    const char *key;         /* "operating.speed_rpm", "operating.torque_nm", ... */
+    double scale;            /* key value per unit of p (for the speed: rpm per unit of Omega) */
+} gd_case_param;
+GD_API gd_status gd_model_at_case_key(double p, gd_model *m, void *ctx, gd_error *err);
+
+typedef struct gd_cont_opts {
+    gd_po_opts po;
+    double p_min, p_max;     /* the branch ends when p leaves [p_min, p_max] */
+    double ds, ds_min, ds_max; /* arclength step in (y, p): first, smallest, largest */
+    double dp_max;           /* largest change of p in one step (0: no limit besides ds_max) */
+    int max_points;          /* branch points at most (the start included) */
+    int direction;           /* +1: set out towards increasing p; -1 decreasing */
+    double locate_tol;       /* a bifurcation is located when its arclength bracket is below this */
+} gd_cont_opts;
+
+/* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], no dp_max, 400 points, +1,
+ * locate_tol 1e-8 */
+GD_API void gd_cont_opts_default(gd_cont_opts *co);
+
+typedef enum gd_bif_kind {
+    GD_BIF_FOLD = 0,           /* saddle-node: the tangent's parameter component changes sign */
+    GD_BIF_PERIOD_DOUBLING = 1, /* a real multiplier passes -1 */
+    GD_BIF_CONTACT_CHANGE = 2  /* the events of a clearance per orbit change in number: a contact appears or
+                                * disappears (through a grazing, where the orbit touches the boundary) */
+} gd_bif_kind;
+GD_API const char *gd_bif_kind_name(int kind);
+
+typedef struct gd_bifurcation {
+    int kind;                /* gd_bif_kind */
+    int clearance;           /* the clearance of a contact change (index into model->clear), else -1 */
+    double p;                /* parameter at the middle of the final bracket */
+    double p_lo, p_hi;       /* parameter at the ends of the final bracket (p_lo: the end towards the branch
+                              * point before it, so p_lo > p_hi on a branch running to lower p) */
+    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; else nearest 1) */
+    double y[GD_MAX_STATE];  /* Poincare point at the middle */
+    int after;               /* index of the branch point before which it lies */
+} gd_bifurcation;
+
+typedef enum gd_branch_end {
+    GD_END_BOUND = 0,        /* p left [p_min, p_max] */
+    GD_END_BUDGET = 1,       /* max_points reached */
+    GD_END_STEP = 2          /* no convergence at the smallest step */
+} gd_branch_end;
+
+typedef struct gd_cont_point {
+    gd_po orbit;             /* orbit.p: the parameter */
+    double tangent_p;        /* parameter component of the unit tangent (its sign changes at a fold) */
+    double ds;               /* the step that reached this point */
+} gd_cont_point;
+
+typedef struct gd_branch {
+    int npoints, cap;
+    gd_cont_point *pt;
+    int nbif, bif_cap;
+    gd_bifurcation *bif;
+    int end;                 /* gd_branch_end */
+    char end_reason[GD_ERROR_MSG_MAX];
+    long newton_iterations;  /* over all points, located bifurcations included */
+    long corrections;        /* corrector runs (accepted, rejected, and the bisection's) */
+} gd_branch;
+
+/* Follow the orbit start (solved by gd_po_solve or a branch point; start->p its parameter) in p,
+ * one direction (co->direction). br is filled (free with gd_branch_free). */
+GD_API gd_status gd_continue(gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o, const gd_cont_opts *co,
+                             const gd_po *start, gd_branch *br, gd_error *err);
+GD_API void gd_branch_free(gd_branch *br);
+
+/* Branch switching at the period doubling b of a branch of orbits of po->nper mesh periods: the
+ * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp) from the
+ * bifurcation's orbit moved by +-eps along the eigenvector of its multiplier -1. An orbit that
+ * converges back to the period-nper one is refused; GD_ERR_SOLVER when no trial finds a doubled
+ * orbit. out->p is its parameter. */
+GD_API gd_status gd_po_period_doubled(gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o,
+                                      const gd_po_opts *po, const gd_bifurcation *b, double dp, double eps,
+                                      gd_po *out, gd_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,40 @@
+/* Internal to the periodic-orbit files (periodic_orbit.c, continuation.c): the shooting system of
+ * an orbit of nper mesh periods in nseg segments, its Newton corrector (the parameter fixed, or
+ * bordered by the pseudo-arclength condition) and the tangent of the solution curve. The unknowns
+ * are u = (y_0, ..., y_{nseg-1}, p): the state at the start of each segment and the parameter. */
+#ifndef GD_SHOOTING_H
+#define GD_SHOOTING_H
+
+#include "geardyn/gd_periodic.h"
+
+typedef struct gd_shoot {
+    gd_model_at_fn model_at;
+    void *ctx;
+    gd_solver_opts o;
+    int n, nseg, per_seg, N; /* state size, segments, mesh periods per segment, N = nseg n */
+    double dp_rel;
+    /* the last evaluation (gd_shoot_eval) */
+    double r[GD_PO_MAX_PERIODS * GD_MAX_STATE];  /* r_k = P(y_k) - y_{k+1 mod nseg} */
+    double rp[GD_PO_MAX_PERIODS * GD_MAX_STATE]; /* dr/dp (central difference) */
+    double *Mk;                                  /* nseg monodromies of the segments, n x n each */
+    long events[GD_MAX_CLEAR];                   /* events of the segments, by clearance */
+} gd_shoot;
+
+gd_status gd_shoot_init(gd_shoot *sh, gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o, int n,
+                        const gd_po_opts *po, gd_error *err);
+void gd_shoot_free(gd_shoot *sh);
+/* Residual and monodromies at u; with_p: also dr/dp. */
+gd_status gd_shoot_eval(gd_shoot *sh, const double *u, int with_p, gd_error *err);
+/* Newton from u (N + 1 values, in and out) until the max-norm of the residual is below tol: p
+ * fixed (v NULL), or with the pseudo-arclength condition v . (u - u_pred) = 0. *iters: linear
+ * solves. The last evaluation is at the returned u (with dr/dp when v is given). */
+gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const double *u_pred, double tol, int max_iter,
+                           int *iters, gd_error *err);
+/* The unit tangent t of the solution curve at the last evaluation: [dr/dy dr/dp; v] t = [0; 1],
+ * normalised (t . v > 0). */
+gd_status gd_shoot_tangent(gd_shoot *sh, const double *v, double *t, gd_error *err);
+/* The orbit at u from the last evaluation: its states, the monodromy of the whole orbit, the
+ * Floquet multipliers and stability, the events. */
+gd_status gd_shoot_orbit(const gd_shoot *sh, const double *u, gd_po *po, gd_error *err);
+
+#endif

@@ -1,0 +1,42 @@
+/* The stroboscopic map of a whole number of mesh periods and its Jacobian, the monodromy matrix:
+ * one fresh integrator from t = 0 (the excitation is periodic in the mesh period, so every
+ * segment of a multiple-shooting orbit starts there), with the tangent vectors set to the
+ * identity and carried without renormalisation through every event and its saltation matrix
+ * (sim_events.c). docs/continuation.md derives it. */
+#include "sim_internal.h"
+
+#include <string.h>
+
+GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
+                                   double *y1, double *M, gd_sim_stats *st, gd_error *err)
+{
+    if (nper < 1)
+        return gd_error_set(err, GD_ERR_INPUT, "a map of %d mesh periods (valid: 1 or more)", nper);
+    gd_solver_opts oo = *o;
+    oo.n_tangent = M ? m->n : 0;
+    gd_modes md;
+    memset(&md, 0, sizeof md);
+    md.from_state = !o->root_finding;
+    gd_status status = gd_model_consistent_modes(m, 0.0, y0, &md, err);
+    if (status != GD_OK)
+        return status;
+    gd_sim *s = NULL;
+    status = gd_sim_create(m, &oo, y0, &md, &s, err);
+    if (status == GD_OK && M) {
+        double I[GD_MAX_STATE * GD_MAX_STATE] = {0};
+        for (int i = 0; i < m->n; i++)
+            I[i * m->n + i] = 1.0;
+        status = gd_sim_set_tangent(s, I, err);
+    }
+    for (int p = 0; p < nper && status == GD_OK; p++)
+        status = gd_sim_period(s, err);
+    if (status == GD_OK) {
+        memcpy(y1, gd_sim_state(s), sizeof(double) * (size_t)m->n);
+        if (M)
+            gd_sim_get_tangent(s, M);
+        if (st)
+            gd_sim_get_stats(s, st);
+    }
+    gd_sim_free(s);
+    return status;
+}

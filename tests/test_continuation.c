@@ -1,0 +1,320 @@
+/* Pseudo-arclength continuation of the Kahraman & Singh oscillator in the mesh frequency
+ * (gd_continue with gd_model_at_mesh_frequency): zeta 0.05, F_m 0.1, F_a 0.1, Omega 0.5 .. 1.5,
+ * time-invariant stiffness (alpha 0) and the modulation of cases/validation/kahraman-singh.ini
+ * (alpha 0.2).
+ *
+ * 1. The branch from Omega 0.5 upwards ends on the bound 1.5 with the bifurcations expected of a
+ *    softening impact oscillator: the grazing where the non-impacting orbit first touches the
+ *    boundary (a contact change; for alpha 0 at Omega = 1/sqrt(1.99), where the linear amplitude
+ *    F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| reaches F_m, located to 3e-7: the event
+ *    detection misses penetrations shallower than the integration tolerance resolves), a fold
+ *    above it where the branch turns back (the jump of an up sweep), a fold below it where the
+ *    unstable branch turns into the stable impacting one (the jump of a down sweep), and for
+ *    alpha 0 a period doubling; each located to an arclength bracket of 1e-8.
+ * 2. Both directions: from the attractor at Omega 1.0 continued down and up, the same bifurcations
+ *    to 2e-7 in the parameter.
+ * 3. Every stable branch point whose largest multiplier is below 0.9 is the attractor of plain
+ *    simulation: from the orbit's Poincare point moved by 1e-3 in every component, integrated
+ *    until |mu_max|^N < 1e-10, the state at mesh phase 0 agrees with the branch point to 1e-6.
+ * 4. Brute force on both sides of each bifurcation, 0.01 away in Omega, from the branch point
+ *    nearest it: on the side where the branch exists the simulation stays on the orbit shooting
+ *    finds there (to 1e-6); on the other side it leaves (by more than 1e-2), and beyond the
+ *    period doubling it settles on a period-2 orbit (P(y) - y > 1e-3, P^2(y) - y < 1e-6).
+ * 5. Branch switching at the period doubling (alpha 0): the period-2 orbit found 0.01 beyond it is
+ *    stable and is the attractor of simulation there (to 1e-6); its branch, continued to 1.5, has
+ *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6.
+ * 6. A brute-force sweep up and down in steps of 0.005 jumps once each way, in the grid interval
+ *    that contains the upper fold (up) and the lower fold (down): the hysteresis interval of the
+ *    sweep is bounded by the two folds. */
+#include "analysis_util.h"
+#include "tap.h"
+#include "geardyn/gd_periodic.h"
+#include "geardyn/gd_scene.h"
+
+#include <string.h>
+
+static double dist(const double *a, const double *b, int n)
+{
+    double d = 0;
+    for (int i = 0; i < n; i++)
+        d = fmax(d, fabs(a[i] - b[i]));
+    return d;
+}
+
+/* the branch from the attractor reached after 300 periods from the case's start at Omega0 */
+static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o, int direction, gd_branch *br)
+{
+    gd_error e = {0};
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    if (gd_initial_state(c, m, y, &md, &e) != GD_OK || gd_sim_period_map(m, o, y, 300, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.p_min = 0.5;
+    co.p_max = 1.5;
+    co.ds_max = 0.05;
+    co.direction = direction;
+    gd_po start;
+    if (gd_po_solve(m, o, &co.po, y, &start, &e) != GD_OK || gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co,
+                                                                           &start, br, &e) != GD_OK)
+        au_die(&e);
+    long it = br->newton_iterations;
+    printf("# from Omega %.3g, direction %+d: %d points, %ld corrections, %ld Newton iterations (%.2f per "
+           "correction), end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
+           (double)it / (double)br->corrections, br->end_reason);
+    for (int i = 0; i < br->nbif; i++)
+        printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi\n",
+               gd_bif_kind_name(br->bif[i].kind), br->bif[i].p, br->bif[i].p_lo, br->bif[i].p_hi, br->bif[i].mu_re,
+               br->bif[i].mu_im);
+}
+
+/* check 3: stable points against settled simulation */
+static void stable_points(const char *name, const gd_model *m, const gd_solver_opts *o, const gd_branch *br)
+{
+    gd_error e = {0};
+    double dmax = 0;
+    int count = 0;
+    for (int i = 0; i < br->npoints; i++) {
+        const gd_po *q = &br->pt[i].orbit;
+        if (!(q->mu_max < 0.9))
+            continue;
+        gd_model mq;
+        double y[GD_MAX_STATE];
+        if (gd_model_at_mesh_frequency(q->p, &mq, (void *)m, &e) != GD_OK)
+            au_die(&e);
+        for (int j = 0; j < m->n; j++)
+            y[j] = q->y[0][j] + 1e-3;
+        int N = (int)ceil(log(1e-10) / log(q->mu_max)) * q->nper; /* whole orbit periods: back to y[0] */
+        if (gd_sim_period_map(&mq, o, y, N, y, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        dmax = fmax(dmax, dist(y, q->y[0], m->n));
+        count++;
+    }
+    char label[200];
+    snprintf(label, sizeof label, "%s: %d stable points against settled simulation, max |y - y_sim|", name, count);
+    TAP_CLOSE(dmax, 0.0, 1e-6, label);
+}
+
+/* the branch point nearest parameter p */
+static const gd_po *nearest(const gd_branch *br, double p, int after)
+{
+    const gd_po *best = NULL;
+    for (int i = after - 1; i <= after && i < br->npoints; i++)
+        if (i >= 0 && (!best || fabs(br->pt[i].orbit.p - p) < fabs(best->p - p)))
+            best = &br->pt[i].orbit;
+    return best;
+}
+
+/* check 4 at bifurcation b: `exists` is the side (+1 above, -1 below) where the orbit exists and is
+ * stable; brute force there stays, on the other side it leaves */
+static void both_sides(const char *name, const gd_model *m, const gd_solver_opts *o, const gd_branch *br,
+                       const gd_bifurcation *b, int exists)
+{
+    gd_error e = {0};
+    const int n = m->n;
+    const gd_po *q = nearest(br, b->p, b->after);
+    gd_model mq;
+    double y[GD_MAX_STATE], y1[GD_MAX_STATE], y2[GD_MAX_STATE];
+    /* the side where the orbit exists: shoot there from the nearest point, simulate from it moved by 1e-4 */
+    double p_in = b->p + 0.01 * exists, p_out = b->p - 0.01 * exists;
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po orbit;
+    if (gd_model_at_mesh_frequency(p_in, &mq, (void *)m, &e) != GD_OK || gd_po_solve(&mq, o, &po, q->y[0], &orbit, &e))
+        au_die(&e);
+    for (int j = 0; j < n; j++)
+        y[j] = orbit.y[0][j] + 1e-4;
+    if (gd_sim_period_map(&mq, o, y, 3000, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    double d_in = dist(y, orbit.y[0], n);
+    /* the other side: from the nearest point the simulation goes elsewhere */
+    if (gd_model_at_mesh_frequency(p_out, &mq, (void *)m, &e) != GD_OK)
+        au_die(&e);
+    memcpy(y, q->y[0], sizeof y);
+    if (gd_sim_period_map(&mq, o, y, 3000, y, NULL, NULL, &e) != GD_OK ||
+        gd_sim_period_map(&mq, o, y, 1, y1, NULL, NULL, &e) != GD_OK ||
+        gd_sim_period_map(&mq, o, y1, 1, y2, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    double d_out = dist(y, q->y[0], n);
+    tap_ok(d_in < 1e-6, "%s %s at %.6f: 0.01 on the side of the orbit, simulation stays on it (%.3g)", name,
+           gd_bif_kind_name(b->kind), b->p, d_in);
+    if (b->kind == GD_BIF_PERIOD_DOUBLING) {
+        double d1 = dist(y1, y, n), d2 = dist(y2, y, n);
+        tap_ok(d1 > 1e-3 && d2 < 1e-6, "%s period doubling at %.6f: 0.01 beyond, a period-2 orbit (|P y - y| %.3g, "
+               "|P^2 y - y| %.3g)", name, b->p, d1, d2);
+    } else {
+        tap_ok(d_out > 1e-2, "%s fold at %.6f: 0.01 beyond, simulation leaves the branch (%.3g)", name, b->p, d_out);
+    }
+}
+
+/* 5. branch switching at the period doubling b: the period-2 orbit 0.01 beyond it against settled
+ * simulation (either of its two Poincare points), and its branch continued to 1.5 */
+static void period_two(const char *name, const gd_model *m, const gd_solver_opts *o, const gd_bifurcation *b)
+{
+    gd_error e = {0};
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po p2;
+    if (gd_po_period_doubled(gd_model_at_mesh_frequency, (void *)m, o, &po, b, 0.01, 0.05, &p2, &e) != GD_OK)
+        au_die(&e);
+    gd_model mq;
+    double y[GD_MAX_STATE];
+    memcpy(y, b->y, sizeof y);
+    if (gd_model_at_mesh_frequency(p2.p, &mq, (void *)m, &e) != GD_OK ||
+        gd_sim_period_map(&mq, o, y, 3000, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    double d = fmin(dist(y, p2.y[0], m->n), dist(y, p2.y[1], m->n));
+    printf("# period-2 orbit at Omega %.6f: mu_max %.6f, Newton %d, events %ld\n", p2.p, p2.mu_max, p2.iterations,
+           p2.events[0]);
+    tap_ok(p2.nper == 2 && p2.stable && d < 1e-6 && dist(p2.y[0], p2.y[1], m->n) > 1e-3,
+           "%s: the period-2 orbit switched to at Omega %.6f is stable (%.6f) and the attractor of simulation "
+           "(%.3g)", name, p2.p, p2.mu_max, d);
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.po.nper = 2;
+    co.p_min = 0.5;
+    co.p_max = 1.5;
+    co.ds_max = 0.05;
+    gd_branch br;
+    if (gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co, &p2, &br, &e) != GD_OK)
+        au_die(&e);
+    printf("# the period-2 branch from Omega %.6f: %d points, %d bifurcations, end: %s\n", p2.p, br.npoints, br.nbif,
+           br.end_reason);
+    for (int i = 0; i < br.nbif; i++)
+        printf("#   %s at Omega %.10f, multiplier %.6f%+.6fi\n", gd_bif_kind_name(br.bif[i].kind), br.bif[i].p,
+               br.bif[i].mu_re, br.bif[i].mu_im);
+    char label[200];
+    snprintf(label, sizeof label, "%s, period 2", name);
+    stable_points(label, m, o, &br);
+    gd_branch_free(&br);
+}
+
+/* 6. A brute-force sweep up and down (Omega 0.55 .. 0.80 by 0.005, each point 400 periods from the
+ * state the previous one ended in): the grid interval where the settled Poincare point jumps (by
+ * more than 0.05) contains the fold that ends the branch being followed: the upper fold going up,
+ * the lower fold going down. */
+static void sweep_jumps(const char *name, const gd_case *c, const gd_model *m, const gd_solver_opts *o,
+                        double fold_hi, double fold_lo)
+{
+    gd_error e = {0};
+    for (int dir = 1; dir >= -1; dir -= 2) {
+        double y[GD_MAX_STATE], prev[GD_MAX_STATE], jump_lo = NAN, jump_hi = NAN;
+        gd_modes md;
+        int jumps = 0;
+        if (gd_initial_state(c, m, y, &md, &e) != GD_OK)
+            au_die(&e);
+        for (int k = 0; k <= 50; k++) {
+            double Om = dir > 0 ? 0.55 + 0.005 * k : 0.80 - 0.005 * k;
+            gd_model mq;
+            if (gd_model_at_mesh_frequency(Om, &mq, (void *)m, &e) != GD_OK ||
+                gd_sim_period_map(&mq, o, y, 400, y, NULL, NULL, &e) != GD_OK)
+                au_die(&e);
+            if (k > 0 && dist(y, prev, m->n) > 0.05) {
+                jumps++;
+                jump_lo = Om - 0.005 * dir;
+                jump_hi = Om;
+            }
+            memcpy(prev, y, sizeof prev);
+        }
+        double fold = dir > 0 ? fold_hi : fold_lo;
+        tap_ok(jumps == 1 && (fold - jump_lo) * (fold - jump_hi) < 0,
+               "%s: the sweep %s jumps once (%d), between Omega %.3f and %.3f, around the fold at %.6f", name,
+               dir > 0 ? "up" : "down", jumps, jump_lo, jump_hi, fold);
+    }
+}
+
+/* the bifurcations of kind `kind` of a branch, in branch order */
+static int of_kind(const gd_branch *br, int kind, const gd_bifurcation **out, int max)
+{
+    int k = 0;
+    for (int i = 0; i < br->nbif; i++)
+        if (br->bif[i].kind == kind && k < max)
+            out[k++] = &br->bif[i];
+    return k;
+}
+
+/* the largest parameter difference between bifurcations of the same kind in two branches (in
+ * opposite order when reversed); -1 when their numbers differ */
+static double same_bifurcations(const gd_branch *a, const gd_branch *b, int reversed)
+{
+    double d = 0;
+    for (int kind = 0; kind <= GD_BIF_CONTACT_CHANGE; kind++) {
+        const gd_bifurcation *x[8], *y[8];
+        int nx = of_kind(a, kind, x, 8), ny = of_kind(b, kind, y, 8);
+        if (nx != ny)
+            return -1;
+        for (int i = 0; i < nx; i++)
+            d = fmax(d, fabs(x[i]->p - y[reversed ? nx - 1 - i : i]->p));
+    }
+    return d;
+}
+
+static void ks(double alpha, const char *name, int expect_pd, double grazing)
+{
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    const char *sets[] = {"excitation.ste_phase_deg=90", "solver.rtol=1e-10", "solver.atol=1e-12", NULL};
+    au_ks_case(&c, &m, alpha, 0.05, 0.1, 0.1, 0.5, sets);
+    gd_solver_opts_from_case(&c, &o);
+    gd_branch up;
+    branch(&c, &m, &o, 1, &up);
+    /* 1. the bifurcations in order */
+    const gd_bifurcation *fold[4], *pd[4], *cc[4];
+    int nf = of_kind(&up, GD_BIF_FOLD, fold, 4), npd = of_kind(&up, GD_BIF_PERIOD_DOUBLING, pd, 4);
+    int ncc = of_kind(&up, GD_BIF_CONTACT_CHANGE, cc, 4);
+    tap_ok(up.end == GD_END_BOUND && fabs(up.pt[up.npoints - 1].orbit.p - 1.5) < 1e-12 && nf == 2 &&
+               npd == expect_pd && ncc == 1 && cc[0] == &up.bif[0] && fold[0] == &up.bif[1] &&
+               fold[0]->p > cc[0]->p && fold[1]->p < cc[0]->p,
+           "%s: from 0.5 to the bound 1.5 (%s): grazing of the mesh, fold above it, fold below it%s (%d "
+           "bifurcations)", name, up.end_reason, expect_pd ? ", period doubling" : "", up.nbif);
+    double bw = 0;
+    for (int i = 0; i < up.nbif; i++)
+        bw = fmax(bw, fabs(up.bif[i].p_hi - up.bif[i].p_lo));
+    TAP_CLOSE(bw, 0.0, 1e-7, "largest parameter bracket of a located bifurcation");
+    if (grazing > 0 && ncc == 1)
+        TAP_CLOSE(cc[0]->p, grazing, 3e-7, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
+    /* 2. both directions from the attractor at Omega 1 */
+    gd_case c1;
+    gd_model m1;
+    au_ks_case(&c1, &m1, alpha, 0.05, 0.1, 0.1, 1.0, sets);
+    gd_branch down, up1;
+    branch(&c1, &m1, &o, -1, &down);
+    branch(&c1, &m1, &o, 1, &up1);
+    /* the branch from 0.5 up is the one from 1 down, reversed, then the one from 1 up */
+    gd_branch joined = down;
+    joined.nbif = 0;
+    gd_bifurcation all[16];
+    joined.bif = all;
+    for (int i = down.nbif - 1; i >= 0 && joined.nbif < 16; i--)
+        all[joined.nbif++] = down.bif[i];
+    for (int i = 0; i < up1.nbif && joined.nbif < 16; i++)
+        all[joined.nbif++] = up1.bif[i];
+    double dp = same_bifurcations(&up, &joined, 0);
+    tap_ok(dp >= 0 && dp < 2e-7, "%s: from Omega 1 down (%s) and up (%s): the same bifurcations (max |dp| %.3g)",
+           name, down.end_reason, up1.end_reason, dp);
+    /* 3. and 4. */
+    stable_points(name, &m, &o, &up);
+    if (nf == 2) {
+        both_sides(name, &m, &o, &up, fold[0], -1); /* the upper fold: the branch is stable below it */
+        both_sides(name, &m, &o, &up, fold[1], +1); /* the lower fold: the impacting branch is stable above */
+        sweep_jumps(name, &c, &m, &o, fold[0]->p, fold[1]->p);
+    }
+    if (expect_pd && npd == 1) {
+        both_sides(name, &m, &o, &up, pd[0], -1);
+        period_two(name, &m, &o, pd[0]);
+    }
+    gd_branch_free(&up);
+    gd_branch_free(&up1);
+    gd_branch_free(&down);
+    gd_case_free(&c);
+    gd_case_free(&c1);
+}
+
+int main(void)
+{
+    ks(0.0, "K&S alpha 0", 1, 1.0 / sqrt(1.99));
+    ks(0.2, "K&S alpha 0.2", 0, 0.0);
+    return tap_done();
+}
