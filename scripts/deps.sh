@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Install the Debian 12 packages geardyn needs, only those that are missing.
-# Sourced by scripts/quickstart.sh and scripts/test.sh; safe to run again.
+# Then build Debian's own source of SUNDIALS in Release mode into .deps/sundials-release/ when it is
+# not there yet (scripts/sundials-release.sh; GD_SUNDIALS=system skips it); without it meson links
+# the system package. Run by scripts/quickstart.sh and scripts/test.sh; safe to run again.
 set -euo pipefail
-GD_PACKAGES=(gcc pkg-config meson ninja-build cmake python3 libsundials-dev libgsl-dev libnlopt-dev
+GD_PACKAGES=(gcc pkg-config meson ninja-build cmake dpkg-dev xz-utils python3 libsundials-dev libgsl-dev libnlopt-dev
              libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev)
 missing=()
 for p in "${GD_PACKAGES[@]}"; do
@@ -15,4 +17,10 @@ if ((${#missing[@]})); then
     export DEBIAN_FRONTEND=noninteractive
     $SUDO apt-get update -qq
     $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+if [ "${GD_SUNDIALS:-release}" != system ] && [ ! -f "$here/../.deps/sundials-release/geardyn-build.txt" ]; then
+    bash "$here/sundials-release.sh" ||
+        echo "geardyn: note: no release build of SUNDIALS from Debian's source (see above); meson links the system package" >&2
 fi

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Install what is missing, build geardyn twice (normal with -Werror, and with ASan+UBSan),
 # run the test suite in both, check that every exported symbol has the gd_ prefix, build a
-# third time with Open MPI and run the sweep suite there (2 MPI ranks), and end with the
+# third time with Open MPI and run the sweep suite there (2 MPI ranks), build the command line
+# once more against Debian's SUNDIALS package and check that every shipped case gives the same
+# outputs as with the release build of SUNDIALS (scripts/compare-outputs.sh), and end with the
 # line "N passed, N failed".
 set -uo pipefail
 cd "$(dirname "$0")/.."
@@ -51,6 +53,21 @@ if [ -n "$lib" ]; then
     else echo "symbols without the gd_ prefix:"; echo "$bad"; failed=$((failed + 1)); fi
 else
     echo "libgeardyn not built"; failed=$((failed + 1))
+fi
+
+echo "== the release build of SUNDIALS (.deps/, scripts/sundials-release.sh) gives the same outputs"
+echo "   as Debian's package on every shipped case"
+if build-ci/src/cli/geardyn --version | grep -q 'release build'; then
+    if { [ -d build-sys/meson-info ] || meson setup build-sys -Dsundials=system -Dwerror=true \
+            -Dbuildtype=debugoptimized >/dev/null; } && ninja -C build-sys src/cli/geardyn >/dev/null; then
+        rm -rf build-sys/compare
+        if bash scripts/compare-outputs.sh "$(pwd)/build-sys/src/cli/geardyn" "$(pwd)/build-ci/src/cli/geardyn" \
+                build-sys/compare | grep -v " same ("; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+    else
+        echo "build-sys (-Dsundials=system) failed"; failed=$((failed + 1))
+    fi
+else
+    echo "skipped: build-ci links $(build-ci/src/cli/geardyn --version | tail -1)"
 fi
 
 echo "== build with ASan+UBSan and run the suite again"

@@ -42,8 +42,8 @@ int main(int argc, char **argv)
         return 0;
     }
     if (strcmp(cmd, "--version") == 0) {
-        printf("geardyn %s (OpenMP %s, MPI %s)\n", GD_VERSION_STRING, GD_HAVE_OPENMP ? "on" : "off",
-               GD_HAVE_MPI ? "on" : "off");
+        printf("geardyn %s (OpenMP %s, MPI %s)\n%s\n", GD_VERSION_STRING, GD_HAVE_OPENMP ? "on" : "off",
+               GD_HAVE_MPI ? "on" : "off", GD_SUNDIALS_BUILD);
         return 0;
     }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {

@@ -77,10 +77,16 @@ GD_API void gd_model_clearance(const gd_model *m, int c, double t, const double 
 GD_API void gd_model_clearances(const gd_model *m, double t, const double *y, const gd_modes *md, double *x,
                                 double *xdot)
 {
-    double e[GD_MAX_MESH], ed[GD_MAX_MESH];
     double s0 = 0.0, c0 = 1.0;
     if (m->nmesh > 0)
         sincos(m->Omega * t, &s0, &c0);
+    gd_model_clearances_sc(m, t, s0, c0, y, md, x, xdot);
+}
+
+void gd_model_clearances_sc(const gd_model *m, double t, double s0, double c0, const double *y, const gd_modes *md,
+                            double *x, double *xdot)
+{
+    double e[GD_MAX_MESH], ed[GD_MAX_MESH];
     for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, NULL, &e[j], &ed[j], NULL);
     for (int c = 0; c < m->nclear; c++) {

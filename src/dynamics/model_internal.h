@@ -3,7 +3,7 @@
  * harmonics); an integrator evaluates several times at the same t (stages of a Runge-Kutta step
  * with equal nodes, the root functions at the step end), so gd_sim keeps the last few and passes
  * them in. The results are those of gd_model_rhs, gd_model_roots and gd_model_tangent with the
- * same sincos values, to the bit. The excitation of a mesh is evaluated inline here, for these and
+ * same sincos values, to the bit (and those of gd_model_clearances). The excitation of a mesh is evaluated inline here, for these and
  * for the RHS compiled for the held modes (rhs_plan.h). */
 #ifndef GD_MODEL_INTERNAL_H
 #define GD_MODEL_INTERNAL_H
@@ -80,6 +80,8 @@ static inline double pulse_force(const gd_model *m, int j, double t, const gd_mo
 
 void gd_model_rhs_sc(const gd_model *m, double t, double s0, double c0, const double *y, double *ydot,
                      const gd_modes *md);
+void gd_model_clearances_sc(const gd_model *m, double t, double s0, double c0, const double *y, const gd_modes *md,
+                            double *x, double *xdot);
 void gd_model_roots_sc(const gd_model *m, double t, double s0, double c0, const double *y, double *g,
                        const gd_modes *md);
 void gd_model_tangent_sc(const gd_model *m, double t, double s0, double c0, const double *y, const double *v,

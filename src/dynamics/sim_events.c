@@ -77,7 +77,10 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
      * s (1 - s)^2 and s^2 (1 - s) are at most 4/27 on [0, 1], so |p(s)| >= min(|g0|, |g1|) - 4/27
      * (the rate terms that point towards zero) */
     double sg = g0 > 0 ? 1.0 : -1.0;
-    if (fmin(sg * g0, sg * g1) > (4.0 / 27.0) * (fmax(-sg * d0, 0.0) + fmax(sg * d1, 0.0)))
+    /* fmin and fmax written out (the values are finite: the step ended on a finite state), so
+     * that this test, made for every side of every clearance at every step, calls no function */
+    double a0 = sg * g0, a1 = sg * g1, r0 = -sg * d0, r1 = sg * d1;
+    if ((a0 < a1 ? a0 : a1) > (4.0 / 27.0) * ((r0 > 0.0 ? r0 : 0.0) + (r1 > 0.0 ? r1 : 0.0)))
         return -1.0;
     /* p(s) = g0 h00 + d0 h10 + g1 h01 + d1 h11; p'(s) = A s^2 + B s + C */
     double A = 6 * g0 + 3 * d0 - 6 * g1 + 3 * d1;
@@ -109,11 +112,15 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
     return -1.0;
 }
 
-/* The clearance coordinates and rates at the current (t, y), computed once per state. */
+/* The clearance coordinates and rates at the current (t, y), computed once per state; the sine
+ * and cosine of Omega t from the cache (the step's last stage was at its end). */
 void gd_sim_clearances_now(gd_sim *s)
 {
-    if (!s->cx_ok)
-        gd_model_clearances(&s->m, s->t, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
+    if (!s->cx_ok) {
+        double sn, cs;
+        sim_phase_at(s, s->t, &sn, &cs);
+        gd_model_clearances_sc(&s->m, s->t, sn, cs, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
+    }
     s->cx_ok = 1;
 }
 

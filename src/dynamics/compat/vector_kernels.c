@@ -360,15 +360,14 @@ static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z
     const sunindextype n = LEN(z);
     sunrealtype *zd = DAT(z);
     enum { MAXV = 16 };
-    int aliased = nvec > MAXV;
-    if (!aliased) { /* the data pointers and the aliasing test in one pass */
+    if (nvec <= MAXV) { /* the data pointers and the aliasing test in one pass; z among X[1..]:
+                         * the vector-outer loop below */
         const sunrealtype *xs[MAXV];
         xs[0] = DAT(X[0]);
-        for (int i = 1; i < nvec; i++) {
-            aliased |= X[i] == z;
+        int i = 1;
+        for (; i < nvec && X[i] != z; i++)
             xs[i] = DAT(X[i]);
-        }
-        if (!aliased) {
+        if (i == nvec) {
             lc_sum(nvec, c, xs, zd, n, X[0] == z && c[0] == 1.0);
             return 0;
         }
