@@ -26,6 +26,7 @@
 #define GD_OPTIMIZE_H
 
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_ltca.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -302,6 +303,53 @@ typedef struct gd_opt_compare_problem {
     const gd_opt_compare_result *res;
 } gd_opt_compare_problem;
 
+
+/* ---- the results of the optimize and compare-optimizers rows (gd_analysis.h) ---- */
+
+/* optimize: the runs of the case's [optimize] algorithm on its first objective, the best kept;
+ * for the gear, the LTE of the unmodified pair, the paper's Table 2 and the optimum. */
+#define GD_OPTIMIZE_MAXDIM 1000 /* the schema's largest dimension */
+typedef struct gd_optimize_outcome {
+    int objective, dim, gear, runs;
+    gd_opt_result *res;      /* runs */
+    int best;
+    double *run_f;           /* runs: each run's best */
+    char names[GD_OPTIMIZE_MAXDIM][48];
+    const char *name_ptr[GD_OPTIMIZE_MAXDIM];
+    double lower[GD_OPTIMIZE_MAXDIM], upper[GD_OPTIMIZE_MAXDIM];
+    const double *reference; /* Table 2 (gear) or the true minimiser */
+    double table2[GD_OPT_GEAR_DIM];
+    gd_ltca_result lte[3];   /* gear: unmodified, Table 2, optimum */
+    double active_mm;
+    gd_opt_settings settings;
+    int threads;
+    double wall_s;           /* the runs' wall time summed */
+    gd_opt_gear *gear_problem;
+    gd_opt_testfn tf;
+} gd_optimize_outcome;
+
+/* compare-optimizers: every optimiser of the case on every objective (and dimension). */
+#define GD_COMPARE_MAX 64
+typedef struct gd_compare_entry {
+    int objective, dim;
+    double shift;
+    gd_opt_gear *gear;
+    gd_opt_testfn *tf;          /* runs instances */
+    gd_opt_problem *pb;         /* runs */
+    const gd_opt_problem **pp;  /* runs */
+    gd_opt_compare_result res;
+} gd_compare_entry;
+
+typedef struct gd_compare_outcome {
+    int n;
+    gd_compare_entry p[GD_COMPARE_MAX];
+    int runs;
+    long *grid;                 /* evaluation counts of the convergence and ECDF tables */
+    int ngrid;
+    gd_opt_compare_settings settings;
+    int threads;
+    double wall_s;              /* the problems' wall time summed */
+} gd_compare_outcome;
 
 #ifdef __cplusplus
 }

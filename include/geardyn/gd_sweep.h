@@ -13,8 +13,8 @@
  * written as one self-checking text record (gd_sweep_record_format) that holds everything
  * the final files and a continuation need; a journal of such records is read back by
  * gd_sweep_journal_load to resume an interrupted sweep. The final tables and summary.json
- * (gd_sweep_write_outputs) are written from the point array in slot order, so neither the
- * thread count, the ranks nor an interruption change them. */
+ * (the sweep row of gd_analysis.h) are written from the point array in slot order, so neither
+ * the thread count, the ranks nor an interruption change them. */
 #ifndef GD_SWEEP_H
 #define GD_SWEEP_H
 
@@ -166,6 +166,12 @@ typedef struct gd_sweep_interval {
 GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, gd_sweep_interval **iv,
                                      int *niv, gd_error *err);
 
+
+/* The result of the sweep row of the table of analyses (gd_analysis.h): the plan and every point. */
+typedef struct gd_sweep_outcome {
+    gd_sweep_plan plan;
+    gd_sweep_point *pts;
+} gd_sweep_outcome;
 
 #ifdef __cplusplus
 }

@@ -155,6 +155,12 @@ GD_API int gd_workprec_cheapest(const gd_wp_result *res, double target, int with
 /* The Poincare error metric: max over k < npts and i < n of |a_ki - b_ki| / (1 + max_k |b_ki|). */
 GD_API double gd_workprec_poincare_error(const double *a, const double *b, long npts, int n);
 
+/* The result of the work-precision row of the table of analyses (gd_analysis.h). */
+typedef struct gd_workprec_outcome {
+    gd_model model;
+    gd_wp_result res;
+} gd_workprec_outcome;
+
 #ifdef __cplusplus
 }
 #endif

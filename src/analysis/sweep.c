@@ -1,6 +1,5 @@
 /* The `sweep` analysis: the grid, the chains, and running them in parallel (OpenMP). */
 #include "geardyn/gd_sweep.h"
-#include "geardyn/gd_analysis.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_version.h"
 #include "../case/case_keys.h"
@@ -562,8 +561,11 @@ static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1,
             out->src_line[k - schema] = base->src_line[from];
         }
     }
+    /* resolved as gd_case_resolve resolves a response (which has no checks of its own) */
     if (st == GD_OK)
-        st = gd_case_resolve(out, err);
+        st = gd_case_check(out, err);
+    if (st == GD_OK)
+        st = gd_scene_resolve(out, err);
     if (st == GD_OK)
         st = gd_model_build(out, m, err);
     if (st != GD_OK) {
