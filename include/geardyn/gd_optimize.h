@@ -197,20 +197,6 @@ GD_API gd_status gd_opt_gear_lte_pp(const gd_case *c, double *lte_pp_arcsec, gd_
 /* The paper's optimum (Table 2) in the same variables: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 35 mm. */
 GD_API void gd_opt_gear_table2(double *x);
 
-/* ---- the case's [optimize] section ----------------------------------------------------------- */
-
-/* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
- * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets. */
-GD_API gd_status gd_opt_resolve_case(gd_case *c, gd_error *err);
-/* The case's optimizers list (compare-optimizers) or its algorithm (optimize): count, <= max. */
-GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
-/* The case's objectives (gd_opt_objective), count <= max. */
-GD_API int gd_opt_case_objectives(const gd_case *c, int *objs, int max);
-/* The evaluation budget of one run: budget_evals, or population (iterations + 1). */
-GD_API long gd_opt_case_budget(const gd_case *c);
-/* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */
-GD_API unsigned long gd_opt_run_seed(const gd_case *c, int r);
-GD_API unsigned long gd_opt_instance_seed(const gd_case *c, int r);
 
 /* ---- comparison -------------------------------------------------------------------------------- */
 

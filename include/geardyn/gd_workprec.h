@@ -136,10 +136,6 @@ typedef struct gd_wp_hooks {
     int (*done)(void *user, const char *what, const gd_wp_run *run, const gd_wp_result *res);
 } gd_wp_hooks;
 
-/* The method families of the case's [workprecision] (families, root_finding_off): n <= max. */
-GD_API gd_status gd_workprec_families(const gd_case *c, gd_wp_family *fam, int max, int *n, gd_error *err);
-/* Cross-key checks of [workprecision] (called by gd_case_resolve). */
-GD_API gd_status gd_workprec_check_case(const gd_case *c, gd_error *err);
 
 GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_wp_hooks *hooks, void *user,
                                  gd_wp_result *res, gd_error *err);

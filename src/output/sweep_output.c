@@ -5,6 +5,7 @@
 #include "geardyn/gd_version.h"
 #include "json_util.h"
 #include "../case/case_keys.h"
+#include "../analysis/analysis_internal.h"
 
 #include <errno.h>
 #include <jansson.h>

@@ -5,6 +5,8 @@
 #include "geardyn/gd_workprec.h"
 #include "geardyn/gd_optimize.h"
 #include "../case/case_keys.h"
+#include "../analysis/analysis_internal.h"
+#include "../optimisation/opt_internal.h"
 
 #include <stdio.h>
 #include <string.h>
