@@ -45,7 +45,8 @@ typedef struct cli_row {
     void (*announce)(const char *dir, const gd_case *c);
     void (*after_run)(const cli_progress *p, gd_status st);
     /* *note: a note for the end of the run (gnuplot missing) */
-    void (*pictures)(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+    void (*pictures)(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                     const char **note);
     void (*report)(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
     /* an analysis whose run needs more of the command line (the sweep), which then calls
      * gd_analysis_run_in itself */
@@ -58,28 +59,34 @@ void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env);
 
 int cli_response_progress(void *user, long done, long total);
 void cli_response_after_run(const cli_progress *p, gd_status st);
-void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
 void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 /* the four-panel figure of the local analysis (response.png, response.svg) */
 void cli_local_draw(const gd_case *c, const gd_response_outcome *r, gd_run_dir *out);
 
-void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                      const char **note);
 void cli_tca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
-void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                       const char **note);
 void cli_ltca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 int cli_workprec_start(void *user, const char *what, const char *label, int index, int total);
 int cli_workprec_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res);
 void cli_workprec_announce(const char *dir, const gd_case *c);
 void cli_workprec_after_run(const cli_progress *p, gd_status st);
-void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
 void cli_workprec_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r);
-void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_compare_settings *s);
-void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note);
+void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                          const char **note);
 void cli_compare_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 /* The sweep: the journal and --resume, signals, the progress line and MPI ranks around the row's

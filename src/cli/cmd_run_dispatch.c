@@ -107,13 +107,12 @@ int cmd_run(int argc, char **argv)
     else
         default_out_dir(a.case_path, dir, sizeof dir);
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
+    static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);
     if (r && r->own)
         rc = r->own(&a, &c, dir);
-    else if (t && r)
-        rc = run_row(&a, &c, t, r, dir);
     else
-        rc = 1;
+        rc = run_row(&a, &c, t, r ? r : &plain, dir);
     gd_case_free(&c);
     return rc;
 }

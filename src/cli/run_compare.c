@@ -100,7 +100,8 @@ static gd_status draw(const char *dir, const gd_compare_outcome *C, gd_error *er
     return st;
 }
 
-void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                          const char **note)
 {
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};

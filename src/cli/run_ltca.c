@@ -71,7 +71,8 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
     return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
-void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                       const char **note)
 {
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};

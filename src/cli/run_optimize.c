@@ -64,7 +64,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
     return gd_gnuplot_draw(dir, script, names, npics, err);
 }
 
-void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note)
 {
     const gd_optimize_outcome *o = result;
     if (gd_gnuplot_wanted(c->plots, note)) {

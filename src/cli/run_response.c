@@ -68,7 +68,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_model *m, cons
     return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
-void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note)
 {
     const gd_response_outcome *r = result;
     if (c->plots && gd_gnuplot_available())

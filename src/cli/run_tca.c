@@ -55,7 +55,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_tca_result *r,
     return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
-void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                      const char **note)
 {
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};

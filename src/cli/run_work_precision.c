@@ -259,7 +259,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
     return st;
 }
 
-void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
+void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note)
 {
     const gd_workprec_outcome *r = result;
     if (gd_gnuplot_wanted(c->plots, note)) {
