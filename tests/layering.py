@@ -34,7 +34,7 @@ import sys
 
 # The layers, lowest first; a folder under src/ is a layer.
 LAYERS = ['core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
-          'optimisation', 'analysis', 'output', 'cli']
+          'optimisation', 'analysis', 'output', 'run', 'cli']
 
 # The allowed arrows: what each layer may include (itself and the layers below it).
 ALLOWED = {
@@ -52,8 +52,11 @@ ALLOWED = {
                      'optimisation', 'analysis'},
     'output':       {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
                      'optimisation', 'analysis', 'output'},
+    # the table of analyses: each row runs an analysis and writes its files through output
+    'run':          {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
+                     'optimisation', 'analysis', 'output', 'run'},
     'cli':          {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
-                     'optimisation', 'analysis', 'output', 'cli'},
+                     'optimisation', 'analysis', 'output', 'run', 'cli'},
 }
 
 # The layer of each public header. ANY: includable from every layer (a generated constant header).
@@ -68,7 +71,7 @@ PUBLIC = {
     'gd_model.h': 'dynamics', 'gd_sim.h': 'dynamics',
     'gd_scene.h': 'scene',
     'gd_optimize.h': 'optimisation',
-    'gd_analysis.h': 'analysis', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
+    'gd_analysis.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
     'gd_workprec.h': 'analysis', 'gd_spectrum.h': 'analysis', 'gd_periodic.h': 'analysis',
     'gd_output.h': 'output',
     'geardyn.h': 'cli',            # the umbrella: the command line only

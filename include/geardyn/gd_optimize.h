@@ -200,24 +200,9 @@ GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings 
                                     gd_error *err);
 /* The paper's optimum (Table 2) in the same variables: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 35 mm. */
 GD_API void gd_opt_gear_table2(double *x);
-
-/* ---- the case's [optimize] section ----------------------------------------------------------- */
-
-/* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
- * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets; for the gear
- * objective, that the box fits on the case's pair (gd_pair_from_case of the resolved case). */
-GD_API gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err);
-/* The [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
+/* The case's [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
 GD_API void gd_opt_gear_bounds(const gd_case *c, double lower[6], double upper[6]);
-/* The case's optimizers list (compare-optimizers) or its algorithm (optimize): count, <= max. */
-GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
-/* The case's objectives (gd_opt_objective), count <= max. */
-GD_API int gd_opt_case_objectives(const gd_case *c, int *objs, int max);
-/* The evaluation budget of one run: budget_evals, or population (iterations + 1). */
-GD_API long gd_opt_case_budget(const gd_case *c);
-/* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */
-GD_API unsigned long gd_opt_run_seed(const gd_case *c, int r);
-GD_API unsigned long gd_opt_instance_seed(const gd_case *c, int r);
+
 
 /* ---- comparison -------------------------------------------------------------------------------- */
 
@@ -310,6 +295,53 @@ typedef struct gd_opt_compare_problem {
     const gd_opt_compare_result *res;
 } gd_opt_compare_problem;
 
+
+/* ---- the results of the optimize and compare-optimizers rows (gd_analysis.h) ---- */
+
+/* optimize: the runs of the case's [optimize] algorithm on its first objective, the best kept;
+ * for the gear, the LTE of the unmodified pair, the paper's Table 2 and the optimum. */
+#define GD_OPTIMIZE_MAXDIM 1000 /* the schema's largest dimension */
+typedef struct gd_optimize_outcome {
+    int objective, dim, gear, runs;
+    gd_opt_result *res;      /* runs */
+    int best;
+    double *run_f;           /* runs: each run's best */
+    char names[GD_OPTIMIZE_MAXDIM][48];
+    const char *name_ptr[GD_OPTIMIZE_MAXDIM];
+    double lower[GD_OPTIMIZE_MAXDIM], upper[GD_OPTIMIZE_MAXDIM];
+    const double *reference; /* Table 2 (gear) or the true minimiser */
+    double table2[GD_OPT_GEAR_DIM];
+    gd_ltca_result lte[3];   /* gear: unmodified, Table 2, optimum */
+    double active_mm;
+    gd_opt_settings settings;
+    int threads;
+    double wall_s;           /* the runs' wall time summed */
+    gd_opt_gear *gear_problem;
+    gd_opt_testfn tf;
+} gd_optimize_outcome;
+
+/* compare-optimizers: every optimiser of the case on every objective (and dimension). */
+#define GD_COMPARE_MAX 64
+typedef struct gd_compare_entry {
+    int objective, dim;
+    double shift;
+    gd_opt_gear *gear;
+    gd_opt_testfn *tf;          /* runs instances */
+    gd_opt_problem *pb;         /* runs */
+    const gd_opt_problem **pp;  /* runs */
+    gd_opt_compare_result res;
+} gd_compare_entry;
+
+typedef struct gd_compare_outcome {
+    int n;
+    gd_compare_entry p[GD_COMPARE_MAX];
+    int runs;
+    long *grid;                 /* evaluation counts of the convergence and ECDF tables */
+    int ngrid;
+    gd_opt_compare_settings settings;
+    int threads;
+    double wall_s;              /* the problems' wall time summed */
+} gd_compare_outcome;
 
 #ifdef __cplusplus
 }

@@ -1,38 +1,40 @@
-/* Writing results: atomic files, summary.json, CSV tables, the event log, pictures. */
+/* Writing results: the output directory of a run, through which every file of a run is written,
+ * and reading an event log back. The standard files themselves are written by the rows of the
+ * table of analyses (gd_analysis.h: write, summary). */
 #ifndef GD_OUTPUT_H
 #define GD_OUTPUT_H
 
 #include <stdio.h>
 
-#include "geardyn/gd_response.h"
 #include "geardyn/gd_sweep.h"
-#include "geardyn/gd_workprec.h"
-#include "geardyn/gd_tca.h"
-#include "geardyn/gd_ltca.h"
-#include "geardyn/gd_optimize.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* A file written under a temporary name and renamed into place on commit, so that a
- * reader never sees a half-written file. */
-typedef struct gd_atomic_file {
-    FILE *fp;
-    char path[1200];
-    char tmp[1240];
-} gd_atomic_file;
+/* The output directory of a run. Every file of a run is opened and committed through it: a file
+ * is written under a temporary name and renamed into place on commit (a reader never sees a
+ * half-written file), and the names committed, in order, with those added by gd_run_dir_add
+ * (pictures drawn into the directory by other means), are the list summary.json gives. The
+ * directory is made (mkdir -p) at the first file, so that a run that fails first leaves nothing.
+ * A name that starts with '.' is a working file of the run (the sweep's journal) and is not
+ * listed. */
+typedef struct gd_run_dir gd_run_dir;
 
-GD_API gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err);
-GD_API gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err);
-GD_API void gd_atomic_abort(gd_atomic_file *f);
-
-/* mkdir -p */
-GD_API gd_status gd_mkdir_p(const char *dir, gd_error *err);
-
-/* The event log: one CSV row per event (header with units). */
-GD_API void gd_eventlog_header(FILE *fp);
-GD_API void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int recording);
+GD_API gd_status gd_run_dir_open(const char *dir, gd_run_dir **out, gd_error *err);
+/* Discards the files still open (nothing committed is removed) and frees d; NULL is allowed. */
+GD_API void gd_run_dir_close(gd_run_dir *d);
+GD_API const char *gd_run_dir_path(const gd_run_dir *d);
+/* Make the directory now (the first gd_run_dir_create does it otherwise). */
+GD_API gd_status gd_run_dir_make(gd_run_dir *d, gd_error *err);
+/* A new file name of the run, open for writing in *fp until gd_run_dir_commit or _discard. */
+GD_API gd_status gd_run_dir_create(gd_run_dir *d, const char *name, FILE **fp, gd_error *err);
+GD_API gd_status gd_run_dir_commit(gd_run_dir *d, FILE *fp, gd_error *err);
+GD_API void gd_run_dir_discard(gd_run_dir *d, FILE *fp);
+/* A file written into the directory by other means joins the list. */
+GD_API gd_status gd_run_dir_add(gd_run_dir *d, const char *name, gd_error *err);
+/* The files of the run so far, in order (valid until the next call on d). */
+GD_API const char *const *gd_run_dir_files(const gd_run_dir *d, int *n);
 
 /* Summary of an event log file (geardyn events). */
 typedef struct gd_eventlog_filter {
@@ -58,43 +60,9 @@ typedef struct gd_eventlog_summary {
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err);
 
-/* summary.json of a response run: the resolved case (value, unit, source of every key),
- * the derived geometry and model scales, solver statistics and the results. */
-GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, const char *const *files, int nfiles,
-                                           gd_error *err);
-
-/* ---- tca ---- */
-/* The summary.json of a tca run (stable keys: results.gte_pp_arcsec.left/right,
- * results.edge_contact.left/right, results.contact_ratio_transverse, results.contact_ratio_overlap,
- * results.operating_pressure_angle_deg). */
-GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const gd_tca_result *r,
-                                      const char *const *files, int nfiles, gd_error *err);
-
-/* ---- ltca ---- */
-/* The summary.json of an ltca run (stable keys: results.lte_pp_arcsec,
- * results.mean_mesh_stiffness_n_per_m.left/right, results.load_share.left/right). */
-GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const gd_ltca_result *r,
-                                       const char *const *files, int nfiles, gd_error *err);
-
-/* ---- optimize ---- */
-GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, const gd_opt_optimize_summary *s,
-                                           const char *const *files, int nfiles, gd_error *err);
-
-/* ---- compare ---- */
-/* One summary over every problem compared (each with the same optimisers, runs and budget); adds
- * the runtime distribution pooled over the problems at 1 %, 10 % and 100 % of the budget. */
-GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, const gd_opt_compare_problem *pb,
-                                          int nproblems, const char *const *files, int nfiles, int threads,
-                                          gd_error *err);
-
-/* ---- workprec ---- */
-/* summary.json of a work-precision run (written atomically into dir). */
-GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_wp_result *res, const char *const *files, int nfiles,
-                                           gd_error *err);
-
-/* ---- sweep journal ---- */
+/* ---- the sweep's journal ----
+ * What a program that distributes the points of a sweep (over processes, over MPI ranks) or
+ * resumes an interrupted one needs: the command line's --resume and MPI driver use these. */
 /* Journal records: one text line per point ending in a CRC-32, e.g. for a journal file or a
  * message between MPI ranks. format: a malloc'd line with its '\n' (free it). */
 GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_point *pt, char **line, size_t *len,
@@ -113,17 +81,6 @@ GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t le
  * gives no points; a journal of another sweep is GD_ERR_INPUT. */
 GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
                                        size_t *text_len, int *loaded, int *ignored, gd_error *err);
-
-/* ---- sweep tables ---- */
-/* The final files, atomically, from the points in slot order: sweep.csv, bifurcation.csv
- * and summary.json (which lists files[0..nfiles-1] as the files of the run). */
-GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
-                                       gd_error *err);
-/* summary.json of a sweep: the settings, failed points, motion tallies, branches and the
- * hysteresis intervals (gd_sweep_hysteresis). */
-GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
-                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
-                                        gd_error *err);
 
 #ifdef __cplusplus
 }

@@ -53,6 +53,27 @@ typedef struct gd_response_result {
     gd_sim_stats stats;
 } gd_response_result;
 
+/* The local analysis of a response ([output] response_variable): the variable's uniform samples
+ * of the recorded window, its Poincare points and its amplitude spectrum (Hann window). */
+typedef struct gd_local {
+    int kind, index;         /* internal: which variable */
+    char name[32];           /* as [output] response_variable names it */
+    double *t, *x, *xd;      /* uniform samples: s, um, m/s */
+    size_t n, cap;
+    double *px, *pxd;        /* Poincare points: um, m/s */
+    size_t np, pcap;
+    double *freq_hz, *amp_um; /* the spectrum, n/2 + 1 lines */
+    size_t nfreq;
+    double spec_amax;        /* largest spectral amplitude */
+} gd_local;
+
+/* The result of the response row of the table of analyses (gd_analysis.h). */
+typedef struct gd_response_outcome {
+    gd_model model;          /* the model the case built */
+    gd_response_result res;
+    gd_local local;          /* [output] response_variable: samples, Poincare points, spectrum */
+} gd_response_outcome;
+
 /* Options that are not in the case (tests set them; the CLI uses the defaults). */
 typedef struct gd_response_opts {
     double periodicity_tol;      /* relative tolerance for equal Poincare points (0: run.periodicity_tol) */

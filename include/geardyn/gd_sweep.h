@@ -13,8 +13,8 @@
  * written as one self-checking text record (gd_sweep_record_format) that holds everything
  * the final files and a continuation need; a journal of such records is read back by
  * gd_sweep_journal_load to resume an interrupted sweep. The final tables and summary.json
- * (gd_sweep_write_outputs) are written from the point array in slot order, so neither the
- * thread count, the ranks nor an interruption change them. */
+ * (the sweep row of gd_analysis.h) are written from the point array in slot order, so neither
+ * the thread count, the ranks nor an interruption change them. */
 #ifndef GD_SWEEP_H
 #define GD_SWEEP_H
 
@@ -95,35 +95,18 @@ typedef struct gd_sweep_point {
     gd_modes md_final;
 } gd_sweep_point;
 
-/* Check the [sweep] keys of a resolved case (gd_case_resolve calls it for analysis =
- * sweep): the parameters name numeric keys, every value of the grid is inside the key's
- * range (and whole for an integer key), log spacing has positive bounds, the responses
- * exist in the model. Messages name the case file line. */
-GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err);
-/* Value i of axis a (0: parameter, 1: parameter2) of the case's grid; i = 0 gives `from`
- * and i = points - 1 gives `to` exactly. */
-GD_API double gd_sweep_axis_value(const gd_case *c, int axis, int i);
 
 GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_error *err);
 GD_API void gd_sweep_plan_free(gd_sweep_plan *p);
 /* An array of plan->nslots points, all pending, with their slot, chain and values. */
 GD_API gd_status gd_sweep_points_create(const gd_sweep_plan *p, gd_sweep_point **pts, gd_error *err);
 GD_API void gd_sweep_points_free(const gd_sweep_plan *p, gd_sweep_point *pts);
-/* Forget the result of a point (back to pending). */
-GD_API void gd_sweep_point_clear(gd_sweep_point *pt);
 
 /* The case and model of a slot: a deep copy of the base case with the swept keys set,
  * resolved again (derived values follow unless pinned), and its model. Free out with
  * gd_case_free. */
 GD_API gd_status gd_sweep_point_case(const gd_case *base, const gd_sweep_plan *p, int slot, gd_case *out,
                                      gd_model *m, gd_error *err);
-/* The initial state of a point: the case's initial condition when prev is NULL or failed,
- * else prev's final state with its contact modes made consistent with this point's model
- * (the clearances may have changed). Continuation point k starts from exactly this. */
-GD_API gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
-                                      gd_modes *md0, gd_error *err);
-/* Responses of the plan at a Poincare point (t_s, y) of model m: out[nresp]. */
-GD_API void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, const double *y, double *out);
 
 typedef struct gd_sweep_opts {
     int threads;             /* OpenMP threads (0: the OpenMP default) */
@@ -166,6 +149,12 @@ typedef struct gd_sweep_interval {
 GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, gd_sweep_interval **iv,
                                      int *niv, gd_error *err);
 
+
+/* The result of the sweep row of the table of analyses (gd_analysis.h): the plan and every point. */
+typedef struct gd_sweep_outcome {
+    gd_sweep_plan plan;
+    gd_sweep_point *pts;
+} gd_sweep_outcome;
 
 #ifdef __cplusplus
 }

@@ -136,10 +136,6 @@ typedef struct gd_wp_hooks {
     int (*done)(void *user, const char *what, const gd_wp_run *run, const gd_wp_result *res);
 } gd_wp_hooks;
 
-/* The method families of the case's [workprecision] (families, root_finding_off): n <= max. */
-GD_API gd_status gd_workprec_families(const gd_case *c, gd_wp_family *fam, int max, int *n, gd_error *err);
-/* Cross-key checks of [workprecision] (called by gd_case_resolve). */
-GD_API gd_status gd_workprec_check_case(const gd_case *c, gd_error *err);
 
 GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_wp_hooks *hooks, void *user,
                                  gd_wp_result *res, gd_error *err);
@@ -154,6 +150,12 @@ GD_API int gd_workprec_cheapest(const gd_wp_result *res, double target, int with
 
 /* The Poincare error metric: max over k < npts and i < n of |a_ki - b_ki| / (1 + max_k |b_ki|). */
 GD_API double gd_workprec_poincare_error(const double *a, const double *b, long npts, int n);
+
+/* The result of the work-precision row of the table of analyses (gd_analysis.h). */
+typedef struct gd_workprec_outcome {
+    gd_model model;
+    gd_wp_result res;
+} gd_workprec_outcome;
 
 #ifdef __cplusplus
 }

@@ -2,7 +2,6 @@
  * multipliers by GSL's nonsymmetric eigensolver, and the model at a parameter value (a mesh
  * frequency, or a case key with the model built again). */
 #include "shooting.h"
-#include "geardyn/gd_analysis.h"
 #include "geardyn/gd_scene.h"
 
 #include <gsl/gsl_eigen.h>
@@ -126,8 +125,11 @@ GD_API gd_status gd_model_at_case_key(double p, gd_model *m, void *ctx, gd_error
 {
     const gd_case_param *a = ctx;
     gd_status st = gd_case_set_number(a->c, a->key, a->scale * p, err);
+    /* resolved as gd_case_resolve resolves a response: the analysis's own keys do not change */
     if (st == GD_OK)
-        st = gd_case_resolve(a->c, err);
+        st = gd_case_check(a->c, err);
+    if (st == GD_OK)
+        st = gd_scene_resolve(a->c, err);
     if (st == GD_OK)
         st = gd_model_build(a->c, m, err);
     return st == GD_OK ? GD_OK : gd_error_prefix(err, "the model at %s = %.9g", a->key, a->scale * p);

@@ -1,6 +1,6 @@
 /* The `sweep` analysis: the grid, the chains, and running them in parallel (OpenMP). */
 #include "geardyn/gd_sweep.h"
-#include "geardyn/gd_analysis.h"
+#include "analysis_internal.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_version.h"
 #include "../case/case_keys.h"
@@ -45,7 +45,7 @@ static void describe(const gd_keyspec *k, char *buf, size_t len)
                  k->max_open ? ")" : "]", k->unit[0] ? " " : "", k->unit);
 }
 
-GD_API double gd_sweep_axis_value(const gd_case *c, int axis, int i)
+double gd_sweep_axis_value(const gd_case *c, int axis, int i)
 {
     int n = axis ? c->sweep_points2 : c->sweep_points;
     double a = axis ? c->sweep_from2 : c->sweep_from, b = axis ? c->sweep_to2 : c->sweep_to;
@@ -185,7 +185,7 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
     return GD_OK;
 }
 
-GD_API gd_status gd_sweep_check_case(const gd_case *c, gd_error *err)
+gd_status gd_sweep_check_case(const gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     gd_status st = check_axis(c, 0, err);
@@ -424,7 +424,7 @@ GD_API gd_status gd_sweep_points_create(const gd_sweep_plan *p, gd_sweep_point *
     return GD_OK;
 }
 
-GD_API void gd_sweep_point_clear(gd_sweep_point *pt)
+void gd_sweep_point_clear(gd_sweep_point *pt)
 {
     free(pt->poincare);
     pt->poincare = NULL;
@@ -562,8 +562,11 @@ static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1,
             out->src_line[k - schema] = base->src_line[from];
         }
     }
+    /* resolved as gd_case_resolve resolves a response (which has no checks of its own) */
     if (st == GD_OK)
-        st = gd_case_resolve(out, err);
+        st = gd_case_check(out, err);
+    if (st == GD_OK)
+        st = gd_scene_resolve(out, err);
     if (st == GD_OK)
         st = gd_model_build(out, m, err);
     if (st != GD_OK) {
@@ -581,7 +584,7 @@ GD_API gd_status gd_sweep_point_case(const gd_case *base, const gd_sweep_plan *p
     return point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], out, m, err);
 }
 
-GD_API gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
+gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
                                       gd_modes *md0, gd_error *err)
 {
     if (!prev || prev->status != GD_POINT_DONE)
@@ -592,7 +595,7 @@ GD_API gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const
     return gd_model_consistent_modes(m, 0.0, y0, md0, err);
 }
 
-GD_API void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, const double *y, double *out)
+void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, const double *y, double *out)
 {
     double t = t_s * m->omega_n;
     gd_modes md;

@@ -3,6 +3,7 @@
  * look and their cost, and the convergence order of the Poincare points with and without
  * event location. */
 #include "geardyn/gd_workprec.h"
+#include "analysis_internal.h"
 #include "geardyn/gd_scene.h"
 #include "../core/clock.h"
 
@@ -46,7 +47,7 @@ static gd_status parse_token(const char *tok, gd_wp_family *f, gd_error *err)
     return GD_OK;
 }
 
-GD_API gd_status gd_workprec_families(const gd_case *c, gd_wp_family *fam, int max, int *n, gd_error *err)
+gd_status gd_workprec_families(const gd_case *c, gd_wp_family *fam, int max, int *n, gd_error *err)
 {
     *n = 0;
     char buf[sizeof c->wp_families];
@@ -77,7 +78,7 @@ GD_API gd_status gd_workprec_families(const gd_case *c, gd_wp_family *fam, int m
     return GD_OK;
 }
 
-GD_API gd_status gd_workprec_check_case(const gd_case *c, gd_error *err)
+gd_status gd_workprec_check_case(const gd_case *c, gd_error *err)
 {
     gd_wp_family fam[GD_WP_MAX_FAMILIES];
     int n;

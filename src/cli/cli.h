@@ -29,38 +29,73 @@ int cli_fail(const gd_error *err);
  * OpenMP). */
 int cli_threads(int requested);
 
-/* The response variable of the local analysis ([output] response_variable). */
-typedef struct cli_variable {
-    int kind, index;
-    char name[32];
-} cli_variable;
+/* Progress on stderr while an analysis runs (the user of gd_run_env). */
+typedef struct cli_progress {
+    int quiet, tty;
+    long last_pct;
+    const cli_case_args *args;
+    const char *note;        /* for the end of the run: why there are no pictures */
+} cli_progress;
 
-typedef struct cli_local {
-    cli_variable var;
-    double *t, *x, *xd;      /* uniform samples: s, um, m/s */
-    size_t n, cap;
-    double *px, *pxd;        /* Poincare points */
-    size_t np, pcap;
-    double spec_amax;        /* largest spectral amplitude (for the plot's floor) */
-} cli_local;
+/* The command line's part of an analysis of the library's table: what it prints before the run
+ * and after it (the progress line's end), its pictures (drawn after the tables, added to the
+ * run's files before summary.json), its lines on stdout. Any may be NULL. */
+typedef struct cli_row {
+    int analysis;
+    void (*announce)(const char *dir, const gd_case *c);
+    void (*after_run)(const cli_progress *p, gd_status st);
+    /* *note: a note for the end of the run (gnuplot missing) */
+    void (*pictures)(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                     const char **note);
+    void (*report)(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+    /* an analysis whose run needs more of the command line (the sweep), which then calls
+     * gd_analysis_run_in itself */
+    int (*own)(const cli_case_args *a, gd_case *c, const char *dir);
+} cli_row;
 
-int cli_variable_resolve(const gd_case *c, const gd_model *m, cli_variable *v, gd_error *err);
-void cli_variable_value(const gd_model *m, const cli_variable *v, double t, const double *y, double *x, double *xdot);
-int cli_local_add_sample(cli_local *L, double t_s, double x, double xdot);
-int cli_local_add_poincare(cli_local *L, double x, double xdot);
-void cli_local_free(cli_local *L);
-gd_status cli_local_write(const char *dir, const gd_case *c, const gd_model *m, const gd_response_result *r,
-                          cli_local *L, const char **files, int *nfiles, int draw, gd_error *err);
+/* The environment of a run: *p (its user) from the arguments, the command line's hooks of every
+ * analysis (progress, pictures, the lines at the end). */
+void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env);
+
+int cli_response_progress(void *user, long done, long total);
+void cli_response_after_run(const cli_progress *p, gd_status st);
+void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
+void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+/* the four-panel figure of the local analysis (response.png, response.svg) */
+void cli_local_draw(const gd_case *c, const gd_response_outcome *r, gd_run_dir *out);
+
+void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                      const char **note);
+void cli_tca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                       const char **note);
+void cli_ltca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+
+int cli_workprec_start(void *user, const char *what, const char *label, int index, int total);
+int cli_workprec_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res);
+void cli_workprec_announce(const char *dir, const gd_case *c);
+void cli_workprec_after_run(const cli_progress *p, gd_status st);
+void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
+void cli_workprec_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+
+void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r);
+void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note);
+void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_compare_settings *s);
+void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                          const char **note);
+void cli_compare_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+
+/* The sweep: the journal and --resume, signals, the progress line and MPI ranks around the row's
+ * run (src/cli/run_sweep.c); dir: the output directory. */
+int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
+void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                        const char **note);
 
 int cmd_run(int argc, char **argv);
-/* The analyses behind `run`, one file each (dir: the output directory, not yet created). */
-int run_response(const cli_case_args *a, gd_case *c, const char *dir);
-int run_tca(const cli_case_args *a, gd_case *c, const char *dir);
-int run_ltca(const cli_case_args *a, gd_case *c, const char *dir);
-int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
-int run_work_precision(const cli_case_args *a, gd_case *c, const char *dir);
-int run_optimize(const cli_case_args *a, gd_case *c, const char *dir);
-int run_compare(const cli_case_args *a, gd_case *c, const char *dir);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 int cmd_keys(int argc, char **argv);

@@ -71,8 +71,8 @@ static int parse_events_args(int argc, char **argv, gd_eventlog_filter *f, const
     return 0;
 }
 
-/* Open the --csv file atomically (its directory and name from the path). */
-static gd_status open_csv(const char *csv, gd_atomic_file *af, gd_error *err)
+/* Open the --csv file atomically through a run directory (its directory and name from the path). */
+static gd_status open_csv(const char *csv, gd_run_dir **d, FILE **fp, gd_error *err)
 {
     char dir[1200], name[256];
     const char *slash = strrchr(csv, '/');
@@ -85,7 +85,10 @@ static gd_status open_csv(const char *csv, gd_atomic_file *af, gd_error *err)
         snprintf(dir, sizeof dir, ".");
         snprintf(name, sizeof name, "%s", csv);
     }
-    return gd_atomic_open(af, dir, name, err);
+    gd_status st = gd_run_dir_open(dir, d, err);
+    if (st == GD_OK)
+        st = gd_run_dir_create(*d, name, fp, err);
+    return st;
 }
 
 /* The table of events per clearance and the impact regimes. */
@@ -129,20 +132,15 @@ int cmd_events(int argc, char **argv)
         return rc;
     gd_error err = {0};
     gd_eventlog_summary sum;
-    gd_atomic_file af;
-    int have_csv = 0;
-    if (csv) {
-        if (open_csv(csv, &af, &err) != GD_OK)
-            return cli_fail(&err);
-        have_csv = 1;
-    }
-    gd_status st = gd_eventlog_summarise(path, &f, have_csv ? af.fp : NULL, &sum, &err);
-    if (st != GD_OK) {
-        if (have_csv)
-            gd_atomic_abort(&af);
-        return cli_fail(&err);
-    }
-    if (have_csv && gd_atomic_commit(&af, &err) != GD_OK)
+    gd_run_dir *d = NULL;
+    FILE *fp = NULL;
+    gd_status st = csv ? open_csv(csv, &d, &fp, &err) : GD_OK;
+    if (st == GD_OK)
+        st = gd_eventlog_summarise(path, &f, fp, &sum, &err);
+    if (st == GD_OK && fp)
+        st = gd_run_dir_commit(d, fp, &err);
+    gd_run_dir_close(d);
+    if (st != GD_OK)
         return cli_fail(&err);
     print_summary(path, &sum, csv);
     return 0;

@@ -1,33 +1,85 @@
-/* geardyn run: load the case and run the analysis its scene names, through the command line's
- * row of that analysis (each row: the library's analysis, its files and pictures). */
+/* geardyn run: load the case, find its analysis in the library's table (gd_analysis.h), run it,
+ * write its tables, draw its pictures, write summary.json and print what it found. The command
+ * line's part of each analysis (progress, pictures, the lines on stdout) is its row in rows[]. */
 #include "cli.h"
 
 #include <stdio.h>
 #include <string.h>
+#include <unistd.h>
 
-typedef int (*cli_runner)(const cli_case_args *a, gd_case *c, const char *dir);
-
-/* One row per analysis of the library's table (gd_analysis.h). */
-static const struct {
-    int analysis;
-    cli_runner run;
-} runners[] = {
-    { GD_ANALYSIS_RESPONSE, run_response },
-    { GD_ANALYSIS_SWEEP, run_sweep },
-    { GD_ANALYSIS_TCA, run_tca },
-    { GD_ANALYSIS_LTCA, run_ltca },
-    { GD_ANALYSIS_OPTIMIZE, run_optimize },
-    { GD_ANALYSIS_COMPARE_OPTIMIZERS, run_compare },
-    { GD_ANALYSIS_WORK_PRECISION, run_work_precision },
+static const cli_row rows[] = {
+    { GD_ANALYSIS_RESPONSE, NULL, cli_response_after_run, cli_response_pictures, cli_response_report, NULL },
+    { GD_ANALYSIS_SWEEP, NULL, NULL, cli_sweep_pictures, NULL, run_sweep },
+    { GD_ANALYSIS_TCA, NULL, NULL, cli_tca_pictures, cli_tca_report, NULL },
+    { GD_ANALYSIS_LTCA, NULL, NULL, cli_ltca_pictures, cli_ltca_report, NULL },
+    { GD_ANALYSIS_OPTIMIZE, NULL, NULL, cli_optimize_pictures, cli_optimize_report, NULL },
+    { GD_ANALYSIS_COMPARE_OPTIMIZERS, NULL, NULL, cli_compare_pictures, cli_compare_report, NULL },
+    { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_pictures,
+      cli_workprec_report, NULL },
 };
 
-/* The runner of a resolved case's analysis (gd_case_resolve refused any other). */
-static cli_runner cli_runner_for(int analysis)
+static const cli_row *cli_row_for(int analysis)
 {
-    for (size_t i = 0; i < sizeof runners / sizeof runners[0]; i++)
-        if (runners[i].analysis == analysis)
-            return runners[i].run;
-    return run_response;
+    for (size_t i = 0; i < sizeof rows / sizeof rows[0]; i++)
+        if (rows[i].analysis == analysis)
+            return &rows[i];
+    return NULL;
+}
+
+/* The hooks of gd_run_env: each finds the command line's row of the analysis it is called for
+ * (an analysis may run another one inside it: optimize runs ltca and tca). */
+static void on_ran(void *user, const gd_case *c, gd_status st)
+{
+    const cli_row *r = cli_row_for(c->analysis);
+    if (r && r->after_run)
+        r->after_run(user, st);
+}
+
+static void on_pictures(void *user, const gd_case *c, const void *result, gd_run_dir *out)
+{
+    cli_progress *p = user;
+    const cli_row *r = cli_row_for(c->analysis);
+    if (r && r->pictures)
+        r->pictures(p->args, c, result, out, &p->note);
+}
+
+static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir *out)
+{
+    cli_progress *p = user;
+    const cli_row *r = cli_row_for(c->analysis);
+    if (p->note && !p->args->quiet)
+        fprintf(stderr, "geardyn: note: %s\n", p->note);
+    if (r && r->report)
+        r->report(p->args, gd_run_dir_path(out), c, result);
+}
+
+void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
+{
+    *p = (cli_progress){a->quiet, !a->quiet && isatty(2), -1, a, NULL};
+    memset(env, 0, sizeof *env);
+    env->user = p;
+    env->threads = a->threads;
+    env->progress = cli_response_progress;
+    env->workprec.start = cli_workprec_start;
+    env->workprec.done = cli_workprec_done;
+    env->optimize_run = cli_optimize_run;
+    env->compare_problem = cli_compare_problem;
+    env->pictures = on_pictures;
+    env->ran = on_ran;
+    env->done = on_done;
+}
+
+/* Run the analysis of a resolved case through its row of the library's table. */
+static int run_row(const cli_case_args *a, const gd_case *c, const gd_analysis_type *t, const cli_row *r,
+                   const char *dir)
+{
+    gd_error err = {0};
+    cli_progress p;
+    gd_run_env env;
+    cli_run_env(&p, a, &env);
+    if (r->announce && !a->quiet)
+        r->announce(dir, c);
+    return gd_analysis_run_in(t, c, &env, dir, &err) == GD_OK ? 0 : cli_fail(&err);
 }
 
 static void default_out_dir(const char *case_path, char *out, size_t len)
@@ -54,7 +106,13 @@ int cmd_run(int argc, char **argv)
         snprintf(dir, sizeof dir, "%s", c.directory);
     else
         default_out_dir(a.case_path, dir, sizeof dir);
-    rc = cli_runner_for(c.analysis)(&a, &c, dir);
+    const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
+    static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
+    const cli_row *r = cli_row_for(c.analysis);
+    if (r && r->own)
+        rc = r->own(&a, &c, dir);
+    else
+        rc = run_row(&a, &c, t, r ? r : &plain, dir);
     gd_case_free(&c);
     return rc;
 }

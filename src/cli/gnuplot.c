@@ -114,15 +114,14 @@ int gd_gnuplot_wanted(int plots, const char **note)
     return 1;
 }
 
-void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, const char **files,
-                      int *nfiles)
+void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, gd_run_dir *out)
 {
     if (st != GD_OK) {
         fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr->msg);
         return;
     }
     for (int i = 0; i < npics; i++)
-        files[(*nfiles)++] = pics[i];
+        gd_run_dir_add(out, pics[i], NULL);
 }
 
 void gd_gnuplot_printf(gd_gnuplot_script *b, const char *fmt, ...)

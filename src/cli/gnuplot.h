@@ -3,6 +3,7 @@
 #define GD_CLI_GNUPLOT_H
 
 #include "geardyn/gd_error.h"
+#include "geardyn/gd_output.h"
 
 #include <stddef.h>
 
@@ -18,10 +19,9 @@ gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const
 /* The pictures of an analysis: 1 when they are wanted (plots) and gnuplot is there to draw them;
  * 0 otherwise, with *note set (for the end of the run) when only gnuplot is missing. */
 int gd_gnuplot_wanted(int plots, const char **note);
-/* After drawing (status st, error perr): the npics pictures join files (*nfiles of them), or a
- * note on stderr says why there are none. */
-void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, const char **files,
-                      int *nfiles);
+/* After drawing (status st, error perr): the npics pictures join the run's files, or a note on
+ * stderr says why there are none. */
+void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, gd_run_dir *out);
 
 /* A gnuplot script growing in memory: gd_gnuplot_printf appends to p (n characters, NUL
  * terminated); when memory runs out bad is set and nothing more is appended. Start from {0};

@@ -32,6 +32,8 @@ static volatile sig_atomic_t g_signal = 0;
 static void on_signal(int sig) { g_signal = sig; }
 
 typedef struct sweep_cli {
+    cli_progress base;       /* first: the user of the common hooks (cli_run_env) */
+    const cli_case_args *a;
     const gd_sweep_plan *p;
     gd_sweep_point *pts;
     int rank, size;
@@ -47,6 +49,12 @@ typedef struct sweep_cli {
     char remote_msg[1200];
     atomic_int fatal;        /* rank 0 could not journal a point */
     gd_error fatal_err;
+    char *text;              /* the journal as read or started (rank 0), as broadcast (others) */
+    size_t tlen;
+    int threads;             /* for the summary line */
+    double wall;
+    struct sigaction old_int, old_term;
+    int decided, rc;         /* the exit status is decided by the hooks (not to be cli_fail'ed) */
 } sweep_cli;
 
 static double now(void)
@@ -199,10 +207,11 @@ static void remove_stale_temporaries(const char *dir)
 }
 
 /* Rank 0: the output directory and the journal (read back with --resume, else new). */
-static gd_status prepare(sweep_cli *s, const cli_case_args *a, const char *dir, char **text, size_t *tlen,
+static gd_status prepare(sweep_cli *s, const cli_case_args *a, gd_run_dir *out, char **text, size_t *tlen,
                          gd_error *err)
 {
-    gd_status st = gd_mkdir_p(dir, err);
+    const char *dir = gd_run_dir_path(out);
+    gd_status st = gd_run_dir_make(out, err);
     if (st != GD_OK)
         return st;
     s->dir_fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
@@ -237,14 +246,14 @@ static gd_status prepare(sweep_cli *s, const cli_case_args *a, const char *dir, 
             fprintf(stderr, "geardyn: note: %s held an unfinished sweep; starting over (--resume continues one)\n",
                     dir);
     }
-    gd_atomic_file f;
-    if ((st = gd_atomic_open(&f, dir, JOURNAL, err)) != GD_OK)
+    FILE *fp;
+    if ((st = gd_run_dir_create(out, JOURNAL, &fp, err)) != GD_OK)
         return st;
-    if (fwrite(*text, 1, *tlen, f.fp) != *tlen) {
-        gd_atomic_abort(&f);
+    if (fwrite(*text, 1, *tlen, fp) != *tlen) {
+        gd_run_dir_discard(out, fp);
         return gd_error_set(err, GD_ERR_IO, "%s: cannot write", s->journal);
     }
-    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
+    if ((st = gd_run_dir_commit(out, fp, err)) != GD_OK)
         return st;
     s->fd = open(s->journal, O_WRONLY | O_APPEND | O_CLOEXEC);
     if (s->fd < 0)
@@ -390,10 +399,11 @@ static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_pla
     gd_gnuplot_printf(b, "unset multiplot\nunset output\n");
 }
 
-/* Draw the pictures; the names drawn go to names[] (*n of them). */
-static gd_status draw(const char *dir, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
-                      const char **names, int *n, gd_error *err)
+/* Draw the pictures; the names drawn join the run's files. */
+static gd_status draw(gd_run_dir *out, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
+                      gd_error *err)
 {
+    const char *dir = gd_run_dir_path(out);
     int has[3] = {0, 0, 0}, mle = 0;
     double mle_abs = 0;
     for (int s = 0; s < p->nslots; s++) {
@@ -424,43 +434,46 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_sweep_plan *p,
     free(b.p);
     static const char *png[] = {"bifurcation.png", "regime_map.png"}, *svg[] = {"bifurcation.svg", "regime_map.svg"};
     if (st == GD_OK) {
-        names[(*n)++] = p->naxes > 1 ? png[1] : png[0];
-        names[(*n)++] = p->naxes > 1 ? svg[1] : svg[0];
+        gd_run_dir_add(out, p->naxes > 1 ? png[1] : png[0], NULL);
+        gd_run_dir_add(out, p->naxes > 1 ? svg[1] : svg[0], NULL);
     }
     return st;
 }
 
 /* ---- the end ---- */
 
-static int finish(sweep_cli *s, const cli_case_args *a, const gd_case *c, const char *dir, double wall, int threads)
+void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                        const char **note)
 {
-    const gd_sweep_plan *p = s->p;
-    gd_error err = {0};
-    if (gd_sweep_write_tables(dir, p, s->pts, &err) != GD_OK)
-        return cli_fail(&err);
-    const char *files[8];
-    int nfiles = 0;
-    files[nfiles++] = "sweep.csv";
-    files[nfiles++] = "bifurcation.csv";
-    const char *note = NULL;
-    if (gd_gnuplot_wanted(c->plots, &note)) {
+    const gd_sweep_outcome *o = result;
+    if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        if (draw(dir, c, p, s->pts, files, &nfiles, &perr) != GD_OK && !a->quiet)
+        if (draw(out, c, &o->plan, o->pts, &perr) != GD_OK && !a->quiet)
             fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr.msg);
     }
-    files[nfiles++] = "summary.json";
-    if (gd_sweep_write_summary(dir, c, p, s->pts, files, nfiles, &err) != GD_OK)
-        return cli_fail(&err);
+}
+
+/* After summary.json: the journal goes; the summary lines. */
+static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir *out)
+{
+    (void)c;
+    sweep_cli *s = user;
+    const cli_case_args *a = s->a;
+    const gd_sweep_outcome *o = result;
+    const gd_sweep_plan *p = &o->plan;
+    const char *dir = gd_run_dir_path(out);
+    double wall = s->wall;
+    int threads = s->threads;
     unlink(s->journal);
-    if (note && !a->quiet)
-        fprintf(stderr, "geardyn: note: %s\n", note);
+    if (s->base.note && !a->quiet)
+        fprintf(stderr, "geardyn: note: %s\n", s->base.note);
     int failed = 0;
     char counts[512] = "";
     const char *seen[24];
     int cnt[24], nseen = 0;
     double rmax = -INFINITY, rmax_at = NAN, lmax = -INFINITY, lmax_at = NAN;
     for (int i = 0; i < p->nslots; i++) {
-        const gd_sweep_point *pt = &s->pts[i];
+        const gd_sweep_point *pt = &o->pts[i];
         failed += pt->status == GD_POINT_FAILED;
         int k = 0;
         while (k < nseen && strcmp(seen[k], pt->motion) != 0)
@@ -501,18 +514,17 @@ static int finish(sweep_cli *s, const cli_case_args *a, const gd_case *c, const 
     if (failed)
         fprintf(stderr, "geardyn: note: %d point%s failed (see the error column of sweep.csv)\n", failed,
                 failed == 1 ? "" : "s");
-    return 0;
 }
 
 /* ---- the phases of a sweep ---- */
 
 /* Rank 0 prepares the directory and the journal; the others get what it read. Returns 1 when the
  * sweep can run, else 0 with *rc the exit status. */
-static int share_journal(sweep_cli *s, const cli_case_args *a, const char *dir, char **text, size_t *tlen, int *rc,
+static int share_journal(sweep_cli *s, const cli_case_args *a, gd_run_dir *out, char **text, size_t *tlen, int *rc,
                          gd_error *err)
 {
     int ok = 1;
-    if (s->rank == 0 && prepare(s, a, dir, text, tlen, err) != GD_OK) {
+    if (s->rank == 0 && prepare(s, a, out, text, tlen, err) != GD_OK) {
         *rc = cli_fail(err);
         ok = 0;
     }
@@ -545,24 +557,6 @@ static void catch_signals(struct sigaction *old_int, struct sigaction *old_term)
         sigaction(SIGINT, old_int, NULL);
 }
 
-/* The options of the library's sweep: threads (per rank under MPI), this rank, the callbacks. */
-static void sweep_options(sweep_cli *s, const cli_case_args *a, gd_sweep_opts *o)
-{
-    gd_sweep_opts_default(o);
-    o->threads = a->threads;
-    if (s->size > 1 && a->threads == 0 && !getenv("OMP_NUM_THREADS")) {
-        long np = sysconf(_SC_NPROCESSORS_ONLN) / cli_mpi_local_size();
-        o->threads = np > 1 ? (int)np : 1;
-    }
-    if (s->size > 1 && !cli_mpi_threads_ok())
-        o->threads = 1;
-    o->rank = s->rank;
-    o->nranks = s->size;
-    o->point_done = on_point;
-    o->should_stop = should_stop;
-    o->user = s;
-}
-
 /* Under MPI after this rank's points (status st): the other ranks report to rank 0, which
  * journals their records until every rank is done. */
 static void gather_ranks(sweep_cli *s, gd_status st, const gd_error *err)
@@ -593,18 +587,10 @@ static void gather_ranks(sweep_cli *s, gd_status st, const gd_error *err)
     }
 }
 
-/* Rank 0 at the end: the final files when every point is done, else why not; the exit status. */
-static int conclude(sweep_cli *s, const cli_case_args *a, const gd_case *c, const char *dir, double wall,
-                    int threads, gd_status st, const gd_error *err)
+/* Rank 0 when points are pending (status st of this rank): why, and the exit status. */
+static int conclude(sweep_cli *s, int pending, gd_status st, const gd_error *err)
 {
     const gd_sweep_plan *plan = s->p;
-    progress_line(s, 1);
-    if (s->fd >= 0)
-        close(s->fd);
-    s->fd = -1;
-    int pending = gd_sweep_pending(plan, s->pts);
-    if (pending == 0)
-        return finish(s, a, c, dir, wall, threads);
     if (g_signal || st == GD_ERR_INTERRUPTED || s->remote_interrupted) {
         fprintf(stderr, "geardyn: sweep interrupted%s: %d of %d points done and kept in %s; run the same "
                         "command with --resume to finish it\n",
@@ -621,61 +607,94 @@ static int conclude(sweep_cli *s, const cli_case_args *a, const gd_case *c, cons
     return 1;
 }
 
+/* Once the points exist: rank 0 prepares the directory and the journal (and reads it back with
+ * --resume), the others get what it read; signals are caught and the clock starts. */
+static gd_status on_start(void *user, const gd_sweep_plan *p, gd_sweep_point *pts, gd_run_dir *out, gd_error *err)
+{
+    sweep_cli *s = user;
+    s->p = p;
+    s->pts = pts;
+    s->total = p->nslots;
+    if (!share_journal(s, s->a, out, &s->text, &s->tlen, &s->rc, err)) {
+        s->decided = 1; /* rank 0 said why */
+        return GD_ERR_INTERRUPTED;
+    }
+    s->done = s->done_at_start = p->nslots - gd_sweep_pending(p, pts);
+    s->progress = s->rank == 0 && !s->a->quiet && isatty(2);
+    catch_signals(&s->old_int, &s->old_term);
+    s->t0 = now();
+    progress_line(s, 0);
+    return GD_OK;
+}
+
+/* After this rank's points: the ranks gathered, the signals restored. The files are written (the
+ * row goes on) only on rank 0 with every point done; otherwise the exit status is decided here. */
+static gd_status on_end(void *user, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_status st, gd_error *err)
+{
+    sweep_cli *s = user;
+    gather_ranks(s, st, err);
+    s->wall = now() - s->t0;
+    sigaction(SIGINT, &s->old_int, NULL);
+    sigaction(SIGTERM, &s->old_term, NULL);
+    s->decided = 1;
+    if (s->rank != 0)
+        return GD_ERR_INTERRUPTED; /* rank 0 writes; the exit status comes from it */
+    progress_line(s, 1);
+    if (s->fd >= 0)
+        close(s->fd);
+    s->fd = -1;
+    int pending = gd_sweep_pending(p, pts);
+    if (pending) {
+        s->rc = conclude(s, pending, st, err);
+        return st != GD_OK ? st : GD_ERR_INTERRUPTED;
+    }
+    s->decided = 0; /* the files: any failure from here is reported as usual */
+    return GD_OK;
+}
+
+/* The sweep's part of the environment: threads (per rank under MPI), this rank, the callbacks. */
+static void sweep_env(sweep_cli *s, const cli_case_args *a, gd_run_env *env)
+{
+    env->threads = a->threads;
+    if (s->size > 1 && a->threads == 0 && !getenv("OMP_NUM_THREADS")) {
+        long np = sysconf(_SC_NPROCESSORS_ONLN) / cli_mpi_local_size();
+        env->threads = np > 1 ? (int)np : 1;
+    }
+    if (s->size > 1 && !cli_mpi_threads_ok())
+        env->threads = 1;
+    env->rank = s->rank;
+    env->nranks = s->size;
+    env->sweep_start = on_start;
+    env->sweep_point = on_point;
+    env->should_stop = should_stop;
+    env->sweep_end = on_end;
+    env->done = on_done;
+}
+
 int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
 {
-    gd_error err = {0};
-    gd_sweep_plan plan;
-    if (gd_sweep_plan_create(c, &plan, &err) != GD_OK)
-        return cli_fail(&err);
-    gd_sweep_point *pts = NULL;
-    if (gd_sweep_points_create(&plan, &pts, &err) != GD_OK) {
-        gd_sweep_plan_free(&plan);
-        return cli_fail(&err);
-    }
     sweep_cli s;
     memset(&s, 0, sizeof s);
-    s.p = &plan;
-    s.pts = pts;
+    gd_run_env env;
+    cli_run_env(&s.base, a, &env); /* env.user: &s.base, which is &s */
+    s.a = a;
     s.rank = cli_mpi_rank();
     s.size = cli_mpi_size();
     s.fd = -1;
     s.dir_fd = -1;
-    s.total = plan.nslots;
     pthread_mutex_init(&s.io, NULL);
-    int rc = 0;
-    char *text = NULL;
-    size_t tlen = 0;
-
-    if (!share_journal(&s, a, dir, &text, &tlen, &rc, &err))
-        goto out;
-    s.done = s.done_at_start = plan.nslots - gd_sweep_pending(&plan, pts);
-    s.progress = s.rank == 0 && !a->quiet && isatty(2);
-
-    struct sigaction old_int, old_term;
-    catch_signals(&old_int, &old_term);
-    gd_sweep_opts o;
-    sweep_options(&s, a, &o);
-    int threads = cli_threads(o.threads);
-    s.t0 = now();
-    progress_line(&s, 0);
-    gd_status st = gd_sweep_run(c, &plan, pts, &o, &err);
-    gather_ranks(&s, st, &err);
-    double wall = now() - s.t0;
-    sigaction(SIGINT, &old_int, NULL);
-    sigaction(SIGTERM, &old_term, NULL);
-
-    if (s.rank == 0)
-        rc = conclude(&s, a, c, dir, wall, threads, st, &err);
+    sweep_env(&s, a, &env);
+    s.threads = cli_threads(env.threads);
+    gd_error err = {0};
+    gd_status st = gd_analysis_run_in(gd_analysis_find(GD_ANALYSIS_SWEEP), c, &env, dir, &err);
+    int rc = s.decided ? s.rc : st == GD_OK ? 0 : cli_fail(&err);
     if (s.size > 1)
         rc = cli_mpi_bcast_int(rc);
-out:
     if (s.fd >= 0)
         close(s.fd);
     if (s.dir_fd >= 0)
         close(s.dir_fd); /* and its lock */
     pthread_mutex_destroy(&s.io);
-    free(text);
-    gd_sweep_points_free(&plan, pts);
-    gd_sweep_plan_free(&plan);
+    free(s.text);
     return rc;
 }

@@ -1,5 +1,5 @@
-/* The `tca` analysis on the command line: GTE and contact tables, the separation topography of
- * each half, pictures of the contact pattern on the unrolled flank and of the GTE, summary.json. */
+/* The `tca` analysis on the command line: pictures of the contact pattern on the unrolled flank
+ * and of the GTE, and the summary lines. */
 #include "cli.h"
 
 #include <math.h>
@@ -8,86 +8,6 @@
 #include <string.h>
 
 static const char *half_name[2] = {"left", "right"};
-
-static gd_status write_gte(const char *dir, const gd_case *c, const gd_tca_result *r, gd_error *err)
-{
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "gte.csv", err);
-    if (st != GD_OK)
-        return st;
-    fprintf(f.fp, "phi1_deg");
-    for (int h = 0; h < r->halves; h++)
-        fprintf(f.fp, ",gte_%s_arcsec,te_%s_arcsec,edge_%s,pairs_%s", half_name[h], half_name[h], half_name[h],
-                half_name[h]);
-    if (c->tca_formulation == GD_TCA_BOTH)
-        for (int h = 0; h < r->halves; h++)
-            fprintf(f.fp, ",te_tangency_%s_arcsec", half_name[h]);
-    fputc('\n', f.fp);
-    const double as = 180.0 * 3600.0 / M_PI;
-    for (int k = 0; k < r->npos; k++) {
-        fprintf(f.fp, "%.10g", r->phi1[k] * 180 / M_PI);
-        for (int h = 0; h < r->halves; h++) {
-            const gd_tca_contact *ck = &r->contact[h][k];
-            fprintf(f.fp, ",%.10g,%.10g,%u,%d", r->gte_arcsec[h][k], ck->te * as, ck->edge, ck->pairs_in_contact);
-        }
-        if (c->tca_formulation == GD_TCA_BOTH)
-            for (int h = 0; h < r->halves; h++) {
-                const gd_tca_contact *ca = &r->contact_a[h][k];
-                if (ca->converged)
-                    fprintf(f.fp, ",%.10g", ca->te * as);
-                else
-                    fprintf(f.fp, ",NaN");
-            }
-        fputc('\n', f.fp);
-    }
-    return gd_atomic_commit(&f, err);
-}
-
-static gd_status write_path(const char *dir, const gd_case *c, const gd_tca_result *r, gd_error *err)
-{
-    gd_geometry g;
-    const gd_pair pair = gd_pair_from_case(c);
-    gd_status st = gd_geometry_compute(&pair, &g, err);
-    if (st != GD_OK)
-        return st;
-    gd_atomic_file f;
-    st = gd_atomic_open(&f, dir, "contact_path.csv", err);
-    if (st != GD_OK)
-        return st;
-    fprintf(f.fp, "half,phi1_deg,pair,pinion_roll_mm,pinion_face_mm,gear_roll_mm,gear_face_mm,x_mm,y_mm,z_mm,"
-                  "nx,ny,nz,pressure_angle_deg,edge\n");
-    for (int h = 0; h < r->halves; h++)
-        for (int k = 0; k < r->npos; k++) {
-            const gd_tca_contact *ck = &r->contact[h][k];
-            fprintf(f.fp, "%s,%.10g,%d,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%u\n", half_name[h],
-                    r->phi1[k] * 180 / M_PI, ck->pair, ck->u1 * g.rb[0] * 1e3, ck->z1 * 1e3, ck->u2 * g.rb[1] * 1e3,
-                    ck->z2 * 1e3, ck->pos[0] * 1e3, ck->pos[1] * 1e3, ck->pos[2] * 1e3, ck->normal[0], ck->normal[1],
-                    ck->normal[2], ck->alpha_op * 180 / M_PI, ck->edge);
-        }
-    return gd_atomic_commit(&f, err);
-}
-
-static gd_status write_separation(const char *dir, const gd_tca_result *r, int h, gd_error *err)
-{
-    char name[64];
-    snprintf(name, sizeof name, "separation_%s.csv", half_name[h]);
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, name, err);
-    if (st != GD_OK)
-        return st;
-    fprintf(f.fp, "face_mm,roll_mm,separation_um,ease_off_um\n");
-    for (int j = 0; j < r->nface; j++)
-        for (int i = 0; i < r->nprof; i++) {
-            size_t n = (size_t)j * r->nprof + i;
-            double s = r->sep[h][n], e = r->ease_off[h][n];
-            fprintf(f.fp, "%.9g,%.9g,", r->z[j] * 1e3, r->rho[i] * 1e3);
-            if (isfinite(s))
-                fprintf(f.fp, "%.9g,%.9g\n", s * 1e6, e * 1e6);
-            else
-                fprintf(f.fp, "NaN,NaN\n");
-        }
-    return gd_atomic_commit(&f, err);
-}
 
 /* Pictures: contact pattern on the unrolled flank of each half (face position across, roll length
  * up, separation in colour, the paint thickness as the edge of the dark pattern, the contact path
@@ -135,65 +55,31 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_tca_result *r,
     return gd_gnuplot_draw(dir, script, names, 2, err);
 }
 
-int run_tca(const cli_case_args *a, gd_case *cp, const char *dir)
+void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                      const char **note)
 {
-    gd_case c = *cp;
-    gd_error err = {0};
-    gd_tca_result r;
-    const gd_pair pair = gd_pair_from_case(&c);
-    const gd_tca_settings set = gd_tca_settings_from_case(&c);
-    if (gd_tca_run(&pair, &set, &r, &err) != GD_OK)
-        return cli_fail(&err);
-    if (gd_mkdir_p(dir, &err) != GD_OK) {
-        gd_tca_result_free(&r);
-        return cli_fail(&err);
-    }
-    const char *files[16];
-    int nfiles = 0;
-    gd_status st = write_gte(dir, &c, &r, &err);
-    if (st == GD_OK) {
-        files[nfiles++] = "gte.csv";
-        st = write_path(dir, &c, &r, &err);
-    }
-    if (st == GD_OK)
-        files[nfiles++] = "contact_path.csv";
-    for (int h = 0; h < r.halves && st == GD_OK; h++) {
-        st = write_separation(dir, &r, h, &err);
-        if (st == GD_OK)
-            files[nfiles++] = h ? "separation_right.csv" : "separation_left.csv";
-    }
-    if (st != GD_OK) {
-        gd_tca_result_free(&r);
-        return cli_fail(&err);
-    }
-    const char *note = NULL;
-    if (gd_gnuplot_wanted(c.plots, &note)) {
+    if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(dir, &c, &r, &perr);
+        gd_status pst = draw(gd_run_dir_path(out), c, result, &perr);
         static const char *pics[] = {"contact_pattern.png", "contact_pattern.svg", "gte.png", "gte.svg"};
-        gd_gnuplot_drawn(pst, &perr, pics, 4, files, &nfiles);
+        gd_gnuplot_drawn(pst, &perr, pics, 4, out);
     }
-    files[nfiles++] = "summary.json";
-    st = gd_summary_write_tca(dir, &c, &r, files, nfiles, &err);
-    if (st != GD_OK) {
-        gd_tca_result_free(&r);
-        return cli_fail(&err);
-    }
-    if (note && !a->quiet)
-        fprintf(stderr, "geardyn: note: %s\n", note);
-    if (!a->quiet) {
-        printf("%s: TCA, %d positions per half, GTE peak-to-peak", dir, r.npos);
-        for (int h = 0; h < r.halves; h++)
-            printf(" %s %.6g arcsec%s", half_name[h], r.gte_pp_arcsec[h], h + 1 < r.halves ? "," : "");
-        printf("; edge contact");
-        for (int h = 0; h < r.halves; h++)
-            printf(" %s %s", half_name[h], r.edge_kinds[h] ? "yes" : "no");
-        printf("\n  operating pressure angle %.6g deg, %ld Newton iterations, %.3f s\n", r.alpha_op_mean * 180 / M_PI,
-               r.iterations, r.wall_s);
-        if (c.tca_formulation == GD_TCA_BOTH)
-            printf("  formulations (a) and (b): %d of %d positions compared, largest difference %.3g arcsec\n",
-                   r.compared, r.npos * r.halves, r.max_diff_arcsec);
-    }
-    gd_tca_result_free(&r);
-    return 0;
+}
+
+void cli_tca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
+{
+    const gd_tca_result *r = result;
+    if (a->quiet)
+        return;
+    printf("%s: TCA, %d positions per half, GTE peak-to-peak", dir, r->npos);
+    for (int h = 0; h < r->halves; h++)
+        printf(" %s %.6g arcsec%s", half_name[h], r->gte_pp_arcsec[h], h + 1 < r->halves ? "," : "");
+    printf("; edge contact");
+    for (int h = 0; h < r->halves; h++)
+        printf(" %s %s", half_name[h], r->edge_kinds[h] ? "yes" : "no");
+    printf("\n  operating pressure angle %.6g deg, %ld Newton iterations, %.3f s\n", r->alpha_op_mean * 180 / M_PI,
+           r->iterations, r->wall_s);
+    if (c->tca_formulation == GD_TCA_BOTH)
+        printf("  formulations (a) and (b): %d of %d positions compared, largest difference %.3g arcsec\n",
+               r->compared, r->npos * r->halves, r->max_diff_arcsec);
 }

@@ -1,18 +1,11 @@
 /* The `work-precision` analysis on the command line (docs/accuracy.md): the grid as it runs,
- * then work_precision.csv, order_study.csv, orders.csv, the work-precision diagrams
- * (work_precision.png/.svg) and summary.json. */
+ * the work-precision diagrams (work_precision.png/.svg) and the summary lines. */
 #include "cli.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-typedef struct wp_out {
-    int quiet;
-    int tty;
-} wp_out;
 
 static void fmt_err(char *buf, size_t len, double v)
 {
@@ -22,9 +15,9 @@ static void fmt_err(char *buf, size_t len, double v)
         snprintf(buf, len, "-");
 }
 
-static int on_start(void *user, const char *what, const char *label, int index, int total)
+int cli_workprec_start(void *user, const char *what, const char *label, int index, int total)
 {
-    wp_out *o = user;
+    cli_progress *o = user;
     if (o->quiet)
         return 0;
     if (strcmp(what, "grid") != 0 && strcmp(what, "order") != 0)
@@ -35,9 +28,9 @@ static int on_start(void *user, const char *what, const char *label, int index, 
     return 0;
 }
 
-static int on_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res)
+int cli_workprec_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res)
 {
-    wp_out *o = user;
+    cli_progress *o = user;
     if (o->quiet || strcmp(what, "grid") != 0)
         return 0;
     if (o->tty)
@@ -57,86 +50,17 @@ static int on_done(void *user, const char *what, const gd_wp_run *r, const gd_wp
     return 0;
 }
 
-static void csv_num(FILE *fp, double v)
+void cli_workprec_announce(const char *dir, const gd_case *c)
 {
-    if (isfinite(v))
-        fprintf(fp, ",%.6g", v);
-    else
-        fputs(",", fp);
+    printf("%s: work-precision of %s, %d transient + %d recorded mesh periods\n", dir, c->title[0] ? c->title : c->path,
+           c->transient_periods, c->record_periods);
 }
 
-static void write_run_row(FILE *fp, const gd_wp_result *res, const gd_wp_run *r)
+void cli_workprec_after_run(const cli_progress *p, gd_status st)
 {
-    static const char *methods[] = {"erk", "dirk", "rk4"};
-    const gd_wp_family *F = &res->families[r->family];
-    fprintf(fp, "%s,%s,%s,%d,%d,%d", r->label, F->name, methods[F->method], F->order, F->root_finding, r->fixed_step);
-    if (r->fixed_step)
-        fprintf(fp, ",%d", r->steps_per_period);
-    else
-        fputs(",", fp);
-    csv_num(fp, r->rtol);
-    csv_num(fp, r->atol);
-    fprintf(fp, ",%s", gd_wp_status_name(r->status));
-    csv_num(fp, r->cpu_s);
-    csv_num(fp, r->periods > 0 ? 1e6 * r->cpu_s / (double)r->periods : NAN);
-    fprintf(fp, ",%ld", r->rhs_evals);
-    csv_num(fp, r->periods > 0 ? (double)r->rhs_evals / (double)r->periods : NAN);
-    fprintf(fp, ",%ld,%ld,%ld,%ld,%ld", r->steps, r->root_evals, r->events, r->flipflop_events, r->ref_events);
-    csv_num(fp, r->rms_accel_mps2);
-    csv_num(fp, r->mle_per_period);
-    csv_num(fp, r->err_poincare);
-    csv_num(fp, r->err_short);
-    csv_num(fp, r->err_rms);
-    csv_num(fp, r->err_events);
-    csv_num(fp, r->err_mle);
-    fputc('\n', fp);
-}
-
-static const char run_header[] =
-    "label,family,method,order,root_finding,fixed_step,steps_per_period,rtol,atol,status,cpu_s,us_per_period,"
-    "rhs_evals,rhs_evals_per_period,steps,root_evals,events,flipflop_events,reference_events,rms_accel_mps2,mle_per_period,"
-    "err_poincare,err_short_horizon,err_rms_relative,err_event_times_periods,err_mle_per_period\n";
-
-static gd_status write_tables(const char *dir, const gd_wp_result *res, gd_error *err)
-{
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, "work_precision.csv", err);
-    if (st != GD_OK)
-        return st;
-    fputs(run_header, f.fp);
-    for (int i = 0; i < res->nruns; i++)
-        write_run_row(f.fp, res, &res->runs[i]);
-    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
-        return st;
-    if (res->norders == 0)
-        return GD_OK;
-    if ((st = gd_atomic_open(&f, dir, "order_study.csv", err)) != GD_OK)
-        return st;
-    fputs(run_header, f.fp);
-    for (int i = 0; i < res->norder_runs; i++)
-        write_run_row(f.fp, res, &res->order_runs[i]);
-    if ((st = gd_atomic_commit(&f, err)) != GD_OK)
-        return st;
-    if ((st = gd_atomic_open(&f, dir, "orders.csv", err)) != GD_OK)
-        return st;
-    fputs("family,root_finding,nominal_order,measured_order,fitted_from_steps,fitted_to_steps,order_over_range,"
-          "range_from_steps\n", f.fp);
-    for (int i = 0; i < res->norders; i++) {
-        const gd_wp_order *O = &res->orders[i];
-        const gd_wp_family *F = &res->families[O->family];
-        fprintf(f.fp, "%s,%d,%d", F->name, F->root_finding, O->nominal);
-        csv_num(f.fp, O->order);
-        if (O->fit_from >= 0)
-            fprintf(f.fp, ",%d,%d", O->steps[O->fit_from], O->steps[O->fit_to]);
-        else
-            fputs(",,", f.fp);
-        csv_num(f.fp, O->order_range);
-        if (O->range_from >= 0)
-            fprintf(f.fp, ",%d\n", O->steps[O->range_from]);
-        else
-            fputs(",\n", f.fp);
-    }
-    return gd_atomic_commit(&f, err);
+    (void)st;
+    if (p->tty)
+        fprintf(stderr, "\r%80s\r", "");
 }
 
 static void sb_val(gd_gnuplot_script *b, double v)
@@ -335,87 +259,55 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
     return st;
 }
 
-int run_work_precision(const cli_case_args *a, gd_case *cp, const char *dir)
+void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                           const char **note)
 {
-    gd_case c = *cp;
-    gd_error err = {0};
-    gd_model m;
-    if (gd_model_build(&c, &m, &err) != GD_OK)
-        return cli_fail(&err);
-    if (gd_mkdir_p(dir, &err) != GD_OK)
-        return cli_fail(&err);
-    wp_out o = {a->quiet, !a->quiet && isatty(2)};
-    if (!a->quiet)
-        printf("%s: work-precision of %s, %d transient + %d recorded mesh periods\n", dir,
-               c.title[0] ? c.title : c.path, c.transient_periods, c.record_periods);
-    gd_wp_hooks hooks = {on_start, on_done};
-    gd_wp_result res;
-    gd_status st = gd_workprec_run(&c, &m, &hooks, &o, &res, &err);
-    if (o.tty)
-        fprintf(stderr, "\r%80s\r", "");
-    if (st != GD_OK)
-        return cli_fail(&err);
-    const char *files[8];
-    int nfiles = 0;
-    st = write_tables(dir, &res, &err);
-    if (st != GD_OK)
-        goto fail;
-    files[nfiles++] = "work_precision.csv";
-    if (res.norders > 0) {
-        files[nfiles++] = "order_study.csv";
-        files[nfiles++] = "orders.csv";
-    }
-    const char *note = NULL;
-    if (gd_gnuplot_wanted(c.plots, &note)) {
+    const gd_workprec_outcome *r = result;
+    if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(dir, &c, &res, &perr);
+        gd_status pst = draw(gd_run_dir_path(out), c, &r->res, &perr);
         static const char *pics[] = {"work_precision.png", "work_precision.svg"};
-        gd_gnuplot_drawn(pst, &perr, pics, 2, files, &nfiles);
+        gd_gnuplot_drawn(pst, &perr, pics, 2, out);
     }
-    files[nfiles++] = "summary.json";
-    st = gd_summary_write_workprec(dir, &c, &m, &res, files, nfiles, &err);
-    if (st != GD_OK)
-        goto fail;
-    if (note && !a->quiet)
-        fprintf(stderr, "geardyn: note: %s\n", note);
-    if (!res.ref.converged)
+}
+
+void cli_workprec_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
+{
+    (void)dir;
+    const gd_wp_result *res = &((const gd_workprec_outcome *)result)->res;
+    if (!res->ref.converged)
         fprintf(stderr, "geardyn: warning: the reference has not converged: it differs from its check (%s) by %.3g, "
                 "above workprecision.reference_max_error = %g; errors below that are not resolved\n",
-                res.ref.check_method, res.ref.chaotic ? res.ref.check_short : res.ref.check_poincare,
-                c.wp_reference_max_error);
-    if (!a->quiet) {
-        printf("reference %s: %s (%s), RMS %.6g m/s^2, %ld events; check %s differs by %.3g (Poincare), %.3g "
-               "(short horizon), %.3g (RMS)\n",
-               res.ref.method, res.ref.motion, res.ref.chaotic ? "chaotic" : "periodic", res.ref.rms_accel_mps2,
-               res.ref.events, res.ref.check_method, res.ref.check_poincare, res.ref.check_short, res.ref.check_rms);
-        if (res.norders > 0) {
-            printf("convergence order of the Poincare points (fixed steps, first %ld periods):\n", res.horizon_periods);
-            for (int i = 0; i < res.norders; i++) {
-                const gd_wp_order *O = &res.orders[i];
-                printf("  %-14s nominal %d, measured %s", res.families[O->family].name, O->nominal,
-                       isfinite(O->order) ? "" : "-");
-                if (isfinite(O->order))
-                    printf("%.2f (steps %d to %d); %.2f over steps %d to %d", O->order, O->steps[O->fit_from],
-                           O->steps[O->fit_to], O->order_range, O->steps[O->range_from], O->steps[O->fit_to]);
-                printf("\n");
-            }
+                res->ref.check_method, res->ref.chaotic ? res->ref.check_short : res->ref.check_poincare,
+                c->wp_reference_max_error);
+    if (a->quiet)
+        return;
+    printf("reference %s: %s (%s), RMS %.6g m/s^2, %ld events; check %s differs by %.3g (Poincare), %.3g "
+           "(short horizon), %.3g (RMS)\n",
+           res->ref.method, res->ref.motion, res->ref.chaotic ? "chaotic" : "periodic", res->ref.rms_accel_mps2,
+           res->ref.events, res->ref.check_method, res->ref.check_poincare, res->ref.check_short, res->ref.check_rms);
+    if (res->norders > 0) {
+        printf("convergence order of the Poincare points (fixed steps, first %ld periods):\n", res->horizon_periods);
+        for (int i = 0; i < res->norders; i++) {
+            const gd_wp_order *O = &res->orders[i];
+            printf("  %-14s nominal %d, measured %s", res->families[O->family].name, O->nominal,
+                   isfinite(O->order) ? "" : "-");
+            if (isfinite(O->order))
+                printf("%.2f (steps %d to %d); %.2f over steps %d to %d", O->order, O->steps[O->fit_from],
+                       O->steps[O->fit_to], O->order_range, O->steps[O->range_from], O->steps[O->fit_to]);
+            printf("\n");
         }
-        static const double targets[] = {1e-3, 1e-6, 1e-8};
-        for (int ev = 0; ev < 2; ev++)
-            for (int k = 0; k < 3; k++) {
-                int i = gd_workprec_cheapest(&res, targets[k], ev);
-                printf("cheapest at error %.0e%s: ", targets[k], ev ? " with the event times too" : "");
-                if (i >= 0)
-                    printf("%s, %.1f us per mesh period\n", res.runs[i].label,
-                           1e6 * res.runs[i].cpu_s / (double)res.runs[i].periods);
-                else
-                    printf("none reached it\n");
-            }
-        printf("  %.1f s in all\n", res.wall_s);
     }
-    gd_workprec_free(&res);
-    return 0;
-fail:
-    gd_workprec_free(&res);
-    return cli_fail(&err);
+    static const double targets[] = {1e-3, 1e-6, 1e-8};
+    for (int ev = 0; ev < 2; ev++)
+        for (int k = 0; k < 3; k++) {
+            int i = gd_workprec_cheapest(res, targets[k], ev);
+            printf("cheapest at error %.0e%s: ", targets[k], ev ? " with the event times too" : "");
+            if (i >= 0)
+                printf("%s, %.1f us per mesh period\n", res->runs[i].label,
+                       1e6 * res->runs[i].cpu_s / (double)res->runs[i].periods);
+            else
+                printf("none reached it\n");
+        }
+    printf("  %.1f s in all\n", res->wall_s);
 }

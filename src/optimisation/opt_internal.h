@@ -67,4 +67,19 @@ void opt_first_failure_init(opt_first_failure *f, int n);
 void opt_first_failure_note(opt_first_failure *f, int i, gd_status st, const gd_error *e);
 void opt_first_failure_destroy(opt_first_failure *f);
 
+/* ---- the case's [optimize] section ---- */
+/* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
+ * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets; for the gear
+ * objective, that the box fits on the case's pair (gd_pair_from_case of the resolved case). */
+gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err);
+/* The case's optimizers list (compare-optimizers) or its algorithm (optimize): count, <= max. */
+int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
+/* The case's objectives (gd_opt_objective), count <= max. */
+int gd_opt_case_objectives(const gd_case *c, int *objs, int max);
+/* The evaluation budget of one run: budget_evals, or population (iterations + 1). */
+long gd_opt_case_budget(const gd_case *c);
+/* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */
+unsigned long gd_opt_run_seed(const gd_case *c, int r);
+unsigned long gd_opt_instance_seed(const gd_case *c, int r);
+
 #endif

@@ -41,7 +41,7 @@ static int split(const char *list, char names[][48], int max)
     return n;
 }
 
-GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max)
+int gd_opt_case_optimizers(const gd_case *c, int *algs, int max)
 {
     if (c->analysis == GD_ANALYSIS_OPTIMIZE) {
         if (max > 0)
@@ -58,7 +58,7 @@ GD_API int gd_opt_case_optimizers(const gd_case *c, int *algs, int max)
     return k;
 }
 
-GD_API int gd_opt_case_objectives(const gd_case *c, int *objs, int max)
+int gd_opt_case_objectives(const gd_case *c, int *objs, int max)
 {
     char names[GD_OBJ_NOBJECTIVES + 1][48];
     int n = split(c->opt_objective, names, GD_OBJ_NOBJECTIVES + 1), k = 0;
@@ -70,16 +70,16 @@ GD_API int gd_opt_case_objectives(const gd_case *c, int *objs, int max)
     return k;
 }
 
-GD_API long gd_opt_case_budget(const gd_case *c)
+long gd_opt_case_budget(const gd_case *c)
 {
     if (c->opt_budget_evals > 0)
         return c->opt_budget_evals;
     return (long)c->opt_population * ((long)c->opt_iterations + 1);
 }
 
-GD_API unsigned long gd_opt_run_seed(const gd_case *c, int r) { return (unsigned long)c->opt_seed + (unsigned long)r; }
+unsigned long gd_opt_run_seed(const gd_case *c, int r) { return (unsigned long)c->opt_seed + (unsigned long)r; }
 
-GD_API unsigned long gd_opt_instance_seed(const gd_case *c, int r)
+unsigned long gd_opt_instance_seed(const gd_case *c, int r)
 {
     /* a stream apart from the optimisers' (a 32-bit mix of the run seed) */
     unsigned long z = (gd_opt_run_seed(c, r) + 0x9e3779b9UL) & 0xffffffffUL;
@@ -319,7 +319,7 @@ static gd_status resolve_targets(gd_case *c, const objective_kinds *ok, gd_error
     return GD_OK;
 }
 
-GD_API gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
+gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
 {
     int compare = c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS;
     objective_kinds ok;

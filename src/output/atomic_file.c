@@ -1,5 +1,5 @@
 /* Atomic output files (temporary name, fsync, rename) and output directories. */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -8,7 +8,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-GD_API gd_status gd_mkdir_p(const char *dir, gd_error *err)
+gd_status gd_mkdir_p(const char *dir, gd_error *err)
 {
     char buf[1200];
     if (strlen(dir) >= sizeof buf)
@@ -30,7 +30,7 @@ GD_API gd_status gd_mkdir_p(const char *dir, gd_error *err)
     return GD_OK;
 }
 
-GD_API gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err)
+gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err)
 {
     memset(f, 0, sizeof *f);
     snprintf(f->path, sizeof f->path, "%s/%s", dir, name);
@@ -48,7 +48,7 @@ GD_API gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *
     return GD_OK;
 }
 
-GD_API gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err)
+gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err)
 {
     if (!f->fp)
         return gd_error_set(err, GD_ERR_INTERNAL, "%s: not open", f->path);
@@ -69,7 +69,7 @@ GD_API gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err)
     return GD_OK;
 }
 
-GD_API void gd_atomic_abort(gd_atomic_file *f)
+void gd_atomic_abort(gd_atomic_file *f)
 {
     if (f->fp) {
         fclose(f->fp);

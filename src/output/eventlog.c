@@ -1,6 +1,6 @@
 /* The event log: writing one CSV row per located event, and reading, filtering and
  * summarising a log for `geardyn events`. */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 
 #include <errno.h>
 #include <math.h>
@@ -9,9 +9,9 @@
 
 #define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording,located"
 
-GD_API void gd_eventlog_header(FILE *fp) { fprintf(fp, "%s\n", EVENTLOG_HEADER); }
+void gd_eventlog_header(FILE *fp) { fprintf(fp, "%s\n", EVENTLOG_HEADER); }
 
-GD_API void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int recording)
+void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int recording)
 {
     double ph = ev->t / m->period;
     ph -= floor(ph);

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_version.h"
 #include "../case/case_keys.h"
 
@@ -107,19 +107,27 @@ json_t *gd_json_root(const gd_case *c, const char *analysis, const char *section
     return root;
 }
 
-gd_status gd_json_write(const char *dir, const char *name, json_t *root, gd_error *err)
+gd_status gd_json_write(gd_run_dir *d, const char *name, json_t *root, gd_error *err)
 {
-    gd_atomic_file f;
-    gd_status st = gd_atomic_open(&f, dir, name, err);
-    if (st == GD_OK) {
-        if (json_dumpf(root, f.fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
-            gd_atomic_abort(&f);
-            st = gd_error_set(err, GD_ERR_IO, "%s: cannot write JSON", f.path);
-        } else {
-            fputc('\n', f.fp);
-            st = gd_atomic_commit(&f, err);
-        }
+    FILE *fp;
+    gd_status st = gd_run_dir_create(d, name, &fp, err);
+    if (st == GD_OK && json_dumpf(root, fp, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(12)) != 0) {
+        gd_run_dir_discard(d, fp);
+        st = gd_error_set(err, GD_ERR_IO, "%s/%s: cannot write JSON", gd_run_dir_path(d), name);
+    } else if (st == GD_OK) {
+        fputc('\n', fp);
+        st = gd_run_dir_commit(d, fp, err);
     }
     json_decref(root);
     return st;
+}
+
+gd_status gd_json_write_summary(gd_run_dir *d, json_t *root, gd_error *err)
+{
+    int n;
+    const char *const *files = gd_run_dir_files(d, &n);
+    json_t *fl = gd_json_files(files, n);
+    json_array_append_new(fl, json_string("summary.json"));
+    json_object_set_new(root, "files", fl);
+    return gd_json_write(d, "summary.json", root, err);
 }

@@ -5,6 +5,7 @@
 #include <jansson.h>
 
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_output.h"
 
 /* A finite number, or null. */
 json_t *gd_json_num(double v);
@@ -21,7 +22,10 @@ json_t *gd_json_halves_int(const int v[2], int halves);
 json_t *gd_json_edge_names(unsigned bits);
 /* The files an analysis wrote, as an array (summary.json's "files"). */
 json_t *gd_json_files(const char *const *files, int nfiles);
-/* Write root as dir/name atomically (temporary file, then rename) and release it. */
-gd_status gd_json_write(const char *dir, const char *name, json_t *root, gd_error *err);
+/* Write root as the file name of the run's directory (through gd_run_dir_create/commit) and
+ * release it. */
+gd_status gd_json_write(gd_run_dir *d, const char *name, json_t *root, gd_error *err);
+/* summary.json: root with "files" set to every file of the run so far and summary.json itself. */
+gd_status gd_json_write_summary(gd_run_dir *d, json_t *root, gd_error *err);
 
 #endif

@@ -1,5 +1,5 @@
 /* summary.json: the resolved case, derived values, solver statistics and results (jansson). */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_scene.h"
 
@@ -143,15 +143,12 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     return res;
 }
 
-GD_API gd_status gd_summary_write_response(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, const char *const *files, int nfiles,
-                                           gd_error *err)
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m,
+                                           const gd_response_result *r, gd_error *err)
 {
     json_t *root = gd_json_root(c, "response", "scene", "model");
     json_object_set_new(root, "derived", response_derived_json(c, m));
     json_object_set_new(root, "solver", response_solver_json(c, m, r));
     json_object_set_new(root, "results", response_results_json(c, m, r));
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

@@ -1,7 +1,7 @@
 /* summary.json of an ltca run: the resolved case, the derived geometry, the solver settings and
  * checks, and the results under stable keys (docs/ltca.md, section 5). */
 #include "geardyn/gd_ltca.h"
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_scene.h"
 
@@ -159,14 +159,12 @@ static json_t *ltca_results_json(const gd_ltca_result *r)
     return res;
 }
 
-GD_API gd_status gd_summary_write_ltca(const char *dir, const gd_case *c, const gd_ltca_result *r,
-                                       const char *const *files, int nfiles, gd_error *err)
+gd_status gd_summary_write_ltca(gd_run_dir *d, const gd_case *c, const gd_ltca_result *r,
+                                       gd_error *err)
 {
     json_t *root = gd_json_root(c, "ltca", "gear", "arrangement");
     json_object_set_new(root, "derived", ltca_derived_json(c, r));
     json_object_set_new(root, "solver", ltca_solver_json(r));
     json_object_set_new(root, "results", ltca_results_json(r));
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

@@ -1,7 +1,7 @@
 /* summary.json of the optimize and compare-optimizers analyses (docs/optimisation.md section 8):
  * the resolved case, the settings, the results under stable keys; the optimum of the gear problem
  * beside the paper's Table 2. */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 
 #include "json_util.h"
 
@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <string.h>
 
-GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, const gd_opt_optimize_summary *s,
-                                           const char *const *files, int nfiles, gd_error *err)
+gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_opt_optimize_summary *s,
+                                           gd_error *err)
 {
     json_t *root = gd_json_root(c, "optimize", NULL, NULL);
     int gear = s->objective == GD_OBJ_GEAR_LTE;
@@ -101,8 +101,7 @@ GD_API gd_status gd_summary_write_optimize(const char *dir, const gd_case *c, co
     }
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }
 
 static json_t *stats_json(const gd_opt_alg_stats *S)
@@ -124,13 +123,13 @@ static json_t *stats_json(const gd_opt_alg_stats *S)
     return o;
 }
 
-GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, const gd_opt_compare_problem *pb,
-                                          int nproblems, const char *const *files, int nfiles, int threads,
+gd_status gd_summary_write_compare(gd_run_dir *d, const gd_case *c, const gd_opt_compare_problem *pb,
+                                          int nproblems, int threads,
                                           gd_error *err)
 {
     json_t *root = gd_json_root(c, "compare-optimizers", NULL, NULL);
     if (nproblems < 1)
-        return gd_json_write(dir, "summary.json", root, err);
+        return gd_json_write(d, "summary.json", root, err);
     const gd_opt_compare_result *r0 = pb[0].res;
     json_t *set = json_object();
     json_t *algs = json_array();
@@ -186,6 +185,5 @@ GD_API gd_status gd_summary_write_compare(const char *dir, const gd_case *c, con
         json_object_set_new(pool, gd_opt_algorithm_name(r0->stats[a].alg), o);
     }
     json_object_set_new(root, "ecdf_pooled", pool);
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

@@ -1,6 +1,6 @@
 /* summary.json of a tca run: the resolved case, the derived geometry, the solver settings and
  * statistics, and the results under stable keys (docs/tca.md, section 9). */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_scene.h"
@@ -143,14 +143,12 @@ static json_t *tca_results_json(const gd_case *c, const gd_tca_result *r)
     return res;
 }
 
-GD_API gd_status gd_summary_write_tca(const char *dir, const gd_case *c, const gd_tca_result *r,
-                                      const char *const *files, int nfiles, gd_error *err)
+gd_status gd_summary_write_tca(gd_run_dir *d, const gd_case *c, const gd_tca_result *r,
+                                      gd_error *err)
 {
     json_t *root = gd_json_root(c, "tca", "gear", "arrangement");
     json_object_set_new(root, "derived", tca_derived_json(c));
     json_object_set_new(root, "solver", tca_solver_json(c, r));
     json_object_set_new(root, "results", tca_results_json(c, r));
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

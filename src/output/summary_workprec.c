@@ -1,7 +1,7 @@
 /* summary.json of a work-precision run: the resolved case, the model scales, the reference
  * and its check, every run of the grid and of the order study, the measured orders and the
  * cheapest setting for each accuracy target (docs/accuracy.md). */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_workprec.h"
 #include "json_util.h"
 #include "../case/case_keys.h"
@@ -51,9 +51,8 @@ static json_t *run_json(const gd_wp_result *res, const gd_wp_run *r)
     return o;
 }
 
-GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, const gd_model *m,
-                                           const gd_wp_result *res, const char *const *files, int nfiles,
-                                           gd_error *err)
+gd_status gd_summary_write_workprec(gd_run_dir *d, const gd_case *c, const gd_model *m,
+                                           const gd_wp_result *res, gd_error *err)
 {
     json_t *root = gd_json_root(c, "work-precision", "scene", "model");
 
@@ -143,7 +142,5 @@ GD_API gd_status gd_summary_write_workprec(const char *dir, const gd_case *c, co
     json_object_set_new(root, "cheapest_at_target", rec);
     json_object_set_new(root, "wall_s", gd_json_num(res->wall_s));
 
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

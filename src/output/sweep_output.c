@@ -1,10 +1,11 @@
 /* Sweep records (journal lines, MPI messages), the journal read back for --resume, and the
  * final tables and summary.json, written in slot order. */
-#include "geardyn/gd_output.h"
+#include "output_internal.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_version.h"
 #include "json_util.h"
 #include "../case/case_keys.h"
+#include "../analysis/analysis_internal.h"
 
 #include <errno.h>
 #include <jansson.h>
@@ -487,25 +488,24 @@ static void csv_text(FILE *f, const char *s)
     fputc('"', f);
 }
 
-GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, const gd_sweep_point *pts,
-                                       gd_error *err)
+gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_error *err)
 {
-    gd_atomic_file sw, bf;
-    gd_status st = gd_atomic_open(&sw, dir, "sweep.csv", err);
+    FILE *sw, *bf;
+    gd_status st = gd_run_dir_create(d, "sweep.csv", &sw, err);
     if (st != GD_OK)
         return st;
-    if ((st = gd_atomic_open(&bf, dir, "bifurcation.csv", err)) != GD_OK) {
-        gd_atomic_abort(&sw);
+    if ((st = gd_run_dir_create(d, "bifurcation.csv", &bf, err)) != GD_OK) {
+        gd_run_dir_discard(d, sw);
         return st;
     }
     int map = p->naxes > 1;
-    fprintf(sw.fp, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
+    fprintf(sw, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
                    "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,transient_periods,status,error\n",
             map ? ",parameter2" : "");
-    fprintf(bf.fp, "parameter,direction%s", map ? ",parameter2" : "");
+    fprintf(bf, "parameter,direction%s", map ? ",parameter2" : "");
     for (int r = 0; r < p->nresp; r++)
-        fprintf(bf.fp, ",%s", p->resp[r].name);
-    fputc('\n', bf.fp);
+        fprintf(bf, ",%s", p->resp[r].name);
+    fputc('\n', bf);
     for (int s = 0; s < p->nslots; s++) {
         const gd_sweep_point *pt = &pts[s];
         const char *dirn = gd_sweep_branch_name(pt->branch);
@@ -514,39 +514,39 @@ GD_API gd_status gd_sweep_write_tables(const char *dir, const gd_sweep_plan *p, 
         if (map)
             snprintf(v2, sizeof v2, ",%.12g", pt->value[1]);
         int done = pt->status == GD_POINT_DONE;
-        fprintf(sw.fp, "%s,%s,", v1, dirn);
-        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[2] : NAN);
-        fputc(',', sw.fp);
-        fmt_num(sw.fp, "%.9g", done ? pt->mle_per_period : NAN);
-        fprintf(sw.fp, ",%s,%s%s,%d,%d,", pt->status == GD_POINT_PENDING ? "pending" : pt->motion,
+        fprintf(sw, "%s,%s,", v1, dirn);
+        fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[2] : NAN);
+        fputc(',', sw);
+        fmt_num(sw, "%.9g", done ? pt->mle_per_period : NAN);
+        fprintf(sw, ",%s,%s%s,%d,%d,", pt->status == GD_POINT_PENDING ? "pending" : pt->motion,
                 done ? gd_impact_regime_name(pt->impact_regime[2]) : "", v2, pt->period_n, pt->poincare_distinct);
-        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[0] : NAN);
-        fputc(',', sw.fp);
-        fmt_num(sw.fp, "%.9g", done ? pt->rms_accel_mps2[1] : NAN);
-        fprintf(sw.fp, ",%s,%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "",
+        fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[0] : NAN);
+        fputc(',', sw);
+        fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[1] : NAN);
+        fprintf(sw, ",%s,%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "",
                 done ? gd_impact_regime_name(pt->impact_regime[1]) : "");
-        fmt_num(sw.fp, "%.9g", done ? pt->mle_per_s : NAN);
+        fmt_num(sw, "%.9g", done ? pt->mle_per_s : NAN);
         if (done)
-            fprintf(sw.fp, ",%ld", pt->transient_periods);
+            fprintf(sw, ",%ld", pt->transient_periods);
         else
-            fputc(',', sw.fp);
-        fprintf(sw.fp, ",%s,", done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
-        csv_text(sw.fp, pt->error);
-        fputc('\n', sw.fp);
+            fputc(',', sw);
+        fprintf(sw, ",%s,", done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
+        csv_text(sw, pt->error);
+        fputc('\n', sw);
         for (long k = 0; k < pt->npoincare; k++) {
-            fprintf(bf.fp, "%s,%s%s", v1, dirn, v2);
+            fprintf(bf, "%s,%s%s", v1, dirn, v2);
             for (int r = 0; r < p->nresp; r++) {
-                fputc(',', bf.fp);
-                fmt_num(bf.fp, "%.10g", pt->poincare[k * p->nresp + r]);
+                fputc(',', bf);
+                fmt_num(bf, "%.10g", pt->poincare[k * p->nresp + r]);
             }
-            fputc('\n', bf.fp);
+            fputc('\n', bf);
         }
     }
-    st = gd_atomic_commit(&sw, err);
+    st = gd_run_dir_commit(d, sw, err);
     if (st == GD_OK)
-        st = gd_atomic_commit(&bf, err);
+        st = gd_run_dir_commit(d, bf, err);
     else
-        gd_atomic_abort(&bf);
+        gd_run_dir_discard(d, bf);
     return st;
 }
 
@@ -750,9 +750,8 @@ static gd_status results_json(const gd_sweep_plan *p, const gd_sweep_point *pts,
     return GD_OK;
 }
 
-GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const gd_sweep_plan *p,
-                                        const gd_sweep_point *pts, const char *const *files, int nfiles,
-                                        gd_error *err)
+gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p,
+                                        const gd_sweep_point *pts, gd_error *err)
 {
     tally t;
     tally_points(p, pts, &t);
@@ -768,7 +767,5 @@ GD_API gd_status gd_sweep_write_summary(const char *dir, const gd_case *c, const
     json_object_set_new(sol, "rhs_evals", json_integer(t.rhs));
     json_object_set_new(sol, "events", json_integer(t.events));
     json_object_set_new(root, "solver", sol);
-    json_object_set_new(root, "files", gd_json_files(files, nfiles));
-
-    return gd_json_write(dir, "summary.json", root, err);
+    return gd_json_write_summary(d, root, err);
 }

@@ -1,10 +1,12 @@
 /* The table of analyses and the resolution of a case through it (include/geardyn/gd_analysis.h). */
-#include "geardyn/gd_analysis.h"
+#include "rows.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_workprec.h"
 #include "geardyn/gd_optimize.h"
 #include "../case/case_keys.h"
+#include "../analysis/analysis_internal.h"
+#include "../optimisation/opt_internal.h"
 
 #include <stdio.h>
 #include <string.h>
@@ -39,16 +41,22 @@ static gd_status optimize_check_case(gd_case *c, gd_error *err)
 }
 
 static const gd_analysis_type analyses[] = {
-    { GD_ANALYSIS_RESPONSE, "response", "the event-exact response of one operating point", NULL },
+    { GD_ANALYSIS_RESPONSE, "response", "the event-exact response of one operating point", NULL,
+      gd_row_response_run, gd_row_response_write, gd_row_response_summary, gd_row_response_free },
     { GD_ANALYSIS_SWEEP, "sweep", "the response over a grid of one or two keys, continued up and down",
-      sweep_check_case },
-    { GD_ANALYSIS_TCA, "tca", "geometric tooth contact analysis", NULL },
-    { GD_ANALYSIS_LTCA, "ltca", "loaded tooth contact analysis", ltca_check_case },
-    { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", optimize_check_case },
+      sweep_check_case, gd_row_sweep_run, gd_row_sweep_write, gd_row_sweep_summary, gd_row_sweep_free },
+    { GD_ANALYSIS_TCA, "tca", "geometric tooth contact analysis", NULL,
+      gd_row_tca_run, gd_row_tca_write, gd_row_tca_summary, gd_row_tca_free },
+    { GD_ANALYSIS_LTCA, "ltca", "loaded tooth contact analysis", ltca_check_case,
+      gd_row_ltca_run, gd_row_ltca_write, gd_row_ltca_summary, gd_row_ltca_free },
+    { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", optimize_check_case,
+      gd_row_optimize_run, gd_row_optimize_write, gd_row_optimize_summary, gd_row_optimize_free },
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, "compare-optimizers", "ALO against NLopt's methods on one budget",
-      optimize_check_case },
+      optimize_check_case, gd_row_compare_run, gd_row_compare_write, gd_row_compare_summary,
+      gd_row_compare_free },
     { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
-      workprec_check_case },
+      workprec_check_case, gd_row_workprec_run, gd_row_workprec_write, gd_row_workprec_summary,
+      gd_row_workprec_free },
 };
 
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n)
@@ -88,5 +96,30 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
         st = gd_scene_resolve(c, err);
     if (st == GD_OK && a->check_case)
         st = a->check_case(c, err);
+    return st;
+}
+
+GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
+                                    const char *dir, gd_error *err)
+{
+    gd_run_dir *out = NULL;
+    void *res = NULL;
+    gd_status st = gd_run_dir_open(dir, &out, err);
+    if (st == GD_OK) {
+        st = a->run(c, env, out, &res, err);
+        if (env && env->ran)
+            env->ran(env->user, c, st);
+    }
+    if (st == GD_OK)
+        st = a->write(c, res, out, err);
+    if (st == GD_OK && env && env->pictures)
+        env->pictures(env->user, c, res, out);
+    if (st == GD_OK)
+        st = a->summary(c, res, out, err);
+    if (st == GD_OK && env && env->done)
+        env->done(env->user, c, res, out);
+    if (res)
+        a->free(res);
+    gd_run_dir_close(out);
     return st;
 }

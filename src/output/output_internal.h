@@ -1,0 +1,92 @@
+/* Internal: the writers of the standard files, called by the rows of the table of analyses
+ * (src/run/); a C user writes them through a row's write and summary (gd_analysis.h). */
+#ifndef GD_OUTPUT_INTERNAL_H
+#define GD_OUTPUT_INTERNAL_H
+
+#include <stdio.h>
+
+#include "geardyn/gd_output.h"
+#include "geardyn/gd_response.h"
+#include "geardyn/gd_sweep.h"
+#include "geardyn/gd_workprec.h"
+#include "geardyn/gd_tca.h"
+#include "geardyn/gd_ltca.h"
+#include "geardyn/gd_optimize.h"
+
+/* A file written under a temporary name and renamed into place on commit (gd_run_dir keeps one
+ * per open file). */
+typedef struct gd_atomic_file {
+    FILE *fp;
+    char path[1200];
+    char tmp[1240];
+} gd_atomic_file;
+
+gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err);
+gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err);
+void gd_atomic_abort(gd_atomic_file *f);
+/* mkdir -p */
+gd_status gd_mkdir_p(const char *dir, gd_error *err);
+
+/* The event log: one CSV row per event (header with units). */
+void gd_eventlog_header(FILE *fp);
+void gd_eventlog_row(FILE *fp, const gd_model *m, const gd_event *ev, int recording);
+
+/* ---- response ---- */
+/* time_history.csv and poincare.csv, written row by row while the response runs. */
+void gd_time_history_header(FILE *fp, const gd_model *m);
+void gd_time_history_row(FILE *fp, const gd_model *m, const gd_sample *s);
+void gd_poincare_header(FILE *fp, const gd_model *m);
+void gd_poincare_row(FILE *fp, const gd_model *m, long period, double t_s, const double *y);
+/* variable.csv, variable_poincare.csv and spectrum.csv of the local analysis. */
+gd_status gd_local_write_tables(gd_run_dir *d, const gd_local *L, double mesh_freq_hz, gd_error *err);
+/* summary.json of a response run: the resolved case (value, unit, source of every key), the
+ * derived geometry and model scales, solver statistics and the results. Each summary writer lists
+ * the files of d and itself. */
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_response_result *r,
+                                    gd_error *err);
+
+/* ---- tca ---- */
+/* gte.csv, contact_path.csv (rb: the base radii, m) and separation_left/right.csv. */
+gd_status gd_tca_write_tables(gd_run_dir *d, const gd_case *c, const gd_tca_result *r, const double rb[2],
+                              gd_error *err);
+/* stable keys: results.gte_pp_arcsec.left/right, results.edge_contact.left/right,
+ * results.contact_ratio_transverse, results.contact_ratio_overlap,
+ * results.operating_pressure_angle_deg */
+gd_status gd_summary_write_tca(gd_run_dir *d, const gd_case *c, const gd_tca_result *r, gd_error *err);
+
+/* ---- ltca ---- */
+/* lte.csv, load_distribution.csv, pair_loads.csv. */
+gd_status gd_ltca_write_tables(gd_run_dir *d, const gd_ltca_result *r, gd_error *err);
+/* stable keys: results.lte_pp_arcsec, results.mean_mesh_stiffness_n_per_m.left/right,
+ * results.load_share.left/right */
+gd_status gd_summary_write_ltca(gd_run_dir *d, const gd_case *c, const gd_ltca_result *r, gd_error *err);
+
+/* ---- optimize and compare-optimizers ---- */
+/* optimum.csv, convergence.csv and (the gear) lte.csv of an optimize run. */
+gd_status gd_optimize_write_optimum(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
+gd_status gd_optimize_write_convergence(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
+gd_status gd_optimize_write_lte(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
+/* runs.csv, statistics.csv, convergence.csv, ecdf.csv and best_points.csv of a comparison. */
+gd_status gd_compare_write_tables(gd_run_dir *d, const gd_compare_outcome *C, gd_error *err);
+gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_opt_optimize_summary *s,
+                                    gd_error *err);
+/* One summary over every problem compared (each with the same optimisers, runs and budget); adds
+ * the runtime distribution pooled over the problems at 1 %, 10 % and 100 % of the budget. */
+gd_status gd_summary_write_compare(gd_run_dir *d, const gd_case *c, const gd_opt_compare_problem *pb, int nproblems,
+                                   int threads, gd_error *err);
+
+/* ---- work-precision ---- */
+/* work_precision.csv, and order_study.csv and orders.csv when there is an order study. */
+gd_status gd_workprec_write_tables(gd_run_dir *d, const gd_wp_result *res, gd_error *err);
+gd_status gd_summary_write_workprec(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_wp_result *res,
+                                    gd_error *err);
+
+/* ---- sweep ---- */
+/* sweep.csv and bifurcation.csv from the points in slot order. */
+gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_error *err);
+/* the settings, failed points, motion tallies, branches and the hysteresis intervals
+ * (gd_sweep_hysteresis) */
+gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
+                                 gd_error *err);
+
+#endif

@@ -1,0 +1,23 @@
+/* Internal: the functions of the rows of the table of analyses (src/run/analyses.c), one file
+ * per analysis (row_NAME.c). */
+#ifndef GD_RUN_ROWS_H
+#define GD_RUN_ROWS_H
+
+#include "geardyn/gd_analysis.h"
+
+#define GD_ROW_DECLARE(NAME)                                                                                     \
+    gd_status gd_row_##NAME##_run(const gd_case *c, const gd_run_env *env, gd_run_dir *out, void **result,       \
+                                  gd_error *err);                                                              \
+    gd_status gd_row_##NAME##_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err);       \
+    gd_status gd_row_##NAME##_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err);     \
+    void gd_row_##NAME##_free(void *result);
+
+GD_ROW_DECLARE(response)
+GD_ROW_DECLARE(sweep)
+GD_ROW_DECLARE(tca)
+GD_ROW_DECLARE(ltca)
+GD_ROW_DECLARE(workprec)
+GD_ROW_DECLARE(optimize)
+GD_ROW_DECLARE(compare)
+
+#endif
