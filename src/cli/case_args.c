@@ -14,8 +14,9 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "geardyn: --set needs section.key=value\n");
+            if (i + 1 >= argc || argv[i + 1][0] == '-') {  /* an assignment starts with its section */
+                fprintf(stderr, "geardyn: %s needs section.key=value%s%s%s\n", s, i + 1 < argc ? " (got the option '" : "",
+                        i + 1 < argc ? argv[i + 1] : "", i + 1 < argc ? "')" : "");
                 return 2;
             }
             if (a->nsets == CLI_MAX_SETS) {
@@ -30,8 +31,9 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
             }
             a->sets[a->nsets++] = s + 6;
         } else if (allow_out && strcmp(s, "--out") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "geardyn: --out needs a directory\n");
+            if (i + 1 >= argc || (argv[i + 1][0] == '-' && argv[i + 1][1] == '-')) {
+                fprintf(stderr, "geardyn: --out needs a directory%s%s%s\n", i + 1 < argc ? " (got the option '" : "",
+                        i + 1 < argc ? argv[i + 1] : "", i + 1 < argc ? "')" : "");
                 return 2;
             }
             a->out_dir = argv[++i];

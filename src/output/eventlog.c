@@ -28,6 +28,31 @@ static int kind_index(const char *k)
     return -1;
 }
 
+/* The clearance a filter names must be one of the log's (a misspelt name would select nothing
+ * and look like a clearance without events). */
+static gd_status check_filter_clearance(const char *path, const char *want, char seen[][24], int nseen,
+                                        gd_error *err)
+{
+    char valid[16 * 26] = "";
+    for (int c = 0; c < nseen; c++) {
+        if (strcmp(seen[c], want) == 0)
+            return GD_OK;
+        size_t used = strlen(valid);
+        snprintf(valid + used, sizeof valid - used, "%s%s", c ? ", " : "", seen[c]);
+    }
+    return gd_error_set(err, GD_ERR_INPUT, "%s: clearance '%s' is not in this event log (valid: %s)", path, want,
+                        nseen ? valid : "none, the log has no events");
+}
+
+static void note_clearance(char seen[][24], int *nseen, const char *name)
+{
+    for (int c = 0; c < *nseen; c++)
+        if (strcmp(seen[c], name) == 0)
+            return;
+    if (*nseen < 16)
+        snprintf(seen[(*nseen)++], 24, "%s", name);
+}
+
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err)
 {
@@ -35,8 +60,9 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     FILE *fp = fopen(path, "r");
     if (!fp)
         return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
-    char line[1024];
+    char line[1024], seen[16][24];
     long lineno = 0;
+    int nseen = 0;
     gd_status st = GD_OK;
     if (!fgets(line, sizeof line, fp) || strncmp(line, EVENTLOG_HEADER, strlen(EVENTLOG_HEADER)) != 0) {
         fclose(fp);
@@ -71,6 +97,7 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
             break;
         }
         sum->rows++;
+        note_clearance(seen, &nseen, f[3]);
         if (t < flt->t_from_s || t > flt->t_to_s)
             continue;
         if (flt->clearance[0] && strcmp(flt->clearance, f[3]) != 0)
@@ -110,6 +137,8 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     if (st == GD_OK && ferror(fp))
         st = gd_error_set(err, GD_ERR_IO, "%s: read error", path);
     fclose(fp);
+    if (st == GD_OK && flt->clearance[0])
+        st = check_filter_clearance(path, flt->clearance, seen, nseen, err);
     for (int c = 0; c < sum->nclear; c++)
         sum->regime[c] = sum->count[c][GD_EV_BACK_CONTACT] ? GD_IMPACT_DOUBLE
                        : sum->count[c][GD_EV_SEPARATION] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
