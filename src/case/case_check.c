@@ -48,9 +48,17 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
                             "(valid: one of them; torque = 9550 P / n)", w);
     }
-    if (gd_case_key_given(c, "operating", "power_kw"))
+    if (gd_case_key_given(c, "operating", "power_kw")) {
         gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
-    else {
+        const gd_keyspec *k = gd_case_find_key("operating", "torque_nm");
+        if (!gd_case_key_in_range(k, c->torque_nm)) {
+            gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: the torque 9550 P / n = %.3g N m from "
+                                "operating.power_kw = %g kW and operating.speed_rpm = %g rpm is out of range (valid: "
+                                "a torque in [%g, %g] N m: power_kw <= %.3g at this speed)", w, c->torque_nm,
+                                c->power_kw, c->speed_rpm, k->min, k->max, k->max * c->speed_rpm / 9550.0);
+        }
+    } else {
         if (!gd_case_key_given(c, "operating", "torque_nm")) {
             c->torque_nm = 500.0;
             c->src[gd_case_key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;

@@ -11,6 +11,7 @@
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
 {
     memset(a, 0, sizeof *a);
+    a->check_only = !allow_out;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0) {
@@ -68,11 +69,12 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     return 0;
 }
 
-int cli_load_case(const cli_case_args *a, gd_case *c)
+int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
     if (gd_case_init(c, &err) != GD_OK)
         return cli_fail(&err);
+    c->ltca_deferred = a->check_only;
     if (gd_case_load(c, a->case_path, &err) != GD_OK)
         return cli_fail(&err);
     for (int i = 0; i < a->nsets; i++)
@@ -82,6 +84,9 @@ int cli_load_case(const cli_case_args *a, gd_case *c)
         return cli_fail(&err);
     gd_model m;
     if (gd_model_build(c, &m, &err) != GD_OK)
+        return cli_fail(&err);
+    gd_run_cost_estimate(c, &m, &a->cost);
+    if (gd_run_cost_check(c, &m, &a->cost, &err) != GD_OK)
         return cli_fail(&err);
     return 0;
 }

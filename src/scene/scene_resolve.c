@@ -104,6 +104,8 @@ static gd_status resolve_ltca(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with stiffness = ltca (valid: 0; "
                             "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
     }
+    if (c->ltca_deferred)  /* geardyn check: the run computes it */
+        return GD_OK;
     const gd_ltca_excitation *x;
     gd_status sx = gd_ltca_excitation_cached(c, &x, err);
     if (sx != GD_OK)
@@ -124,7 +126,7 @@ static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *e
         if (st != GD_OK)
             return st;
     }
-    if (c->stiffness != GD_STIFF_LTCA)
+    if (c->stiffness != GD_STIFF_LTCA || c->ltca_deferred)
         gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(c, g));
     gd_case_key_derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
            gd_groove_shaft_stiffness(c, g, 0));
