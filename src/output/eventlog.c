@@ -3,9 +3,12 @@
 #include "geardyn/gd_output.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording,located"
 
@@ -26,6 +29,30 @@ static int kind_index(const char *k)
         if (strcmp(k, gd_event_kind_name(i)) == 0)
             return i;
     return -1;
+}
+
+/* The event log opened for reading if it is a regular file: a FIFO (opened without waiting for a
+ * writer), a device or a directory is refused. */
+static FILE *open_regular(const char *path, gd_error *err)
+{
+    struct stat sb;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0 || fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        if (fd < 0)
+            gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+        else
+            gd_error_set(err, GD_ERR_INPUT, "%s: is %s, not an event log (valid: the events.csv of a run)", path,
+                         S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
+        if (fd >= 0)
+            close(fd);
+        return NULL;
+    }
+    FILE *fp = fdopen(fd, "r");
+    if (!fp) {
+        gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+        close(fd);
+    }
+    return fp;
 }
 
 /* The clearance a filter names must be one of the log's (a misspelt name would select nothing
@@ -57,9 +84,9 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
                                        gd_eventlog_summary *sum, gd_error *err)
 {
     memset(sum, 0, sizeof *sum);
-    FILE *fp = fopen(path, "r");
+    FILE *fp = open_regular(path, err);
     if (!fp)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+        return GD_ERR_INPUT;
     char line[1024], seen[16][24];
     long lineno = 0;
     int nseen = 0;
