@@ -33,16 +33,10 @@ static int known_table(const char *list, const char *name)
     return strstr(list, key) != NULL;
 }
 
-GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
+/* Torque or power, one of them; the other derived (T = 9550 P / n) and range-checked. */
+static gd_status check_load(gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    if (c->transient_max_periods > 0 && c->transient_max_periods < c->transient_periods) {
-        gd_case_key_where(c, "run", "transient_max_periods", w, sizeof w);
-        return gd_error_set(err, GD_ERR_INPUT, "%s: run.transient_max_periods: %d is below run.transient_periods = %d "
-                            "(valid: 0, or at least transient_periods)", w, c->transient_max_periods,
-                            c->transient_periods);
-    }
-    /* torque or power */
     if (gd_case_key_given(c, "operating", "torque_nm") && gd_case_key_given(c, "operating", "power_kw")) {
         gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
@@ -65,6 +59,21 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
         }
         gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
     }
+    return GD_OK;
+}
+
+GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    if (c->transient_max_periods > 0 && c->transient_max_periods < c->transient_periods) {
+        gd_case_key_where(c, "run", "transient_max_periods", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: run.transient_max_periods: %d is below run.transient_periods = %d "
+                            "(valid: 0, or at least transient_periods)", w, c->transient_max_periods,
+                            c->transient_periods);
+    }
+    gd_status st = check_load(c, err);
+    if (st != GD_OK)
+        return st;
     /* static transmission error amplitude */
     int has_fa = gd_case_key_given(c, "excitation", "base_pitch_deviation_um");
     int has_fb = gd_case_key_given(c, "excitation", "profile_deviation_um");
