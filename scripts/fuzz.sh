@@ -5,8 +5,8 @@
 #
 # BUILD_DIR is a build configured for fuzzing:
 #   CC=clang meson setup BUILD_DIR -Dfuzz=true -Db_lundef=false && ninja -C BUILD_DIR tests/fuzz/fuzz_case
-# First every input of tests/fuzz/case/ (seeds and every crash ever found) and every shipped case of
-# cases/ is run once; then libFuzzer mutates them for SECONDS (default 60) into a scratch corpus
+# First every input of tests/fuzz/case/ (seeds and every crash ever found), every shipped case of
+# cases/ and every file of the bad-input corpus tests/bad-input/ is run once; then libFuzzer mutates them for SECONDS (default 60) into a scratch corpus
 # that is thrown away, so the repository is never written. Prints the executions and the coverage
 # reached; exits 1 on a crash, a leak or a sanitizer report, leaving the input that caused it in
 # BUILD_DIR/fuzz-artifacts/ (add it to tests/fuzz/case/ with the fix, so that it is replayed for ever).
@@ -23,7 +23,7 @@ trap 'rm -rf "$scratch"' EXIT
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
 echo "# replay: tests/fuzz/case and cases"
-if ! "$exe" -runs=0 -artifact_prefix="$art/" "$src/tests/fuzz/case" "$src/cases" > "$scratch/replay.log" 2>&1; then
+if ! "$exe" -runs=0 -artifact_prefix="$art/" "$src/tests/fuzz/case" "$src/cases" "$src/tests/bad-input" > "$scratch/replay.log" 2>&1; then
     tail -40 "$scratch/replay.log"
     echo "fuzz.sh: the corpus replay failed" >&2
     exit 1
@@ -32,9 +32,10 @@ grep -E "INITED|DONE" "$scratch/replay.log" | tail -1
 
 echo "# fuzzing for $seconds s"
 "$exe" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$art/" "$scratch" "$src/tests/fuzz/case" "$src/cases" > "$scratch/fuzz.log" 2>&1
+    -artifact_prefix="$art/" "$scratch" "$src/tests/fuzz/case" "$src/cases" "$src/tests/bad-input" \
+    > "$scratch/fuzz.log" 2>&1
 rc=$?
-grep -E "^#[0-9]+ +(DONE|INITED)" "$scratch/fuzz.log" | tail -2
+grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)" "$scratch/fuzz.log" | tail -2
 grep -E "^stat::(number_of_executed_units|average_exec_per_sec|new_units_added|peak_rss_mb)" "$scratch/fuzz.log"
 if [ $rc -ne 0 ]; then
     grep -E "ERROR|SUMMARY|runtime error|Test unit written" "$scratch/fuzz.log" | head -20

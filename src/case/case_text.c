@@ -41,14 +41,24 @@ static gd_status read_regular(const char *path, char **buf, size_t *len, gd_erro
         return gd_error_set(err, GD_ERR_INPUT, "%s: %lld bytes, too large for a case file (valid: at most %d bytes)",
                             path, (long long)st.st_size, GD_CASE_MAX_BYTES);
     }
-    char *b = malloc(GD_CASE_MAX_BYTES + 2);
+    size_t cap = (size_t)st.st_size + 2;  /* one byte more than its size: a file that grows is seen */
+    char *b = malloc(cap);
     if (!b) {
         close(fd);
         return gd_error_set(err, GD_ERR_NOMEM, "%s: out of memory reading the case file", path);
     }
     size_t n = 0;
     for (;;) {
-        ssize_t r = read(fd, b + n, GD_CASE_MAX_BYTES + 1 - n);
+        if (n + 1 == cap) {
+            char *nb = cap > GD_CASE_MAX_BYTES ? NULL : realloc(b, 2 * cap);
+            if (!nb) {
+                n = GD_CASE_MAX_BYTES + 1;
+                break;
+            }
+            b = nb;
+            cap *= 2;
+        }
+        ssize_t r = read(fd, b + n, cap - 1 - n);
         if (r < 0 && errno == EINTR)
             continue;
         if (r < 0) {
