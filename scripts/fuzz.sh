@@ -6,7 +6,8 @@
 # BUILD_DIR is a build configured for fuzzing:
 #   CC=clang meson setup BUILD_DIR -Dfuzz=true -Db_lundef=false && ninja -C BUILD_DIR tests/fuzz/fuzz_case
 # First every input of tests/fuzz/case/ (seeds and every crash ever found), every shipped case of
-# cases/ and every file of the bad-input corpus tests/bad-input/ is run once; then libFuzzer mutates them for SECONDS (default 60) into a scratch corpus
+# cases/ and every file of the bad-input corpus tests/bad-input/ is run once; then libFuzzer
+# mutates them for SECONDS (default 60) into a scratch corpus
 # that is thrown away, so the repository is never written. Prints the executions and the coverage
 # reached; exits 1 on a crash, a leak or a sanitizer report, leaving the input that caused it in
 # BUILD_DIR/fuzz-artifacts/ (add it to tests/fuzz/case/ with the fix, so that it is replayed for ever).
