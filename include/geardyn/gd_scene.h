@@ -27,7 +27,7 @@ GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *er
  * any work (docs/architecture.md): the mesh periods integrated and the integration steps (from
  * the frequency ratio: about 170 steps per natural period, at least 1 / max_step_fraction per
  * mesh period; measured on the quickstart case), the memory the recorded window holds and the
- * bytes of the files, the size of an LTCA or TCA. Estimates within a factor of a few. */
+ * bytes of the files, the size and time of an LTCA. Estimates within a factor of a few. */
 typedef struct gd_run_cost {
     double points;           /* dynamic runs (sweep points, 1 for a response; 0: no integration) */
     double periods;          /* mesh periods integrated per run */

@@ -2,7 +2,9 @@
  * checked against their limits (gd_scene.h). The per-item sizes are measured on the files the
  * writers produce (cases/quickstart.ini: 254 bytes per time-history row of the 10-DOF model, 36 per
  * row of variable.csv, 19 per value of poincare.csv, about 3 events of 78 bytes per clearance and
- * mesh period, 7.6 us per step of the 10-DOF model). */
+ * mesh period, 7.6 us per step of the 10-DOF model) and on the LTCA of
+ * cases/paper/local-speed-1500rpm.ini with 21, 201 and 401 face slices (0.34 s, 2.8 s, 21 s; 24 MB at
+ * 401: one dense system per half and position). */
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_geometry.h"
 #include "../case/case_keys.h"
@@ -58,10 +60,11 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cos
         window = files = 0;
     cost->ltca_unknowns = ltca_unknowns(c);
     double N = cost->ltca_unknowns;
-    cost->memory_bytes = window + 3 * 8.0 * N * N;
+    double per_half = N / (c->arrangement == GD_ARR_HERRINGBONE ? 2 : 1);
+    cost->memory_bytes = window + 8.0 * per_half * per_half;
     cost->disk_bytes = files;
     double positions = c->ltca_positions_per_cycle * (c->impact ? 2.0 : 1.0);
-    cost->seconds = cost->steps * 0.8e-6 * m->ndof + (N > 0 ? positions * N * N * N * 2e-9 : 0);
+    cost->seconds = cost->steps * 0.8e-6 * m->ndof + positions * (2.4e-5 * N + 7.8e-12 * N * N * N);
     cost->time_class = cost->seconds < 10 ? "seconds" : cost->seconds < 600 ? "minutes"
                      : cost->seconds < 36000 ? "hours" : "days or more";
 }
