@@ -23,7 +23,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 
-echo "# replay: tests/fuzz/case and cases"
+echo "# replay: tests/fuzz/case, cases, tests/bad-input"
 if ! "$exe" -runs=0 -artifact_prefix="$art/" "$src/tests/fuzz/case" "$src/cases" "$src/tests/bad-input" > "$scratch/replay.log" 2>&1; then
     tail -40 "$scratch/replay.log"
     echo "fuzz.sh: the corpus replay failed" >&2
@@ -31,9 +31,15 @@ if ! "$exe" -runs=0 -artifact_prefix="$art/" "$src/tests/fuzz/case" "$src/cases"
 fi
 grep -E "INITED|DONE" "$scratch/replay.log" | tail -1
 
+# a dictionary of the schema's words (sections, keys, choices), so that mutations reach the checks
+# behind the key lookup; made from the schema's source each time, so it cannot go stale
+{ grep -oE '"[][a-z0-9_|.-]+"' "$src/src/case/case_schema.c" | tr -d '"' | tr '|' '\n'
+  printf '%s\n' '[' ']' ' = ' '%%' ; } | sort -u | grep -v '^$' | sed 's/.*/"&"/' > "$scratch/case.dict"
+
 echo "# fuzzing for $seconds s"
-"$exe" -max_total_time="$seconds" -max_len=4096 -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
-    -artifact_prefix="$art/" "$scratch" "$src/tests/fuzz/case" "$src/cases" "$src/tests/bad-input" \
+mkdir "$scratch/corpus"
+"$exe" -max_total_time="$seconds" -max_len=4096 -dict="$scratch/case.dict" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 \
+    -artifact_prefix="$art/" "$scratch/corpus" "$src/tests/fuzz/case" "$src/cases" "$src/tests/bad-input" \
     > "$scratch/fuzz.log" 2>&1
 rc=$?
 grep -E "^#[0-9]+[[:space:]]+(INITED|DONE)" "$scratch/fuzz.log" | tail -2
