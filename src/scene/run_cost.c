@@ -11,6 +11,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 static double dynamic_points(const gd_case *c)
 {
@@ -69,9 +70,35 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cos
                      : cost->seconds < 36000 ? "hours" : "days or more";
 }
 
+/* The slowest speed a run integrates: the case's, or the lowest end of a sweep of the speed. */
+static double slowest_speed(const gd_case *c, const char **key)
+{
+    double n = c->speed_rpm;
+    *key = NULL;
+    for (int axis = 0; c->analysis == GD_ANALYSIS_SWEEP && axis < 2; axis++)
+        if (strcmp(axis ? c->sweep_parameter2 : c->sweep_parameter, "operating.speed_rpm") == 0) {
+            double lo = fmin(axis ? c->sweep_from2 : c->sweep_from, axis ? c->sweep_to2 : c->sweep_to);
+            if (lo < n) {
+                n = lo;
+                *key = lo == (axis ? c->sweep_from2 : c->sweep_from) ? (axis ? "from2" : "from")
+                                                                      : (axis ? "to2" : "to");
+            }
+        }
+    return n;
+}
+
 GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd_run_cost *cost, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
+    const char *sweep_key;
+    double speed = slowest_speed(c, &sweep_key);
+    if (sweep_key && cost->points > 0 && !(m->Omega * speed / c->speed_rpm >= 1e-4)) {
+        gd_case_key_where(c, "sweep", sweep_key, w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: at operating.speed_rpm = %g rpm the mesh frequency is "
+                            "%.3g of the natural frequency %.4g Hz, a run would not end (valid: a mesh frequency of at "
+                            "least 1e-4 of the natural one: speed_rpm >= %.3g)", w, sweep_key, speed,
+                            m->Omega * speed / c->speed_rpm, m->omega_n / (2 * M_PI), c->speed_rpm * 1e-4 / m->Omega);
+    }
     if (cost->points > 0 && !(m->Omega >= 1e-4)) {
         gd_case_key_where(c, "operating", "speed_rpm", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.speed_rpm: the mesh frequency %.3g Hz "
