@@ -272,7 +272,7 @@ static gd_status store_list(gd_case *c, const gd_keyspec *k, const char *value, 
         if (comma)
             *comma = '\0';
         const char *problem = parse_number(tok, &v);
-        char what[64];
+        char what[160];
         if (count == GD_MAX_HARMONICS)
             return bad_value(where, k, value, "more than 8 values:", err);
         if (!problem && !gd_case_key_in_range(k, v))
