@@ -69,24 +69,46 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     return 0;
 }
 
+/* Resolve c without LTCA (as geardyn check does), build its model and check the run's estimated
+ * cost: every check before any work, whatever the run would compute first. */
+static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
+{
+    gd_model m;
+    c->ltca_deferred = 1;
+    gd_status st = gd_case_resolve(c, err);
+    if (st == GD_OK)
+        st = gd_model_build(c, &m, err);
+    if (st == GD_OK) {
+        gd_run_cost_estimate(c, &m, cost);
+        st = gd_run_cost_check(c, &m, cost, err);
+    }
+    return st;
+}
+
 int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
     if (gd_case_init(c, &err) != GD_OK)
         return cli_fail(&err);
-    c->ltca_deferred = a->check_only;
     if (gd_case_load(c, a->case_path, &err) != GD_OK)
         return cli_fail(&err);
     for (int i = 0; i < a->nsets; i++)
         if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
             return cli_fail(&err);
+    gd_case probe;
+    if (gd_case_copy(&probe, c, &err) != GD_OK)
+        return cli_fail(&err);
+    gd_status st = probe_cost(&probe, &a->cost, &err);
+    if (st != GD_OK || a->check_only) {  /* check shows the case as probed */
+        gd_case_free(c);
+        *c = probe;
+        return st == GD_OK ? 0 : cli_fail(&err);
+    }
+    gd_case_free(&probe);
     if (gd_case_resolve(c, &err) != GD_OK)
         return cli_fail(&err);
     gd_model m;
     if (gd_model_build(c, &m, &err) != GD_OK)
-        return cli_fail(&err);
-    gd_run_cost_estimate(c, &m, &a->cost);
-    if (gd_run_cost_check(c, &m, &a->cost, &err) != GD_OK)
         return cli_fail(&err);
     return 0;
 }
