@@ -129,6 +129,7 @@ typedef struct gd_case {
     int samples_per_period;
     int time_history, event_log, plots;
     char response_variable[32];
+    double max_bytes;        /* a run whose estimated memory or files exceed this is refused (gd_run_cost_check) */
     /* [sweep] (analysis = sweep; gd_sweep.h): parameter and parameter2 are "section.key" */
     char sweep_parameter[256], sweep_parameter2[256];
     double sweep_from, sweep_to, sweep_from2, sweep_to2; /* in the unit of the swept key */
@@ -170,6 +171,8 @@ typedef struct gd_case {
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */
     unsigned char *src;      /* gd_source per schema entry */
     int *src_line;           /* file line (or --set index) per schema entry */
+    int ltca_deferred;       /* 1 (geardyn check): resolving and building run no LTCA; the mesh stiffness of
+                              * stiffness = ltca is ISO 6336-1's estimate until a run computes it */
 } gd_case;
 
 typedef enum gd_keytype {

@@ -39,6 +39,27 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
 /* Apply the case's LTCA stiffness (stiffness = ltca) and impact (impact = on) to a built model. */
 GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err);
 
+/* What a run of a resolved case will cost, estimated from its keys and its built model before
+ * any work (docs/architecture.md): the mesh periods integrated and the integration steps (from
+ * the frequency ratio: about 170 steps per natural period, at least 1 / max_step_fraction per
+ * mesh period; measured on the quickstart case), the memory the recorded window holds and the
+ * bytes of the files, the size and time of an LTCA. Estimates within a factor of a few. */
+typedef struct gd_run_cost {
+    double points;           /* dynamic runs (sweep points, 1 for a response; 0: no integration) */
+    double periods;          /* mesh periods integrated per run */
+    double steps;            /* integration steps, all runs */
+    double memory_bytes;     /* held at once by the recorded window (and the LTCA matrices) */
+    double disk_bytes;       /* written */
+    double ltca_unknowns;    /* contact points of one LTCA position (0: no LTCA) */
+    double seconds;          /* order of magnitude of the run time */
+    const char *time_class;  /* "seconds", "minutes", "hours", "days or more" */
+} gd_run_cost;
+GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cost *cost);
+/* The derived values checked before any work: a mesh frequency at least 1e-4 of the natural one
+ * (a slower run would never end), memory and files within output.max_bytes. The messages name
+ * the keys the value comes from; GD_ERR_INPUT. */
+GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd_run_cost *cost, gd_error *err);
+
 /* The integrator options of the case's [solver] section. */
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);
 

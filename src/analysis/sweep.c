@@ -45,7 +45,8 @@ static void describe(const gd_keyspec *k, char *buf, size_t len)
                  k->max_open ? ")" : "]", k->unit[0] ? " " : "", k->unit);
 }
 
-double gd_sweep_axis_value(const gd_case *c, int axis, int i)
+/* Value i of an axis as spaced, before a whole-number key rounds it. */
+static double axis_raw_value(const gd_case *c, int axis, int i)
 {
     int n = axis ? c->sweep_points2 : c->sweep_points;
     double a = axis ? c->sweep_from2 : c->sweep_from, b = axis ? c->sweep_to2 : c->sweep_to;
@@ -59,6 +60,12 @@ double gd_sweep_axis_value(const gd_case *c, int axis, int i)
         double f = (double)i / (double)(n - 1);
         v = log_sp ? exp(log(a) + f * (log(b) - log(a))) : a + f * (b - a);
     }
+    return v;
+}
+
+double gd_sweep_axis_value(const gd_case *c, int axis, int i)
+{
+    double v = axis_raw_value(c, axis, i);
     const gd_keyspec *k = dotted_key(axis ? c->sweep_parameter2 : c->sweep_parameter);
     if (k && k->type == GD_KEY_INT)
         v = floor(v + 0.5);
@@ -180,6 +187,17 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
             gd_case_key_where(c, "sweep", i == 0 ? kf : kt, w, sizeof w);
             return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: %s = %.10g is out of range (valid: %s)", w,
                                 i == 0 ? kf : kt, name, v, range);
+        }
+    }
+    /* a whole-number key is swept over whole numbers only: a grid that would be rounded is refused */
+    for (int i = 0; k->type == GD_KEY_INT && i < points; i++) {
+        double v = axis_raw_value(c, axis, i);
+        if (fabs(v - floor(v + 0.5)) > 1e-9 * fmax(1.0, fabs(v))) {
+            gd_case_key_where(c, "sweep", axis ? "points2" : "points", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: value %d of the whole-number key %s would be "
+                                "%.6g, rounded to %.0f (valid: from, to and points giving whole numbers: linear "
+                                "spacing with (to - from) / (points - 1) whole)", w, axis ? "points2" : "points",
+                                i + 1, name, v, floor(v + 0.5));
         }
     }
     return GD_OK;

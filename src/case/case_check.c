@@ -33,6 +33,35 @@ static int known_table(const char *list, const char *name)
     return strstr(list, key) != NULL;
 }
 
+/* Torque or power, one of them; the other derived (T = 9550 P / n) and range-checked. */
+static gd_status check_load(gd_case *c, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    if (gd_case_key_given(c, "operating", "torque_nm") && gd_case_key_given(c, "operating", "power_kw")) {
+        gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
+                            "(valid: one of them; torque = 9550 P / n)", w);
+    }
+    if (gd_case_key_given(c, "operating", "power_kw")) {
+        gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
+        const gd_keyspec *k = gd_case_find_key("operating", "torque_nm");
+        if (!gd_case_key_in_range(k, c->torque_nm)) {
+            gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: the torque 9550 P / n = %.3g N m from "
+                                "operating.power_kw = %g kW and operating.speed_rpm = %g rpm is out of range (valid: "
+                                "a torque in [%g, %g] N m: power_kw <= %.3g at this speed)", w, c->torque_nm,
+                                c->power_kw, c->speed_rpm, k->min, k->max, k->max * c->speed_rpm / 9550.0);
+        }
+    } else {
+        if (!gd_case_key_given(c, "operating", "torque_nm")) {
+            c->torque_nm = 500.0;
+            c->src[gd_case_key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;
+        }
+        gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
+    }
+    return GD_OK;
+}
+
 GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
@@ -42,21 +71,9 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
                             "(valid: 0, or at least transient_periods)", w, c->transient_max_periods,
                             c->transient_periods);
     }
-    /* torque or power */
-    if (gd_case_key_given(c, "operating", "torque_nm") && gd_case_key_given(c, "operating", "power_kw")) {
-        gd_case_key_where(c, "operating", "power_kw", w, sizeof w);
-        return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
-                            "(valid: one of them; torque = 9550 P / n)", w);
-    }
-    if (gd_case_key_given(c, "operating", "power_kw"))
-        gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
-    else {
-        if (!gd_case_key_given(c, "operating", "torque_nm")) {
-            c->torque_nm = 500.0;
-            c->src[gd_case_key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;
-        }
-        gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
-    }
+    gd_status st = check_load(c, err);
+    if (st != GD_OK)
+        return st;
     /* static transmission error amplitude */
     int has_fa = gd_case_key_given(c, "excitation", "base_pitch_deviation_um");
     int has_fb = gd_case_key_given(c, "excitation", "profile_deviation_um");

@@ -1,6 +1,7 @@
 /* Reading case files (inih) and --set assignments into a gd_case, strictly. */
 #include "geardyn/gd_case.h"
 #include "case_keys.h"
+#include "case_text.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -8,6 +9,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include <ini.h>
 
@@ -151,12 +153,21 @@ static gd_status unknown_key(const char *where, const char *section, const char 
                                 where, section, best, secs);
         return gd_error_set(err, GD_ERR_INPUT, "%s: [%s]: unknown section (valid: %s)", where, section, secs);
     }
-    /* best match in the same section, then anywhere */
-    const gd_keyspec *best = NULL;
-    size_t bd = 99;
+    /* the best match in the same section (a key it begins, as speed for speed_rpm, counts as a
+     * near match); a key of another section only when none of this section is near */
+    const gd_keyspec *best = NULL, *other = NULL;
+    size_t bd = 99, od = 99, limit = 4 + strlen(key) / 6;
     for (size_t i = 0; i < n; i++) {
-        size_t d = edit_distance(key, s[i].key) + (strcmp(section, s[i].section) ? 2 : 0);
-        if (d < bd) { bd = d; best = &s[i]; }
+        size_t d = edit_distance(key, s[i].key);
+        if (strcmp(section, s[i].section) == 0) {
+            if (key[0] && strncmp(s[i].key, key, strlen(key)) == 0 && d > 1)
+                d = 1;
+            if (d < bd) { bd = d; best = &s[i]; }
+        } else if (d < od) { od = d; other = &s[i]; }
+    }
+    if (!(best && bd <= limit) && other && od + 2 <= limit) {
+        best = other;
+        bd = od;
     }
     char keys[2048] = "";
     for (size_t i = 0; i < n; i++)
@@ -164,7 +175,7 @@ static gd_status unknown_key(const char *where, const char *section, const char 
             size_t used = strlen(keys);
             snprintf(keys + used, sizeof keys - used, "%s%s", used ? ", " : "", s[i].key);
         }
-    if (best && bd <= 4 + strlen(key) / 6)
+    if (best && bd <= limit)
         return gd_error_set(err, GD_ERR_INPUT, "%s: %s: unknown key in [%s], did you mean %s.%s? (valid: %s)",
                             where, key, section, best->section, best->key, keys);
     return gd_error_set(err, GD_ERR_INPUT, "%s: %s: unknown key in [%s] (valid: %s)", where, key, section, keys);
@@ -197,16 +208,43 @@ static void describe_range(const gd_keyspec *k, char *buf, size_t len)
     }
 }
 
-static int parse_double(const char *s, double *v)
+/* A number as case files write it: decimal, an optional fraction and exponent (no hexadecimal,
+ * which strtod would take), or inf / nan, which the caller refuses as not finite. Returns NULL and
+ * sets *v, or the problem. */
+static const char *parse_number(const char *s, double *v)
 {
+    while (isspace((unsigned char)*s)) s++;
+    const char *p = s;
+    if (*p == '+' || *p == '-')
+        p++;
+    int digits = 0;
+    while (isdigit((unsigned char)*p)) { p++; digits++; }
+    if (*p == '.')
+        for (p++; isdigit((unsigned char)*p); p++) digits++;
+    if (digits && (*p == 'e' || *p == 'E')) {
+        const char *q = p + 1;
+        if (*q == '+' || *q == '-')
+            q++;
+        if (isdigit((unsigned char)*q)) {
+            while (isdigit((unsigned char)*q)) q++;
+            p = q;
+        }
+    }
+    while (isspace((unsigned char)*p)) p++;
+    int word = !digits && (strncasecmp(s + (*s == '+' || *s == '-'), "inf", 3) == 0 ||
+                           strncasecmp(s + (*s == '+' || *s == '-'), "nan", 3) == 0);
+    if ((!digits || *p) && !word)
+        return "not a number:";
     char *end;
     errno = 0;
-    while (isspace((unsigned char)*s)) s++;
-    if (!*s)
-        return 0;
     *v = strtod(s, &end);
     while (isspace((unsigned char)*end)) end++;
-    return *end == '\0' && errno != ERANGE;
+    if (*end)
+        return "not a number:";
+    if (errno == ERANGE)
+        return fabs(*v) > 1.0 ? "out of the range of a double (above 1.8e308 in magnitude):"
+                              : "out of the range of a double (below 2.2e-308 in magnitude, not zero):";
+    return NULL;
 }
 
 static gd_status bad_value(const char *where, const gd_keyspec *k, const char *value, const char *problem, gd_error *err)
@@ -217,14 +255,50 @@ static gd_status bad_value(const char *where, const gd_keyspec *k, const char *v
                         value, range);
 }
 
+/* A comma-separated list: every element a number in range, none empty ("0.1,,0.05" and a trailing
+ * comma are refused, not read as two values). */
+static gd_status store_list(gd_case *c, const gd_keyspec *k, const char *value, const char *where, gd_error *err)
+{
+    double *arr = field(c, k), v;
+    int count = 0;
+    char buf[512];
+    if (strlen(value) >= sizeof buf)
+        return bad_value(where, k, value, "too long:", err);
+    snprintf(buf, sizeof buf, "%s", value);
+    if (strspn(buf, " \t") == strlen(buf))
+        return bad_value(where, k, value, "empty list:", err);
+    for (char *tok = buf, *comma; tok; tok = comma ? comma + 1 : NULL) {
+        comma = strchr(tok, ',');
+        if (comma)
+            *comma = '\0';
+        const char *problem = parse_number(tok, &v);
+        char what[160];
+        if (count == GD_MAX_HARMONICS)
+            return bad_value(where, k, value, "more than 8 values:", err);
+        if (!problem && !gd_case_key_in_range(k, v))
+            problem = "out of range:";
+        if (problem) {
+            const char *t = tok;
+            while (isspace((unsigned char)*t)) t++;
+            snprintf(what, sizeof what, "%s element %d %s in", *t ? "bad" : "empty", count + 1,
+                     *t ? problem : "(two commas, or one at an end)");
+            return bad_value(where, k, value, what, err);
+        }
+        arr[count++] = v;
+    }
+    *(int *)((char *)c + k->count_offset) = count;
+    return GD_OK;
+}
+
 /* Store value (text) into key k; where = "file:line" or "--set". */
 static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const char *where, gd_error *err)
 {
     double v;
+    const char *problem;
     switch (k->type) {
     case GD_KEY_DOUBLE:
-        if (!parse_double(value, &v))
-            return bad_value(where, k, value, "not a number:", err);
+        if ((problem = parse_number(value, &v)))
+            return bad_value(where, k, value, problem, err);
         if (!isfinite(v))
             return bad_value(where, k, value, "not finite:", err);
         if (!gd_case_key_in_range(k, v))
@@ -232,7 +306,9 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
         *(double *)field(c, k) = v;
         return GD_OK;
     case GD_KEY_INT:
-        if (!parse_double(value, &v) || v != floor(v))
+        if ((problem = parse_number(value, &v)) && strncmp(problem, "out of", 6) == 0)
+            return bad_value(where, k, value, problem, err);
+        if (problem || v != floor(v))
             return bad_value(where, k, value, "not a whole number:", err);
         if (!gd_case_key_in_range(k, v))
             return bad_value(where, k, value, "out of range:", err);
@@ -270,26 +346,8 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
         snprintf(dst, cap, "%s", value);
         return GD_OK;
     }
-    case GD_KEY_DLIST: {
-        double *arr = field(c, k);
-        int count = 0;
-        char buf[512];
-        if (strlen(value) >= sizeof buf)
-            return bad_value(where, k, value, "too long:", err);
-        snprintf(buf, sizeof buf, "%s", value);
-        char *save = NULL;
-        for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
-            if (count == GD_MAX_HARMONICS)
-                return bad_value(where, k, value, "more than 8 values:", err);
-            if (!parse_double(tok, &v) || !gd_case_key_in_range(k, v))
-                return bad_value(where, k, value, "bad list element in", err);
-            arr[count++] = v;
-        }
-        if (count == 0)
-            return bad_value(where, k, value, "empty list:", err);
-        *(int *)((char *)c + k->count_offset) = count;
-        return GD_OK;
-    }
+    case GD_KEY_DLIST:
+        return store_list(c, k, value, where, err);
     }
     return gd_error_set(err, GD_ERR_INTERNAL, "bad key type");
 }
@@ -297,26 +355,37 @@ static gd_status store(gd_case *c, const gd_keyspec *k, const char *value, const
 typedef struct load_ctx {
     gd_case *c;
     gd_error *err;
-    FILE *fp;
+    const char *next;  /* the rest of the checked text (case_text.h): one line per line of the file */
     int line;
-    int too_long;
     int failed;
 } load_ctx;
 
+/* inih's stream reader: one line of the checked text per call, so ctx->line is the file's line.
+ * A section header is checked here, where it is seen, so that an empty [section] is checked too. */
 static char *reader(char *str, int num, void *stream)
 {
     load_ctx *ctx = stream;
-    char *r = fgets(str, num, ctx->fp);
-    if (r) {
-        size_t l = strlen(r);
-        if (l > 0 && r[l - 1] == '\n')
-            ctx->line++;
-        else if (!feof(ctx->fp))
-            ctx->too_long = 1;
-        else
-            ctx->line++;
+    if (ctx->failed || !*ctx->next)
+        return NULL;
+    size_t l = strcspn(ctx->next, "\n") + 1;  /* at most GD_CASE_MAX_LINE + 1 < num */
+    if (l >= (size_t)num)
+        l = (size_t)num - 1;
+    memcpy(str, ctx->next, l);
+    str[l] = '\0';
+    ctx->next += l;
+    ctx->line++;
+    if (str[0] == '[') {
+        char name[GD_CASE_MAX_LINE + 1];
+        snprintf(name, sizeof name, "%.*s", (int)strcspn(str + 1, "]"), str + 1);
+        if (!section_exists(name)) {
+            char where[GD_PATH_MAX + 32];
+            snprintf(where, sizeof where, "%s:%d", ctx->c->path, ctx->line);
+            unknown_key(where, name, "", ctx->err);
+            ctx->failed = 1;
+            return NULL;
+        }
     }
-    return r;
+    return str;
 }
 
 static int handler(void *user, const char *section, const char *name, const char *value)
@@ -326,14 +395,14 @@ static int handler(void *user, const char *section, const char *name, const char
         return 0;
     char where[GD_PATH_MAX + 32];
     snprintf(where, sizeof where, "%s:%d", ctx->c->path, ctx->line);
-    if (ctx->too_long) {
-        ctx->failed = 1;
-        gd_error_set(ctx->err, GD_ERR_INPUT, "%s: line longer than 199 characters", where);
+    ctx->failed = 1;
+    if (!section[0]) {
+        gd_error_set(ctx->err, GD_ERR_INPUT, "%s: %s: key before any [section] header (valid: a [section] line "
+                     "first)", where, name);
         return 0;
     }
     const gd_keyspec *k = gd_case_find_key(section, name);
     if (!k) {
-        ctx->failed = 1;
         unknown_key(where, section, name, ctx->err);
         return 0;
     }
@@ -341,15 +410,13 @@ static int handler(void *user, const char *section, const char *name, const char
     const gd_keyspec *s = gd_case_schema(&n);
     i = (size_t)(k - s);
     if (ctx->c->src[i] == GD_SRC_FILE) {
-        ctx->failed = 1;
         gd_error_set(ctx->err, GD_ERR_INPUT, "%s: %s.%s: given twice (first at line %d)", where, section, name,
                      ctx->c->src_line[i]);
         return 0;
     }
-    if (store(ctx->c, k, value, where, ctx->err) != GD_OK) {
-        ctx->failed = 1;
+    if (store(ctx->c, k, value, where, ctx->err) != GD_OK)
         return 0;
-    }
+    ctx->failed = 0;
     ctx->c->src[i] = GD_SRC_FILE;
     ctx->c->src_line[i] = ctx->line;
     return 1;
@@ -359,17 +426,16 @@ GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
 {
     if (strlen(path) >= GD_PATH_MAX)
         return gd_error_set(err, GD_ERR_INPUT, "%s: path too long", path);
-    FILE *fp = fopen(path, "r");
-    if (!fp)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open case file: %s", path, strerror(errno));
+    char *text;
+    gd_status st = gd_case_text_read(path, &text, err);
+    if (st != GD_OK)
+        return st;
     snprintf(c->path, sizeof c->path, "%s", path);
-    load_ctx ctx = {c, err, fp, 0, 0, 0};
+    load_ctx ctx = {c, err, text, 0, 0};
     int rc = ini_parse_stream(reader, &ctx, handler, &ctx);
-    fclose(fp);
+    free(text);
     if (ctx.failed)
         return GD_ERR_INPUT;
-    if (ctx.too_long)
-        return gd_error_set(err, GD_ERR_INPUT, "%s:%d: line longer than 199 characters", path, ctx.line);
     if (rc != 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s:%d: syntax error (expected [section] or key = value)", path,
                             rc > 0 ? rc : ctx.line);

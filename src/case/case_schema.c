@@ -203,6 +203,8 @@ static const gd_keyspec schema[] = {
     B("output", "time_history", time_history, 1, "write time_history.csv"),
     B("output", "event_log", event_log, 1, "write events.csv"),
     B("output", "plots", plots, 1, "draw PNG and SVG pictures with gnuplot when it is installed"),
+    D("output", "max_bytes", "bytes", max_bytes, 1e3, 1e15, 0, 0, 2e9,
+      "largest estimated memory or output files of a run (geardyn check prints the estimate); a larger run is refused"),
     S("output", "response_variable", response_variable, "lambda_L",
       "variable of the local analysis (time history, phase portrait, spectrum, Poincare section): lambda_L, "
       "lambda_R (mesh deflection), dte_L, dte_R, or a degree of freedom (y1L, z1L, y2L, z2L, qL, ..., q)"),

@@ -11,11 +11,13 @@
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
 {
     memset(a, 0, sizeof *a);
+    a->check_only = !allow_out;
     for (int i = 1; i < argc; i++) {
         const char *s = argv[i];
         if (strcmp(s, "--set") == 0 || strcmp(s, "-s") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "geardyn: --set needs section.key=value\n");
+            if (i + 1 >= argc || argv[i + 1][0] == '-') {  /* an assignment starts with its section */
+                fprintf(stderr, "geardyn: %s needs section.key=value%s%s%s\n", s, i + 1 < argc ? " (got the option '" : "",
+                        i + 1 < argc ? argv[i + 1] : "", i + 1 < argc ? "')" : "");
                 return 2;
             }
             if (a->nsets == CLI_MAX_SETS) {
@@ -30,8 +32,9 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
             }
             a->sets[a->nsets++] = s + 6;
         } else if (allow_out && strcmp(s, "--out") == 0) {
-            if (i + 1 >= argc) {
-                fprintf(stderr, "geardyn: --out needs a directory\n");
+            if (i + 1 >= argc || (argv[i + 1][0] == '-' && argv[i + 1][1] == '-')) {
+                fprintf(stderr, "geardyn: --out needs a directory%s%s%s\n", i + 1 < argc ? " (got the option '" : "",
+                        i + 1 < argc ? argv[i + 1] : "", i + 1 < argc ? "')" : "");
                 return 2;
             }
             a->out_dir = argv[++i];
@@ -66,7 +69,23 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     return 0;
 }
 
-int cli_load_case(const cli_case_args *a, gd_case *c)
+/* Resolve c without LTCA (as geardyn check does), build its model and check the run's estimated
+ * cost: every check before any work, whatever the run would compute first. */
+static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
+{
+    gd_model m;
+    c->ltca_deferred = 1;
+    gd_status st = gd_case_resolve(c, err);
+    if (st == GD_OK)
+        st = gd_model_build(c, &m, err);
+    if (st == GD_OK) {
+        gd_run_cost_estimate(c, &m, cost);
+        st = gd_run_cost_check(c, &m, cost, err);
+    }
+    return st;
+}
+
+int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
     if (gd_case_init(c, &err) != GD_OK)
@@ -76,6 +95,16 @@ int cli_load_case(const cli_case_args *a, gd_case *c)
     for (int i = 0; i < a->nsets; i++)
         if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
             return cli_fail(&err);
+    gd_case probe;
+    if (gd_case_copy(&probe, c, &err) != GD_OK)
+        return cli_fail(&err);
+    gd_status st = probe_cost(&probe, &a->cost, &err);
+    if (st != GD_OK || a->check_only) {  /* check shows the case as probed */
+        gd_case_free(c);
+        *c = probe;
+        return st == GD_OK ? 0 : cli_fail(&err);
+    }
+    gd_case_free(&probe);
     if (gd_case_resolve(c, &err) != GD_OK)
         return cli_fail(&err);
     gd_model m;

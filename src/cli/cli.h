@@ -15,12 +15,15 @@ typedef struct cli_case_args {
     int quiet;
     int resume;              /* run: --resume (sweeps) */
     int threads;             /* run: --threads N (0: the OpenMP default) */
+    int check_only;          /* geardyn check: no LTCA, no integration (gd_case.ltca_deferred) */
+    gd_run_cost cost;        /* estimated by cli_load_case */
 } cli_case_args;
 
 /* Parse CASE [--set s.k=v ...] [--out DIR] [--quiet]; returns 0 or the exit status. */
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out);
-/* Load, apply --set, resolve; prints the error and returns the exit status on failure. */
-int cli_load_case(const cli_case_args *a, gd_case *c);
+/* Load, apply --set, resolve, build the model and estimate the run's cost (a->cost), refusing a
+ * run above output.max_bytes; prints the error and returns the exit status on failure. */
+int cli_load_case(cli_case_args *a, gd_case *c);
 /* Parse the arguments of `run` (allow_out) or `check` and load the case they name: 0 with *c loaded
  * (the caller frees it), else the exit status with nothing left to free. */
 int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c);

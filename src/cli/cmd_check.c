@@ -62,7 +62,18 @@ int cmd_check(int argc, char **argv)
         printf("frequency_ratio = %.6g\n", m.Omega);
         printf("static_mesh_force_n = %.6g   ; per half, along the tooth normal\n", m.static_load_n);
         printf("static_deflection_um = %.6g\n", m.static_load_n / m.k_ref * 1e6);
+        if (c.stiffness == GD_STIFF_LTCA)
+            printf("# with stiffness = ltca the mesh stiffness above is ISO 6336-1's; run replaces it by LTCA's mean\n");
     }
+    const gd_run_cost *k = &a.cost;
+    printf("\n# estimated cost of the run (check runs no LTCA and no integration)\n");
+    printf("time_class = %s   ; about %.2g s\n", k->time_class, k->seconds);
+    if (k->points > 0)
+        printf("integration = %.4g runs of %.4g mesh periods, about %.2g steps\n", k->points, k->periods, k->steps);
+    if (k->ltca_unknowns > 0)
+        printf("ltca_contact_points = %.0f   ; per position, a dense system of that size\n", k->ltca_unknowns);
+    printf("memory_bytes = %.3g\n", k->memory_bytes);
+    printf("disk_bytes = %.3g   ; limit output.max_bytes = %.4g\n", k->disk_bytes, c.max_bytes);
     gd_case_free(&c);
     return 0;
 }

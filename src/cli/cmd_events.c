@@ -1,10 +1,12 @@
 /* geardyn events: summarise, filter and export an event log. */
 #include "cli.h"
 
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 
 static int parse_time(const char *opt, const char *s, double *v)
 {
@@ -71,7 +73,8 @@ static int parse_events_args(int argc, char **argv, gd_eventlog_filter *f, const
     return 0;
 }
 
-/* Open the --csv file atomically through a run directory (its directory and name from the path). */
+/* Open the --csv file atomically through a run directory (its directory and name from the path);
+ * the directory must exist: an export is one file, not a run of its own. */
 static gd_status open_csv(const char *csv, gd_run_dir **d, FILE **fp, gd_error *err)
 {
     char dir[1200], name[256];
@@ -85,6 +88,10 @@ static gd_status open_csv(const char *csv, gd_run_dir **d, FILE **fp, gd_error *
         snprintf(dir, sizeof dir, ".");
         snprintf(name, sizeof name, "%s", csv);
     }
+    struct stat sb;
+    if (stat(dir, &sb) != 0 || !S_ISDIR(sb.st_mode))
+        return gd_error_set(err, GD_ERR_IO, "%s: cannot create a temporary file: %s", csv,
+                            strerror(stat(dir, &sb) != 0 ? errno : ENOTDIR));
     gd_status st = gd_run_dir_open(dir, d, err);
     if (st == GD_OK)
         st = gd_run_dir_create(*d, name, fp, err);

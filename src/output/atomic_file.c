@@ -8,25 +8,36 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+/* A directory that cannot be, whatever the rights (a file in the way, a name too long), is bad
+ * input (exit 2); a refused or failed creation is an I/O error. */
+static gd_status mkdir_failed(const char *path, int e, gd_error *err)
+{
+    if (e == ENOTDIR || e == ENAMETOOLONG || e == EEXIST)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot be a directory: %s (valid: a directory, or a path "
+                            "where one can be created)", path, e == EEXIST ? "a file of that name exists"
+                            : strerror(e));
+    return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", path, strerror(e));
+}
+
 gd_status gd_mkdir_p(const char *dir, gd_error *err)
 {
     char buf[1200];
     if (strlen(dir) >= sizeof buf)
-        return gd_error_set(err, GD_ERR_IO, "%s: path too long", dir);
+        return mkdir_failed(dir, ENAMETOOLONG, err);
     snprintf(buf, sizeof buf, "%s", dir);
     for (char *p = buf + 1; *p; p++) {
         if (*p != '/')
             continue;
         *p = '\0';
         if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-            return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", buf, strerror(errno));
+            return mkdir_failed(buf, errno, err);
         *p = '/';
     }
     if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", buf, strerror(errno));
-    struct stat sb;
+        return mkdir_failed(buf, errno, err);
+    struct stat sb = {0};
     if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        return gd_error_set(err, GD_ERR_IO, "%s: not a directory", buf);
+        return mkdir_failed(buf, sb.st_mode ? EEXIST : errno, err);
     return GD_OK;
 }
 

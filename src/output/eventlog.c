@@ -3,9 +3,12 @@
 #include "output_internal.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define EVENTLOG_HEADER "t_s,period,phase,clearance,kind,direction,rel_velocity_mps,x_um,recording,located"
 
@@ -28,15 +31,65 @@ static int kind_index(const char *k)
     return -1;
 }
 
+/* The event log opened for reading if it is a regular file: a FIFO (opened without waiting for a
+ * writer), a device or a directory is refused. */
+static FILE *open_regular(const char *path, gd_error *err)
+{
+    struct stat sb;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC);
+    if (fd < 0 || fstat(fd, &sb) != 0 || !S_ISREG(sb.st_mode)) {
+        if (fd < 0)
+            gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+        else
+            gd_error_set(err, GD_ERR_INPUT, "%s: is %s, not an event log (valid: the events.csv of a run)", path,
+                         S_ISDIR(sb.st_mode) ? "a directory" : "not a regular file");
+        if (fd >= 0)
+            close(fd);
+        return NULL;
+    }
+    FILE *fp = fdopen(fd, "r");
+    if (!fp) {
+        gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
+        close(fd);
+    }
+    return fp;
+}
+
+/* The clearance a filter names must be one of the log's (a misspelt name would select nothing
+ * and look like a clearance without events). */
+static gd_status check_filter_clearance(const char *path, const char *want, char seen[][24], int nseen,
+                                        gd_error *err)
+{
+    char valid[16 * 26] = "";
+    for (int c = 0; c < nseen; c++) {
+        if (strcmp(seen[c], want) == 0)
+            return GD_OK;
+        size_t used = strlen(valid);
+        snprintf(valid + used, sizeof valid - used, "%s%s", c ? ", " : "", seen[c]);
+    }
+    return gd_error_set(err, GD_ERR_INPUT, "%s: clearance '%s' is not in this event log (valid: %s)", path, want,
+                        nseen ? valid : "none, the log has no events");
+}
+
+static void note_clearance(char seen[][24], int *nseen, const char *name)
+{
+    for (int c = 0; c < *nseen; c++)
+        if (strcmp(seen[c], name) == 0)
+            return;
+    if (*nseen < 16)
+        snprintf(seen[(*nseen)++], 24, "%s", name);
+}
+
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err)
 {
     memset(sum, 0, sizeof *sum);
-    FILE *fp = fopen(path, "r");
+    FILE *fp = open_regular(path, err);
     if (!fp)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: cannot open event log: %s", path, strerror(errno));
-    char line[1024];
+        return GD_ERR_INPUT;
+    char line[1024], seen[16][24];
     long lineno = 0;
+    int nseen = 0;
     gd_status st = GD_OK;
     if (!fgets(line, sizeof line, fp) || strncmp(line, EVENTLOG_HEADER, strlen(EVENTLOG_HEADER)) != 0) {
         fclose(fp);
@@ -71,6 +124,7 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
             break;
         }
         sum->rows++;
+        note_clearance(seen, &nseen, f[3]);
         if (t < flt->t_from_s || t > flt->t_to_s)
             continue;
         if (flt->clearance[0] && strcmp(flt->clearance, f[3]) != 0)
@@ -110,6 +164,8 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     if (st == GD_OK && ferror(fp))
         st = gd_error_set(err, GD_ERR_IO, "%s: read error", path);
     fclose(fp);
+    if (st == GD_OK && flt->clearance[0])
+        st = check_filter_clearance(path, flt->clearance, seen, nseen, err);
     for (int c = 0; c < sum->nclear; c++)
         sum->regime[c] = sum->count[c][GD_EV_BACK_CONTACT] ? GD_IMPACT_DOUBLE
                        : sum->count[c][GD_EV_SEPARATION] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;

@@ -347,7 +347,7 @@ static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_e
 
 GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
 {
-    if (c->stiffness != GD_STIFF_LTCA && !c->impact)
+    if ((c->stiffness != GD_STIFF_LTCA && !c->impact) || c->ltca_deferred)
         return GD_OK;
     const gd_ltca_excitation *x;
     const gd_pair pair = gd_pair_from_case(c);

@@ -107,6 +107,8 @@ static gd_status resolve_ltca(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with stiffness = ltca (valid: 0; "
                             "the halves' relative phase comes from their geometry)", w, c->half_phase_deg);
     }
+    if (c->ltca_deferred)  /* geardyn check: the run computes it */
+        return GD_OK;
     const gd_ltca_excitation *x;
     const gd_pair pair = gd_pair_from_case(c);
     const gd_ltca_settings set = gd_ltca_settings_from_case(c);
@@ -130,9 +132,8 @@ static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *e
         if (st != GD_OK)
             return st;
     }
-    if (c->stiffness != GD_STIFF_LTCA)
-        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m,
-                           gd_iso6336_mesh_stiffness(&pair, g));
+    if (c->stiffness != GD_STIFF_LTCA || c->ltca_deferred)
+        gd_case_key_derive(c, "excitation", "mesh_stiffness_n_per_m", &c->mesh_stiffness_n_per_m, gd_iso6336_mesh_stiffness(&pair, g));
     gd_case_key_derive(c, "support", "shaft_stiffness_pinion_n_per_m", &c->shaft_stiffness_pinion_n_per_m,
            gd_groove_shaft_stiffness(&pair, g, 0));
     gd_case_key_derive(c, "support", "shaft_stiffness_gear_n_per_m", &c->shaft_stiffness_gear_n_per_m,

@@ -25,7 +25,7 @@ check_bad() {
 check_bad "[operating]
 speed_rmp = 4000" "case.ini:2: speed_rmp: unknown key in \[operating\], did you mean operating.speed_rpm\? \(valid: .*speed_rpm" "unknown key with suggestion"
 check_bad "[operatin]
-speed_rpm = 4000" "case.ini:2: \[operatin\]: unknown section, did you mean \[operating\]\? \(valid: .*\[scene\]" "unknown section"
+speed_rpm = 4000" "case.ini:1: \[operatin\]: unknown section, did you mean \[operating\]\? \(valid: .*\[scene\]" "unknown section"
 check_bad "[operating]
 speed_rpm = fast" "case.ini:2: operating.speed_rpm: not a number: 'fast' \(valid: a finite number in \(0, 100000\] rpm\)" "wrong type"
 check_bad "[clearance]
