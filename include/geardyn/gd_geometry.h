@@ -38,11 +38,13 @@ GD_API gd_status gd_geometry_compute(const gd_pair *pair, gd_geometry *g, gd_err
 /* Involute function inv(a) = tan a - a and its inverse (Newton, GSL-free closed loop). */
 GD_API double gd_involute(double a);
 
-/* Mass and polar inertia of one helical half of body `which` (0 pinion, 1 gear): a
- * cylinder of the reference radius over the face width plus half of the relief groove
- * as a cylinder of the root radius, less the bore (docs/model.md). */
-GD_API void gd_body_half(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
-/* Mean mesh stiffness of one half along the tooth normal, N/m, from ISO 6336-1
+/* Mass and polar inertia of the part of body `which` (0 pinion, 1 gear) that carries one mesh:
+ * a cylinder of the reference radius over the face width, less the bore, plus for one helical
+ * half of a herringbone half of the relief groove as a cylinder of the root radius; a spur or
+ * single-helical pair is the whole body of its face width, without a groove (docs/model.md). */
+GD_API void gd_body_of_mesh(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
+/* Mean mesh stiffness of one mesh (a herringbone's half, a single pair) along the tooth normal,
+ * N/m, from ISO 6336-1
  * (method B: c' and c_gamma_alpha times the contact face width, transverse), divided by
  * cos^2(beta_b) to refer it to the normal direction (docs/model.md). */
 GD_API double gd_iso6336_mesh_stiffness(const gd_pair *pair, const gd_geometry *g);

@@ -90,7 +90,7 @@ typedef struct gd_model {
     int mesh_clear[GD_MAX_MESH]; /* clearance index of each mesh */
     int q_dof[GD_MAX_MESH];  /* DOF of the torsional coordinate q_n = cos(beta_b)(r_b1 th1 - r_b2 th2) of each mesh */
     double dte_scale;        /* cos(beta_b): q_n / dte_scale is the transverse dynamic transmission error */
-    double force_share;      /* share of one helical half in a mesh force (torsional: 1/2, else 1) */
+    double force_share;      /* share of one mesh of the pair in a model mesh force (herringbone torsional: 1/2, else 1) */
     double Omega;            /* dimensionless mesh frequency omega_m / omega_n */
     double period;           /* dimensionless mesh period 2 pi / Omega */
     /* scales */
@@ -98,7 +98,7 @@ typedef struct gd_model {
     double omega_n;          /* rad/s */
     double m_ref, k_ref;     /* kg, N/m */
     double mesh_freq_hz;
-    double static_load_n;    /* normal mesh force of one half at the mean torque */
+    double static_load_n;    /* normal force of one mesh (a herringbone's half, a single pair) at the mean torque */
     int damp_contact_only;
     const gd_custom_system *custom; /* non-NULL: a custom ODE instead of a gear model */
 } gd_model;

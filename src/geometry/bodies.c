@@ -1,14 +1,17 @@
 /* Default masses, inertias and groove-shaft stiffness of the gear bodies from the geometry. */
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_case.h" /* the enum of the arrangement */
 
 #include <math.h>
 
-GD_API void gd_body_half(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2)
+GD_API void gd_body_of_mesh(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2)
 {
+    /* a herringbone half carries half of the groove; a single pair has none */
     double rho = pair->density_kg_per_m3;
     double rbore = 0.5e-3 * (which == 0 ? pair->bore_diameter_pinion_mm : pair->bore_diameter_gear_mm);
     double r = g->r[which], rf = g->rf[which];
-    double b = g->b[which], half_groove = 0.5e-3 * pair->groove_width_mm;
+    double b = g->b[which];
+    double half_groove = pair->arrangement == GD_ARR_HERRINGBONE ? 0.5e-3 * pair->groove_width_mm : 0.0;
     double m_teeth = rho * M_PI * (r * r - rbore * rbore) * b;
     double m_groove = rho * M_PI * (rf * rf - rbore * rbore) * half_groove;
     double i_teeth = 0.5 * rho * M_PI * (pow(r, 4) - pow(rbore, 4)) * b;

@@ -1,5 +1,6 @@
 /* Building the dimensionless model (torsional, torsional-lr, bta) from a resolved case, with its
- * LTCA excitations. */
+ * LTCA excitations: a herringbone pair as two helical halves, a spur or single-helical pair as one
+ * mesh on the whole bodies (docs/model.md section 5.4). */
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_excitation.h"
 #include "geardyn/gd_geometry.h"
@@ -64,6 +65,12 @@ static void interleave_rows(gd_nz *list, int n)
 
 static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
 
+/* A spur or single-helical pair: one mesh on the whole bodies, carrying the whole torque. */
+static int single_pair(const gd_case *c) { return c->arrangement != GD_ARR_HERRINGBONE; }
+
+/* The meshes that share the torque: the two halves of a herringbone, the one mesh of a single pair. */
+static int torque_meshes(const gd_case *c) { return single_pair(c) ? 1 : 2; }
+
 /* The scales and values of the case every model topology uses, dimensionless where stated. */
 typedef struct build_scales {
     double cb, sb;           /* cos and (with axial coupling) sin of the base helix angle */
@@ -77,7 +84,7 @@ static void model_scales(const gd_case *c, const gd_geometry *g, gd_model *m, bu
 {
     double cb = cos(g->beta_b), sb = c->axial_coupling ? sin(g->beta_b) : 0.0;
     double me = c->equivalent_mass_kg;
-    double mn = me / (cb * cb);          /* normal equivalent mass of one half */
+    double mn = me / (cb * cb);          /* normal equivalent mass of the bodies of one mesh */
     double km = c->mesh_stiffness_n_per_m;
     m->kind = c->model;
     m->m_ref = mn;
@@ -91,7 +98,7 @@ static void model_scales(const gd_case *c, const gd_geometry *g, gd_model *m, bu
     b->fscale = 1.0 / (km * m->bc_m);         /* N -> dimensionless force */
     b->cscale = 1.0 / (mn * m->omega_n);      /* N s/m -> dimensionless damping */
     double T = c->torque_nm;
-    m->static_load_n = T / (2.0 * g->rb[0] * cb);   /* normal force of one half */
+    m->static_load_n = T / (torque_meshes(c) * g->rb[0] * cb);   /* normal force of one mesh */
     b->bh = 0.5 * c->backlash_um * 1e-6 / m->bc_m;
     b->eh = 0.5 * c->bearing_clearance_um * 1e-6 / m->bc_m;
     m->damp_contact_only = c->mesh_damping_mode == GD_DAMP_CONTACT;
@@ -105,7 +112,7 @@ static void model_scales(const gd_case *c, const gd_geometry *g, gd_model *m, bu
 static void model_excitations(const gd_case *c, gd_model *m)
 {
     const double deg = M_PI / 180.0;
-    int nmesh = c->model == GD_MODEL_TORSIONAL ? 1 : 2;
+    int nmesh = c->model == GD_MODEL_TORSIONAL || single_pair(c) ? 1 : 2;
     m->nmesh = nmesh;
     for (int s = 0; s < nmesh; s++) {
         gd_mesh_excitation *x = &m->mesh[s];
@@ -135,13 +142,15 @@ static void model_excitations(const gd_case *c, gd_model *m)
     }
 }
 
-/* torsional: one DOF q, one mesh carrying both halves. */
+/* torsional: one DOF q, one mesh carrying both halves of a herringbone (mass, stiffness, damping
+ * and load twice those of one half) or the one mesh of a single pair. */
 static void build_torsional(const gd_case *c, gd_model *m, const build_scales *b)
 {
+    double w = torque_meshes(c);
     m->ndof = 1;
     name_dof(m, 0, "q");
-    m->mass[0] = 2.0;
-    m->F0[0] = 2.0 * m->static_load_n * b->fscale;
+    m->mass[0] = w;
+    m->F0[0] = w * m->static_load_n * b->fscale;
     gd_clearance *cl = &m->clear[0];
     cl->kind = GD_CLR_MESH;
     cl->mesh = 0;
@@ -149,8 +158,8 @@ static void build_torsional(const gd_case *c, gd_model *m, const build_scales *b
     cl->widx[0] = 0;
     cl->wval[0] = 1.0;
     cl->h = b->bh;
-    cl->k = 2.0;
-    cl->c = 2.0 * 2.0 * c->mesh_damping_ratio;
+    cl->k = w;
+    cl->c = w * 2.0 * c->mesh_damping_ratio;
     cl->damp_contact_only = m->damp_contact_only;
     snprintf(cl->name, sizeof cl->name, "mesh");
     m->nclear = 1;
@@ -184,6 +193,9 @@ static void build_torsional_lr(const gd_case *c, gd_model *m, const build_scales
     m->nclear = 2;
 }
 
+/* The suffix of the names of half s: "L", "R", or none for the one mesh of a single pair. */
+static const char *half_suffix(const gd_model *m, int s) { return m->nmesh == 1 ? "" : s ? "R" : "L"; }
+
 /* bta: the mesh of half s (DOFs from b0), clearance number *nclr. */
 static void bta_mesh(const gd_case *c, gd_model *m, const build_scales *b, int s, int b0, int *nclr)
 {
@@ -205,7 +217,7 @@ static void bta_mesh(const gd_case *c, gd_model *m, const build_scales *b, int s
     cl->k = 1.0;
     cl->c = 2.0 * c->mesh_damping_ratio;
     cl->damp_contact_only = m->damp_contact_only;
-    snprintf(cl->name, sizeof cl->name, "mesh-%c", s ? 'R' : 'L');
+    snprintf(cl->name, sizeof cl->name, "mesh%s%s", m->nmesh == 1 ? "" : "-", half_suffix(m, s));
     m->mesh_clear[s] = (*nclr)++;
     m->q_dof[s] = b0 + 4;
 }
@@ -231,7 +243,7 @@ static void bta_supports(const gd_case *c, gd_model *m, const build_scales *b, i
             bl->h = b->eh;
             bl->k = k / km;
             bl->c = 0.0;
-            snprintf(bl->name, sizeof bl->name, "bearing-%d%c", body + 1, s ? 'R' : 'L');
+            snprintf(bl->name, sizeof bl->name, "bearing-%d%s", body + 1, half_suffix(m, s));
             add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
         } else {
             spring(m, i, -1, k / km, cy * cscale);
@@ -242,20 +254,22 @@ static void bta_supports(const gd_case *c, gd_model *m, const build_scales *b, i
 }
 
 /* bta: per half the pinion and gear (y, z) and the mesh deflection q, ten DOFs; the groove
- * shafts couple the axial motion of the two halves of each body. */
+ * shafts couple the axial motion of the two halves of each body. A single pair has one such
+ * half, five DOFs, whose axial supports take the axial mesh force (none for a spur pair). */
 static void build_bta(const gd_case *c, gd_model *m, const build_scales *b)
 {
-    m->ndof = 10;
+    int halves = m->nmesh;
+    m->ndof = 5 * halves;
     double m1 = c->pinion_mass_kg, m2 = c->gear_mass_kg, mn = b->mn, km = b->km, cscale = b->cscale;
     double k1s = c->shaft_stiffness_pinion_n_per_m, k2s = c->shaft_stiffness_gear_n_per_m;
     double zsh = c->shaft_damping_ratio;
     static const char *names[5] = {"y1", "z1", "y2", "z2", "q"};
     int nclr = 0;
-    for (int s = 0; s < 2; s++) {
+    for (int s = 0; s < halves; s++) {
         int b0 = 5 * s;
         for (int j = 0; j < 5; j++) {
             char nm[8];
-            snprintf(nm, sizeof nm, "%s%c", names[j], s ? 'R' : 'L');
+            snprintf(nm, sizeof nm, "%s%s", names[j], half_suffix(m, s));
             name_dof(m, b0 + j, nm);
         }
         m->mass[b0 + 0] = m1 / mn;
@@ -267,10 +281,12 @@ static void build_bta(const gd_case *c, gd_model *m, const build_scales *b)
         bta_mesh(c, m, b, s, b0, &nclr);
         bta_supports(c, m, b, s, b0, &nclr);
     }
+    m->nclear = nclr;
+    if (halves == 1)
+        return;
     /* groove shafts couple the axial motion of the two halves of each body */
     spring(m, 1, 6, k1s / km, 2.0 * zsh * sqrt(k1s * m1 / 2.0) * cscale);
     spring(m, 3, 8, k2s / km, 2.0 * zsh * sqrt(k2s * m2 / 2.0) * cscale);
-    m->nclear = nclr;
 }
 
 GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
@@ -284,6 +300,10 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
     if (c->model == GD_MODEL_TORSIONAL && c->half_phase_deg != 0.0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with model torsional (valid: 0, "
                             "the torsional model has one mesh; use torsional-lr)", c->path, c->half_phase_deg);
+    if (single_pair(c) && c->model == GD_MODEL_TORSIONAL_LR) /* gd_scene_resolve names the lines */
+        return gd_error_set(err, GD_ERR_INPUT, "%s: scene.model: torsional-lr with gear.arrangement = %s (valid: "
+                            "torsional, bta; torsional-lr is the two halves of a herringbone)", c->path,
+                            c->arrangement == GD_ARR_SPUR ? "spur" : "helical");
     build_scales b;
     model_scales(c, &g, m, &b);
     model_excitations(c, m);
@@ -299,7 +319,7 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
     for (int i = 0; i < m->ndof; i++)
         m->inv_mass[i] = 1.0 / m->mass[i];
     m->dte_scale = b.cb;
-    m->force_share = c->model == GD_MODEL_TORSIONAL ? 0.5 : 1.0;
+    m->force_share = c->model == GD_MODEL_TORSIONAL && !single_pair(c) ? 0.5 : 1.0;
     return gd_model_apply_ltca(c, m, err);
 }
 

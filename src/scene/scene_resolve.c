@@ -75,13 +75,44 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
     return GD_OK;
 }
 
+/* A spur or single-helical pair is one mesh on the whole bodies (docs/model.md section 5.4): no
+ * model of two halves, no stagger of a second half, and a single helical mesh's axial force must
+ * meet a pinion support in bta. */
+static gd_status resolve_single_pair(const gd_case *c, gd_error *err)
+{
+    if (c->arrangement == GD_ARR_HERRINGBONE)
+        return GD_OK;
+    char w[GD_PATH_MAX + 32], wa[GD_PATH_MAX + 32];
+    const char *arr = c->arrangement == GD_ARR_SPUR ? "spur" : "helical";
+    gd_case_key_where(c, "gear", "arrangement", wa, sizeof wa);
+    if (c->model == GD_MODEL_TORSIONAL_LR) {
+        gd_case_key_where(c, "scene", "model", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: scene.model: torsional-lr with gear.arrangement = %s (%s) (valid: "
+                            "torsional, bta; torsional-lr is the two halves of a herringbone, a single pair has one "
+                            "mesh)", w, arr, wa);
+    }
+    if (c->half_phase_deg != 0.0) {
+        gd_case_key_where(c, "excitation", "half_phase_deg", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.half_phase_deg: %g with gear.arrangement = %s (%s) "
+                            "(valid: 0, a single pair has one mesh)", w, c->half_phase_deg, arr, wa);
+    }
+    if (c->model == GD_MODEL_BTA && c->arrangement == GD_ARR_HELICAL && c->axial_coupling &&
+        !(c->axial_stiffness_pinion_n_per_m > 0)) {
+        gd_case_key_where(c, "support", "axial_stiffness_pinion_n_per_m", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: support.axial_stiffness_pinion_n_per_m: 0 (floating) with "
+                            "gear.arrangement = helical (%s) and scene.model = bta (valid: above 0; nothing else takes "
+                            "the axial mesh force of a single helical pair)", w, wa);
+    }
+    return GD_OK;
+}
+
 /* The masses and inertias of the bodies and the equivalent mass, unless given. */
 static void resolve_bodies(gd_case *c, const gd_geometry *g)
 {
     double m1, i1, m2, i2;
     const gd_pair pair = gd_pair_from_case(c);
-    gd_body_half(&pair, g, 0, &m1, &i1);
-    gd_body_half(&pair, g, 1, &m2, &i2);
+    gd_body_of_mesh(&pair, g, 0, &m1, &i1);
+    gd_body_of_mesh(&pair, g, 1, &m2, &i2);
     gd_case_key_derive(c, "gear", "pinion_mass_kg", &c->pinion_mass_kg, m1);
     gd_case_key_derive(c, "gear", "gear_mass_kg", &c->gear_mass_kg, m2);
     gd_case_key_derive(c, "gear", "pinion_inertia_kgm2", &c->pinion_inertia_kgm2, i1);
@@ -161,6 +192,8 @@ GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
     gd_status st = resolve_geometry(c, &g, err);
     if (st == GD_OK)
         st = resolve_flank(c, &g, err);
+    if (st == GD_OK)
+        st = resolve_single_pair(c, err);
     if (st != GD_OK)
         return st;
     resolve_bodies(c, &g);
