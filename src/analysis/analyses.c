@@ -4,6 +4,7 @@
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_workprec.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_continuation.h"
 #include "../case/case_keys.h"
 
 #include <stdio.h>
@@ -49,6 +50,8 @@ static const gd_analysis_type analyses[] = {
       optimize_check_case },
     { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
       workprec_check_case },
+    { GD_ANALYSIS_CONTINUATION, "continuation",
+      "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_contin_check_case },
 };
 
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n)

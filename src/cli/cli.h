@@ -61,6 +61,9 @@ int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
 int run_work_precision(const cli_case_args *a, gd_case *c, const char *dir);
 int run_optimize(const cli_case_args *a, gd_case *c, const char *dir);
 int run_compare(const cli_case_args *a, gd_case *c, const char *dir);
+int run_continuation(const cli_case_args *a, gd_case *c, const char *dir);
+/* continuation.png and .svg into dir (continuation_plot.c). */
+gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 int cmd_keys(int argc, char **argv);

@@ -19,6 +19,7 @@ static const struct {
     { GD_ANALYSIS_OPTIMIZE, run_optimize },
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, run_compare },
     { GD_ANALYSIS_WORK_PRECISION, run_work_precision },
+    { GD_ANALYSIS_CONTINUATION, run_continuation },
 };
 
 /* The runner of a resolved case's analysis (gd_case_resolve refused any other). */
