@@ -85,10 +85,10 @@ static gd_status check_settings(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.ds: %g is outside [ds_min, ds_max] = [%g, %g] "
                             "(valid: ds_min <= ds <= ds_max)", WHERE("ds"), c->cont_ds, c->cont_ds_min,
                             c->cont_ds_max);
-    if (c->cont_newton_tol < 10.0 * c->rtol)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is not above 10 solver.rtol = %g "
-                            "(valid: newton_tol >= %g, or a tighter solver.rtol)", WHERE("newton_tol"),
-                            c->cont_newton_tol, 10.0 * c->rtol, 10.0 * c->rtol);
+    if (c->cont_newton_tol < c->rtol)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is below solver.rtol = %g (valid: "
+                            "newton_tol >= %g, or a tighter solver.rtol)", WHERE("newton_tol"), c->cont_newton_tol,
+                            c->rtol, c->rtol);
     if (c->cont_start == GD_CONT_START_STATE) {
         double y[GD_MAX_STATE];
         int n;

@@ -57,15 +57,15 @@ static void plot_one(gd_gnuplot_script *s, const char *dir, const gd_case *c, co
                           res->branch[b].nper);
     }
     gd_gnuplot_printf(s, "%s1/0 with lines lw 2 dt 2 lc rgb 'black' title 'unstable'", sep);
-    static const struct { const char *kind, *label; int pt; } kinds[] = {
-        {"fold", "fold", 7}, {"period-doubling", "period doubling", 5}, {"contact-change", "contact change", 9}};
-    for (int k = 0; k < 3; k++)
+    static const struct { const char *kind, *label, *mark; int pt; } kinds[] = {
+        {"fold", "fold", "F", 7}, {"period-doubling", "period doubling", "PD", 5},
+        {"neimark-sacker", "Neimark-Sacker", "NS", 13}, {"contact-change", "contact change (grazing)", "C", 9}};
+    for (int k = 0; k < 4; k++)
         gd_gnuplot_printf(s, "%s'%s/bifurcations.csv' every ::1 using 4:(strcol(3) eq '%s' ? $%d : 1/0) with points "
                              "pt %d ps 1.6 lc rgb 'black' title '%s', \\\n  '%s/bifurcations.csv' every ::1 using "
-                             "4:(strcol(3) eq '%s' ? $%d : 1/0):(strcol(3) eq 'contact-change' ? 'C' : "
-                             "strcol(3) eq 'fold' ? 'F' : 'PD') with labels offset 0.8,0.8 notitle",
+                             "4:(strcol(3) eq '%s' ? $%d : 1/0):('%s') with labels offset 0.8,0.8 notitle",
                           sep, dir, kinds[k].kind, rc.bif_col, kinds[k].pt, kinds[k].label, dir, kinds[k].kind,
-                          rc.bif_col);
+                          rc.bif_col, kinds[k].mark);
     if (c->cont_overlay_sweep[0])
         gd_gnuplot_printf(s, "%s'%s/%s' using 'parameter':(strcol('direction') eq 'up' ? column('%s') : 1/0) with "
                              "points pt 8 ps 0.9 lc rgb '#555555' title 'sweep up', \\\n  '%s/%s' using 'parameter':"

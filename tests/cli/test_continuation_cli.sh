@@ -94,7 +94,7 @@ refuse continuation.ds=0.2 "continuation.ds: 0.2 is outside \[ds_min, ds_max\]"
 refuse continuation.period=17 "continuation.period"
 refuse continuation.direction=sideways "continuation.direction"
 refuse continuation.start_value=9000 "continuation.start_value: 9000 is outside the bounds"
-refuse continuation.newton_tol=1e-12 "continuation.newton_tol: 1e-12 is not above 10 solver.rtol"
+refuse continuation.newton_tol=1e-12 "continuation.newton_tol: 1e-12 is below solver.rtol = 1e-10"
 refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: no /nonexistent/sweep.csv" \
     continuation.response=rms_accel
 refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: a sweep has no deflection extremes"
