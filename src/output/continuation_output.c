@@ -54,7 +54,10 @@ static gd_status write_branch(const char *dir, const gd_contin_result *res, gd_e
     measure_header(f.fp);
     for (int j = 0; j < res->nclear; j++)
         fprintf(f.fp, ",events_%s", res->clear_name[j]);
-    fprintf(f.fp, ",newton_iterations,residual,ds\n");
+    fprintf(f.fp, ",newton_iterations,residual,ds");
+    for (int j = 0; j < res->n; j++)
+        fprintf(f.fp, ",%s", res->state_name[j]);
+    fputc('\n', f.fp);
     for (int b = 0; b < res->nbranches; b++) {
         const gd_contin_branch *br = &res->branch[b];
         for (int i = 0; i < br->br.npoints; i++) {
@@ -67,7 +70,10 @@ static gd_status write_branch(const char *dir, const gd_contin_result *res, gd_e
             measure_row(f.fp, res, &br->meas[i]);
             for (int j = 0; j < res->nclear; j++)
                 fprintf(f.fp, ",%ld", o->events[j]);
-            fprintf(f.fp, ",%d,%.3g,%.6g\n", o->iterations, o->residual, pt->ds);
+            fprintf(f.fp, ",%d,%.3g,%.6g", o->iterations, o->residual, pt->ds);
+            for (int j = 0; j < res->n; j++)
+                fprintf(f.fp, ",%.17g", o->y[0][j]);
+            fputc('\n', f.fp);
         }
     }
     return gd_atomic_commit(&f, err);
