@@ -6,7 +6,8 @@
 # 1. Every grid interval where a direction of the sweep jumps onto or off the period-1 orbit, and
 #    every hysteresis interval (up and down differ), contains a bifurcation of the period-1 branch
 #    located by continuation (fold, grazing, period doubling or Neimark-Sacker).
-# 2. Where the sweep is period-1 the branch is stable there (its points either side are stable).
+# 2. Every change of stability along the branch lies at a located fold, period doubling or
+#    Neimark-Sacker point; where the sweep is period-1 the branch is stable there (its points either side are stable).
 # 3. At those speeds the branch's orbit (Newton from the branch's state interpolated to the speed,
 #    start = state) has the sweep's RMS mesh acceleration to 1e-6 relative.
 # TAP output.
@@ -56,6 +57,16 @@ ok(len(intervals) >= 2, "the sweep jumps on or off the period-1 orbit at least t
 for what, a, b in intervals:
     f = inside(a, b)
     ok(len(f) > 0, "%s, %g .. %g rpm: contains %s" % (what, a, b, ", ".join(f) or "no bifurcation"))
+# every change of stability along the branch lies at a located fold, period doubling or Neimark-Sacker point
+changes, missed = 0, []
+for a, b in zip(br, br[1:]):
+    if a["stable"] != b["stable"]:
+        changes += 1
+        pa, pb = sorted((float(a["speed_rpm"]), float(b["speed_rpm"])))
+        if not [k for p, k in bif if pa <= p <= pb and k in ("fold", "period-doubling", "neimark-sacker")]:
+            missed.append("%.2f .. %.2f" % (pa, pb))
+ok(changes >= 3 and not missed, "each of the %d changes of stability along the branch brackets a located fold, period "
+   "doubling or Neimark-Sacker point (missed: %s)" % (changes, ", ".join(missed) or "none"))
 sp = [(float(r["speed_rpm"]), r) for r in br]
 sp.sort(key=lambda t: t[0])
 checks = []
