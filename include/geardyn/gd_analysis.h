@@ -27,6 +27,7 @@
 #include "geardyn/gd_workprec.h"
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_continuation.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -45,6 +46,8 @@ typedef struct gd_run_env {
     gd_wp_hooks workprec;
     /* optimize: after each of the runs runs (from its own seed) */
     void (*optimize_run)(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r);
+    /* continuation: after each branch followed (of those planned so far); nonzero stops the run */
+    int (*continuation_branch)(void *user, int branches_done, int branches_planned);
     /* compare-optimizers: after each problem compared (struct gd_compare_entry below) */
     void (*compare_problem)(void *user, const struct gd_compare_entry *q, const gd_opt_compare_settings *s);
     /* sweep: this process's share of the work units (rank of nranks; 0 of 0 or 1: all), and the

@@ -21,7 +21,8 @@ extern "C" {
 
 typedef enum gd_analysis {
     GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
-    GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6
+    GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6,
+    GD_ANALYSIS_CONTINUATION = 7
 } gd_analysis;
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind {
@@ -39,6 +40,13 @@ typedef enum gd_hand { GD_HAND_RIGHT = 0, GD_HAND_LEFT = 1 } gd_hand;
 typedef enum gd_tca_formulation { GD_TCA_SEPARATION = 0, GD_TCA_TANGENCY = 1, GD_TCA_BOTH = 2 } gd_tca_formulation;
 /* [support] pinion_axial: LTCA with an axially floating pinion (equal axial forces on the halves) or a fixed one */
 typedef enum gd_pinion_axial { GD_PINION_FLOATING = 0, GD_PINION_FIXED = 1 } gd_pinion_axial;
+/* [continuation] shooting, start and the response drawn */
+typedef enum gd_cont_shooting { GD_SHOOT_MULTIPLE = 0, GD_SHOOT_SINGLE = 1 } gd_cont_shooting;
+typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1 } gd_cont_start;
+typedef enum gd_cont_response {
+    GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
+    GD_CONT_RESP_POINCARE = 3
+} gd_cont_response;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
@@ -166,6 +174,24 @@ typedef struct gd_case {
     double opt_root_amount_min_um, opt_root_amount_max_um, opt_root_length_min_mm, opt_root_length_max_mm;
     double opt_tip_amount_min_um, opt_tip_amount_max_um, opt_tip_length_min_mm, opt_tip_length_max_mm;
     double opt_lead_amount_min_um, opt_lead_amount_max_um, opt_lead_length_min_mm, opt_lead_length_max_mm;
+
+    /* [continuation] (analysis = continuation; gd_continuation.h, docs/continuation.md) */
+    char cont_parameter[256]; /* "section.key" */
+    double cont_from, cont_to, cont_start_value; /* in the unit of the parameter's key */
+    int cont_direction;      /* gd_sweep_direction: up, down, both */
+    double cont_ds, cont_ds_min, cont_ds_max; /* arclength steps (dimensionless) */
+    double cont_dp_max;      /* in the unit of the parameter's key; 0: no limit */
+    int cont_max_points;
+    double cont_newton_tol;
+    int cont_newton_max_iterations;
+    double cont_locate_tol;
+    int cont_period;         /* mesh periods of the orbit; 0: found after the transient */
+    int cont_shooting;       /* gd_cont_shooting */
+    int cont_start;          /* gd_cont_start */
+    char cont_state[1024];   /* start = state: the dimensionless state, comma-separated */
+    int cont_branch_switching;
+    char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
+    int cont_response;       /* gd_cont_response */
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */

@@ -8,7 +8,7 @@
  * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
  * follows an orbit in a numeric parameter p, with an adaptive step, and locates by bisection the
  * folds (the tangent's parameter component changes sign), period doublings (a real multiplier
- * passes -1) and changes of the contact sequence (grazing) between its points. */
+ * passes -1), Neimark-Sacker points (a complex pair crosses the unit circle) and changes of the contact sequence (grazing) between its points. */
 #ifndef GD_PERIODIC_H
 #define GD_PERIODIC_H
 
@@ -90,8 +90,9 @@ GD_API void gd_cont_opts_default(gd_cont_opts *co);
 typedef enum gd_bif_kind {
     GD_BIF_FOLD = 0,           /* saddle-node: the tangent's parameter component changes sign */
     GD_BIF_PERIOD_DOUBLING = 1, /* a real multiplier passes -1 */
-    GD_BIF_CONTACT_CHANGE = 2  /* the events of a clearance per orbit change in number: a contact appears or
+    GD_BIF_CONTACT_CHANGE = 2, /* the events of a clearance per orbit change in number: a contact appears or
                                 * disappears (through a grazing, where the orbit touches the boundary) */
+    GD_BIF_NEIMARK_SACKER = 3  /* a complex pair of multipliers crosses the unit circle */
 } gd_bif_kind;
 GD_API const char *gd_bif_kind_name(int kind);
 
@@ -101,7 +102,8 @@ typedef struct gd_bifurcation {
     double p;                /* parameter at the middle of the final bracket */
     double p_lo, p_hi;       /* parameter at the ends of the final bracket (p_lo: the end towards the branch
                               * point before it, so p_lo > p_hi on a branch running to lower p) */
-    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; else nearest 1) */
+    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; NS: the complex one with
+                              * positive imaginary part nearest the unit circle; else nearest 1) */
     double y[GD_MAX_STATE];  /* Poincare point at the middle */
     int after;               /* index of the branch point before which it lies */
 } gd_bifurcation;

@@ -30,8 +30,8 @@ GD_API void gd_cont_opts_default(gd_cont_opts *co)
 
 GD_API const char *gd_bif_kind_name(int kind)
 {
-    static const char *names[] = {"fold", "period-doubling", "contact-change"};
-    return kind >= 0 && kind <= GD_BIF_CONTACT_CHANGE ? names[kind] : "?";
+    static const char *names[] = {"fold", "period-doubling", "contact-change", "neimark-sacker"};
+    return kind >= 0 && kind <= GD_BIF_NEIMARK_SACKER ? names[kind] : "?";
 }
 
 GD_API void gd_branch_free(gd_branch *br)
@@ -93,6 +93,43 @@ static double pd_test(const gd_po *po)
     return re;
 }
 
+/* The sign of the bialternate product prod_{i<j} (mu_i mu_j - 1) (real: the multipliers are closed under
+ * conjugation). It changes sign where a complex pair crosses the unit circle (mu conj(mu) = 1), and at
+ * a neutral saddle (two real multipliers with mu_i mu_j = 1), which locate() tells apart. Each factor
+ * is divided by its modulus so that no product overflows. */
+static double ns_test(const gd_po *po)
+{
+    double re = 1.0, im = 0.0;
+    for (int i = 0; i < po->n; i++)
+        for (int j = i + 1; j < po->n; j++) {
+            double a = po->mu_re[i] * po->mu_re[j] - po->mu_im[i] * po->mu_im[j] - 1.0;
+            double b = po->mu_re[i] * po->mu_im[j] + po->mu_im[i] * po->mu_re[j];
+            double m = hypot(a, b);
+            if (m == 0)
+                return 0.0;
+            double r2 = (re * a - im * b) / m;
+            im = (re * b + im * a) / m;
+            re = r2;
+        }
+    return re;
+}
+
+/* The complex multiplier (positive imaginary part) nearest the unit circle; 0 when there is none. */
+static int ns_multiplier(const gd_po *po, double *re, double *im)
+{
+    int best = -1;
+    for (int i = 0; i < po->n; i++)
+        if (po->mu_im[i] > 1e-9 * (1.0 + fabs(po->mu_re[i])) &&
+            (best < 0 || fabs(hypot(po->mu_re[i], po->mu_im[i]) - 1.0) <
+                             fabs(hypot(po->mu_re[best], po->mu_im[best]) - 1.0)))
+            best = i;
+    if (best < 0)
+        return 0;
+    *re = po->mu_re[best];
+    *im = po->mu_im[best];
+    return 1;
+}
+
 /* One corrected point at arclength ds from (u0, t0): *u, its tangent *t (oriented along t0) and
  * its orbit; *iters the Newton iterations. */
 static gd_status step_from(cont *c, const double *u0, const double *t0, double ds, double *u, double *t, gd_po *po,
@@ -135,6 +172,8 @@ static double test_value(int kind, int c, long ref, const double *t, int N, cons
         return t[N];
     case GD_BIF_PERIOD_DOUBLING:
         return pd_test(po);
+    case GD_BIF_NEIMARK_SACKER:
+        return ns_test(po);
     default:
         return po->events[c] == ref ? 1.0 : -1.0;
     }
@@ -174,6 +213,9 @@ static gd_status locate(cont *c, int kind, int clr, const double *u0, const doub
     b.p_lo = p_lo;
     b.p_hi = isnan(p_hi) ? u0[N] + ds1 * t0[N] : p_hi;
     critical_multiplier(&po, kind == GD_BIF_PERIOD_DOUBLING ? -1.0 : 1.0, &b.mu_re, &b.mu_im);
+    if (kind == GD_BIF_NEIMARK_SACKER && /* a neutral saddle, not a complex pair on the unit circle */
+        (!ns_multiplier(&po, &b.mu_re, &b.mu_im) || fabs(hypot(b.mu_re, b.mu_im) - 1.0) > 1e-3))
+        return GD_OK;
     memcpy(b.y, po.y[0], sizeof(double) * (size_t)po.n);
     b.after = c->br->npoints;
     return push_bif(c->br, &b, err);
@@ -190,6 +232,8 @@ static gd_status detect(cont *c, const double *u, const double *t, const gd_po *
         st = locate(c, GD_BIF_FOLD, -1, u, t, po, ds, err);
     if (st == GD_OK && (pd_test(po1) > 0) != (pd_test(po) > 0))
         st = locate(c, GD_BIF_PERIOD_DOUBLING, -1, u, t, po, ds, err);
+    if (st == GD_OK && (ns_test(po1) > 0) != (ns_test(po) > 0))
+        st = locate(c, GD_BIF_NEIMARK_SACKER, -1, u, t, po, ds, err);
     for (int k = 0; k < GD_MAX_CLEAR && st == GD_OK; k++)
         if (po1->events[k] != po->events[k])
             st = locate(c, GD_BIF_CONTACT_CHANGE, k, u, t, po, ds, err);

@@ -25,26 +25,6 @@ GD_API const char *gd_sweep_branch_name(int branch)
 
 /* ---- the case's [sweep] keys ---- */
 
-static const gd_keyspec *dotted_key(const char *name)
-{
-    char buf[256];
-    snprintf(buf, sizeof buf, "%s", name);
-    char *dot = strchr(buf, '.');
-    if (!dot)
-        return NULL;
-    *dot = '\0';
-    return gd_case_find_key(buf, dot + 1);
-}
-
-static void describe(const gd_keyspec *k, char *buf, size_t len)
-{
-    if (k->type == GD_KEY_INT)
-        snprintf(buf, len, "a whole number in [%.0f, %.0f]", k->min, k->max);
-    else
-        snprintf(buf, len, "a number in %s%g, %g%s%s%s", k->min_open ? "(" : "[", k->min, k->max,
-                 k->max_open ? ")" : "]", k->unit[0] ? " " : "", k->unit);
-}
-
 /* Value i of an axis as spaced, before a whole-number key rounds it. */
 static double axis_raw_value(const gd_case *c, int axis, int i)
 {
@@ -66,7 +46,7 @@ static double axis_raw_value(const gd_case *c, int axis, int i)
 double gd_sweep_axis_value(const gd_case *c, int axis, int i)
 {
     double v = axis_raw_value(c, axis, i);
-    const gd_keyspec *k = dotted_key(axis ? c->sweep_parameter2 : c->sweep_parameter);
+    const gd_keyspec *k = gd_case_key_dotted(axis ? c->sweep_parameter2 : c->sweep_parameter);
     if (k && k->type == GD_KEY_INT)
         v = floor(v + 0.5);
     return v;
@@ -157,12 +137,12 @@ static gd_status check_axis(const gd_case *c, int axis, gd_error *err)
     if (gd_case_get_number(c, name, &cur, &e2) != GD_OK)
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: '%s' is not a numeric case key: %s", w, kp, name,
                             e2.msg);
-    const gd_keyspec *k = dotted_key(name);
+    const gd_keyspec *k = gd_case_key_dotted(name);
     if (!k || strcmp(k->section, "sweep") == 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: sweep.%s: '%s' cannot be swept (valid: a numeric key of "
                             "another section)", w, kp, name);
     char range[160];
-    describe(k, range, sizeof range);
+    gd_case_key_range_text(k, range, sizeof range);
     /* a missing bound is named at the line of its parameter */
     if (!gd_case_key_given(c, "sweep", kf) || !isfinite(from)) {
         gd_case_key_where(c, "sweep", gd_case_key_given(c, "sweep", kf) ? kf : kp, w, sizeof w);
@@ -298,7 +278,7 @@ static gd_status plan_grid(const gd_case *c, gd_sweep_plan *p, gd_error *err)
             return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the sweep grid");
         if (a < p->naxes) {
             snprintf(p->parameter[a], sizeof p->parameter[a], "%s", name);
-            const gd_keyspec *k = dotted_key(name);
+            const gd_keyspec *k = gd_case_key_dotted(name);
             snprintf(p->unit[a], sizeof p->unit[a], "%s", k ? k->unit : "");
             for (int i = 0; i < p->npoints[a]; i++)
                 p->values[a][i] = gd_sweep_axis_value(c, a, i);
@@ -573,7 +553,7 @@ static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1,
     for (int a = 0; a < p->naxes && st == GD_OK; a++) {
         st = gd_case_set_number(out, p->parameter[a], p->values[a][idx[a]], err);
         /* the swept key is given where sweep.parameter is (what messages name) */
-        const gd_keyspec *k = dotted_key(p->parameter[a]);
+        const gd_keyspec *k = gd_case_key_dotted(p->parameter[a]);
         size_t from = gd_case_key_index("sweep", a ? "parameter2" : "parameter");
         if (st == GD_OK && k) {
             out->src[k - schema] = base->src[from] == GD_SRC_FILE ? GD_SRC_FILE : GD_SRC_SET;

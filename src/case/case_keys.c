@@ -61,3 +61,23 @@ const char *gd_case_key_choice(const char *section, const char *key, int value, 
     snprintf(buf, len, "%.*s", p ? (int)strcspn(p, "|") : 1, p ? p : "?");
     return buf;
 }
+
+const gd_keyspec *gd_case_key_dotted(const char *name)
+{
+    char buf[256];
+    snprintf(buf, sizeof buf, "%s", name);
+    char *dot = strchr(buf, '.');
+    if (!dot)
+        return NULL;
+    *dot = '\0';
+    return gd_case_find_key(buf, dot + 1);
+}
+
+void gd_case_key_range_text(const gd_keyspec *k, char *buf, size_t len)
+{
+    if (k->type == GD_KEY_INT)
+        snprintf(buf, len, "a whole number in [%.0f, %.0f]", k->min, k->max);
+    else
+        snprintf(buf, len, "a number in %s%g, %g%s%s%s", k->min_open ? "(" : "[", k->min, k->max,
+                 k->max_open ? ")" : "]", k->unit[0] ? " " : "", k->unit);
+}

@@ -19,5 +19,9 @@ int gd_case_key_in_range(const gd_keyspec *k, double v);
 /* The name of value among the choices of an enum key (the schema's '|'-separated names, the one
  * list of them: "torsional" for scene.model 0), "?" when out of range; written to buf, returned. */
 const char *gd_case_key_choice(const char *section, const char *key, int value, char *buf, size_t len);
+/* The schema entry of a "section.key" name, NULL when there is none. */
+const gd_keyspec *gd_case_key_dotted(const char *name);
+/* The valid range of a numeric key as messages write it ("a number in [0, 1e+06] rpm"). */
+void gd_case_key_range_text(const gd_keyspec *k, char *buf, size_t len);
 
 #endif

@@ -21,7 +21,7 @@
 
 static const gd_keyspec schema[] = {
     /* [scene] */
-    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision",
+    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation",
       "what to compute"),
     E("scene", "model", model, 2, "torsional|torsional-lr|bta",
       "dynamic model: one mesh coordinate, the two helical halves, or bending-torsion-axial (10 DOF; 5 for a single pair)"),
@@ -228,6 +228,49 @@ static const gd_keyspec schema[] = {
     E("sweep", "spacing2", sweep_spacing2, 0, "linear|log", "spacing of the values of parameter2"),
     S("sweep", "response", sweep_response, "",
       "Poincare responses, comma-separated: lambda_L, lambda_R (default), lambda_dot_L, lambda_dot_R, DOF names, DOF_dot"),
+
+    /* [continuation] (analysis = continuation; docs/continuation.md) */
+    S("continuation", "parameter", cont_parameter, "",
+      "continued numeric key, section.key (e.g. operating.speed_rpm)"),
+    D("continuation", "from", "", cont_from, -1e30, 1e30, 0, 0, NAN,
+      "lower bound of the parameter, in the unit of its key: a branch ends there"),
+    D("continuation", "to", "", cont_to, -1e30, 1e30, 0, 0, NAN,
+      "upper bound of the parameter, in the unit of its key: a branch ends there"),
+    D("continuation", "start_value", "", cont_start_value, -1e30, 1e30, 0, 0, NAN,
+      "the parameter's value at the starting orbit, in [from, to] (default: from with direction up, to with down, "
+      "the middle with both)"),
+    E("continuation", "direction", cont_direction, 2, "up|down|both",
+      "from the starting orbit towards increasing, decreasing parameter, or both (two branches)"),
+    D("continuation", "ds", "", cont_ds, 0, 1e6, 1, 0, 0.02,
+      "first arclength step in the norm of (state, parameter / scale) (docs/continuation.md section 7)"),
+    D("continuation", "ds_min", "", cont_ds_min, 0, 1e6, 1, 0, 1e-6,
+      "smallest arclength step: a branch whose corrector fails at it ends"),
+    D("continuation", "ds_max", "", cont_ds_max, 0, 1e6, 1, 0, 0.05, "largest arclength step"),
+    D("continuation", "dp_max", "", cont_dp_max, 0, 1e30, 0, 0, 0,
+      "largest change of the parameter in one step, in the unit of its key (0: no limit besides ds_max)"),
+    I("continuation", "max_points", cont_max_points, 2, 100000, 400, "points of one branch at most, its start included"),
+    D("continuation", "newton_tol", "", cont_newton_tol, 1e-14, 1e-2, 0, 0, 1e-9,
+      "an orbit is converged when the max-norm of the shooting residual is below this (keep solver.rtol tighter)"),
+    I("continuation", "newton_max_iterations", cont_newton_max_iterations, 1, 100, 12,
+      "Newton iterations of one correction at most (more: the step is halved)"),
+    D("continuation", "locate_tol", "", cont_locate_tol, 1e-14, 1, 0, 0, 1e-8,
+      "a bifurcation is located when its arclength bracket is below this"),
+    I("continuation", "period", cont_period, 0, 16, 0,
+      "mesh periods of the starting orbit (0: the smallest n up to 16 whose Poincare section repeats after the transient)"),
+    E("continuation", "shooting", cont_shooting, 0, "multiple|single",
+      "multiple: one shooting segment per mesh period (strongly unstable orbits converge); single: one segment"),
+    E("continuation", "start", cont_start, 0, "attractor|state",
+      "attractor: the orbit reached after run.transient_periods from run.initial_condition at start_value; "
+      "state: the orbit near continuation.state"),
+    S("continuation", "state", cont_state, "",
+      "start = state: the dimensionless state at mesh phase 0, comma-separated (as summary.json writes it)"),
+    B("continuation", "branch_switching", cont_branch_switching, 1,
+      "at each period doubling of a branch from the start, follow the orbit of twice the period born there"),
+    S("continuation", "overlay_sweep", cont_overlay_sweep, "",
+      "a finished sweep's directory (as output.directory: relative to the working directory) whose points are drawn over the branches"),
+    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
+      "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
+      "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
     S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",

@@ -99,6 +99,13 @@ void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *re
                         const char **note);
 
 int cmd_run(int argc, char **argv);
+/* The continuation: its picture (continuation_plot.c: continuation.png and .svg into dir) and its
+ * lines on stdout (run_continuation.c). */
+gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
+void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                               const char **note);
+void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
+int cli_continuation_progress(void *user, int branches_done, int branches_planned);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 int cmd_keys(int argc, char **argv);

@@ -16,6 +16,7 @@ static const cli_row rows[] = {
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, NULL, NULL, cli_compare_pictures, cli_compare_report, NULL },
     { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_pictures,
       cli_workprec_report, NULL },
+    { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_pictures, cli_continuation_report, NULL },
 };
 
 static const cli_row *cli_row_for(int analysis)
@@ -64,6 +65,7 @@ void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
     env->workprec.done = cli_workprec_done;
     env->optimize_run = cli_optimize_run;
     env->compare_problem = cli_compare_problem;
+    env->continuation_branch = cli_continuation_progress;
     env->pictures = on_pictures;
     env->ran = on_ran;
     env->done = on_done;

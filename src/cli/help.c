@@ -8,8 +8,8 @@ static const cli_help commands[] = {
     {"run", "CASE [--set section.key=value ...] [--out DIR] [--quiet] [--threads N] [--resume]",
      "run the analysis of a case file and write its tables and pictures",
      "Reads CASE, applies the --set assignments in order, checks every key and runs the analysis "
-     "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers or "
-     "work-precision. The results go to DIR: --out, else [output] directory, else "
+     "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers, "
+     "work-precision or continuation. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
      "Every file is written under a temporary name and renamed when complete, so a failed run "
      "leaves nothing behind. Pictures are drawn with gnuplot when it is installed.\n\n"

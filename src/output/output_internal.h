@@ -12,6 +12,7 @@
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_continuation.h"
 
 /* A file written under a temporary name and renamed into place on commit (gd_run_dir keeps one
  * per open file). */
@@ -88,5 +89,10 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
  * (gd_sweep_hysteresis) */
 gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
                                  gd_error *err);
+
+/* ---- continuation ---- */
+/* branch.csv (every branch point) and bifurcations.csv (every located bifurcation). */
+gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_error *err);
+gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_contin_result *res, gd_error *err);
 
 #endif

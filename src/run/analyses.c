@@ -4,6 +4,7 @@
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_workprec.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_continuation.h"
 #include "../case/case_keys.h"
 #include "../analysis/analysis_internal.h"
 #include "../optimisation/opt_internal.h"
@@ -57,6 +58,9 @@ static const gd_analysis_type analyses[] = {
     { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
       workprec_check_case, gd_row_workprec_run, gd_row_workprec_write, gd_row_workprec_summary,
       gd_row_workprec_free },
+    { GD_ANALYSIS_CONTINUATION, "continuation",
+      "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_contin_check_case,
+      gd_row_continuation_run, gd_row_continuation_write, gd_row_continuation_summary, gd_row_continuation_free },
 };
 
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n)

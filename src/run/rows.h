@@ -19,5 +19,6 @@ GD_ROW_DECLARE(ltca)
 GD_ROW_DECLARE(workprec)
 GD_ROW_DECLARE(optimize)
 GD_ROW_DECLARE(compare)
+GD_ROW_DECLARE(continuation)
 
 #endif

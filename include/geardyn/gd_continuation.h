@@ -1,0 +1,75 @@
+/* The `continuation` analysis (docs/continuation.md): the periodic orbits of a case followed in one
+ * numeric case key by pseudo-arclength continuation (gd_periodic.h), from the attractor after the
+ * case's transient or from a given state, in one or both directions, with branch switching at
+ * period doublings; every branch point with its Floquet multipliers and what one period of the
+ * orbit integrated with samples gives (RMS mesh acceleration, extremes of the mesh deflections).
+ *
+ * gd_contin_run computes (case -> result), gd_contin_result_free frees; the row `continuation` of
+ * the table of analyses (gd_analysis.h) writes branch.csv, bifurcations.csv and summary.json. */
+#ifndef GD_CONTINUATION_H
+#define GD_CONTINUATION_H
+
+#include "geardyn/gd_case.h"
+#include "geardyn/gd_periodic.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define GD_CONTIN_MAX_BRANCHES 8
+
+/* What one period of a branch point's orbit gives (integrated with output.samples_per_period
+ * samples per mesh period). */
+typedef struct gd_contin_measure {
+    double rms_accel_mps2[3];    /* left, right, combined, as a sweep's rms_accel_mps2 */
+    double lambda_min_um[2], lambda_max_um[2]; /* mesh deflections of the left and right half */
+    double lambda_poincare;      /* lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv) */
+} gd_contin_measure;
+
+typedef struct gd_contin_branch {
+    int nper;                    /* mesh periods of its orbits */
+    int direction;               /* +1: set out towards increasing parameter, -1 decreasing */
+    int parent;                  /* the branch whose period doubling it was switched from, -1 for a start branch */
+    gd_branch br;                /* points, bifurcations, end (gd_periodic.h); p = value / scale */
+    gd_contin_measure *meas;     /* one per point */
+    gd_contin_measure *bif_meas; /* one per bifurcation */
+} gd_contin_branch;
+
+typedef struct gd_contin_result {
+    char parameter[256];         /* "section.key" */
+    char unit[32];               /* of the key ("" when dimensionless) */
+    double scale;                /* key value per unit of the continuation parameter p */
+    int n, nclear, nmesh;        /* state size, clearances and meshes of the model */
+    char clear_name[GD_MAX_CLEAR][24];
+    char state_name[GD_MAX_STATE][16]; /* y1L, ..., y1L_dot: the degrees of freedom, then their rates */
+    int nper_start;              /* the starting orbit's period */
+    int period_found;            /* 1: nper_start found from the Poincare section after the transient */
+    double start_value;          /* the parameter at the start, in the key's unit */
+    int nbranches;
+    gd_contin_branch branch[GD_CONTIN_MAX_BRANCHES];
+    char notes[4][GD_ERROR_MSG_MAX]; /* branch switchings that found no doubled orbit */
+    int nnotes;
+    long corrections, newton_iterations;
+    double cpu_s;
+} gd_contin_result;
+
+/* Check the [continuation] keys of a resolved case (gd_case_resolve calls it through the table
+ * of analyses); messages name the file, line, key and valid range. */
+GD_API gd_status gd_contin_check_case(gd_case *c, gd_error *err);
+
+/* Progress: after each branch, the branches done of those planned so far; nonzero stops the run
+ * (GD_ERR_INTERRUPTED). */
+typedef int (*gd_contin_progress_fn)(void *user, int branches_done, int branches_planned);
+
+/* Run the continuation of a resolved case into *res (free with gd_contin_result_free). */
+GD_API gd_status gd_contin_run(const gd_case *c, gd_contin_progress_fn progress, void *user, gd_contin_result *res,
+                               gd_error *err);
+GD_API void gd_contin_result_free(gd_contin_result *res);
+
+/* The parameter of a branch point or bifurcation in the key's unit. */
+GD_API double gd_contin_value(const gd_contin_result *res, double p);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

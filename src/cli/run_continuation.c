@@ -1,0 +1,49 @@
+/* The `continuation` analysis on the command line: progress per branch, the picture
+ * (continuation_plot.c) and the branches and bifurcations found, on stdout. */
+#include "cli.h"
+
+#include <stdio.h>
+
+int cli_continuation_progress(void *user, int done, int planned)
+{
+    const cli_progress *p = user;
+    if (!p->quiet)
+        fprintf(stderr, "geardyn: continuation: %d of %d branches\n", done, planned);
+    return 0;
+}
+
+void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                               const char **note)
+{
+    (void)a;
+    if (gd_gnuplot_wanted(c->plots, note)) {
+        gd_error perr = {0};
+        gd_status pst = cli_continuation_draw(gd_run_dir_path(out), c, result, &perr);
+        static const char *pics[] = {"continuation.png", "continuation.svg"};
+        gd_gnuplot_drawn(pst, &perr, pics, 2, out);
+    }
+}
+
+void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
+{
+    (void)c;
+    const gd_contin_result *res = result;
+    if (a->quiet)
+        return;
+    printf("%s: continuation in %s from %.10g (period %d%s): %d branches, %ld corrections, %.2f Newton iterations "
+           "per correction, %.2f s CPU\n", dir, res->parameter, res->start_value, res->nper_start,
+           res->period_found ? ", found" : "", res->nbranches, res->corrections,
+           res->corrections ? (double)res->newton_iterations / (double)res->corrections : 0.0, res->cpu_s);
+    for (int b = 0; b < res->nbranches; b++) {
+        const gd_branch *br = &res->branch[b].br;
+        printf("  branch %d, period %d, %s: %d points to %.10g (%s)\n", b, res->branch[b].nper,
+               res->branch[b].direction > 0 ? "up" : "down", br->npoints,
+               gd_contin_value(res, br->pt[br->npoints - 1].orbit.p), br->end_reason);
+        for (int i = 0; i < br->nbif; i++)
+            printf("    %s%s%s at %.10g\n", gd_bif_kind_name(br->bif[i].kind), br->bif[i].clearance >= 0 ? " of " : "",
+                   br->bif[i].clearance >= 0 ? res->clear_name[br->bif[i].clearance] : "",
+                   gd_contin_value(res, br->bif[i].p));
+    }
+    for (int i = 0; i < res->nnotes; i++)
+        printf("  note: %s\n", res->notes[i]);
+}

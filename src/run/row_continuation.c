@@ -1,0 +1,50 @@
+/* The continuation row: periodic orbits followed in one key (gd_contin_run), then branch.csv,
+ * bifurcations.csv and summary.json. */
+#include "rows.h"
+#include "geardyn/gd_continuation.h"
+#include "../output/output_internal.h"
+
+#include <stdlib.h>
+
+/* The run's progress, after each branch, through the caller's hook. */
+static int on_branch(void *user, int done, int planned)
+{
+    const gd_run_env *env = user;
+    return env && env->continuation_branch ? env->continuation_branch(env->user, done, planned) : 0;
+}
+
+gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_run_dir *out, void **result,
+                                  gd_error *err)
+{
+    (void)out;
+    *result = NULL;
+    gd_contin_result *r = malloc(sizeof *r);
+    if (!r)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    gd_status st = gd_contin_run(c, on_branch, (void *)env, r, err);
+    if (st != GD_OK) {
+        free(r);
+        return st;
+    }
+    *result = r;
+    return GD_OK;
+}
+
+gd_status gd_row_continuation_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
+{
+    (void)c;
+    return gd_contin_write_tables(out, result, err);
+}
+
+gd_status gd_row_continuation_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
+{
+    return gd_contin_write_summary(out, c, result, err);
+}
+
+void gd_row_continuation_free(void *result)
+{
+    if (!result)
+        return;
+    gd_contin_result_free(result);
+    free(result);
+}

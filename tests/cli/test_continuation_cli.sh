@@ -1,0 +1,111 @@
+#!/usr/bin/env bash
+# analysis = continuation on the command line (docs/continuation.md): cases/continuation/kahraman-singh.ini
+# (Kahraman & Singh, constant stiffness, Omega 0.5 to 1.5 through operating.speed_rpm) writes
+# branch.csv, bifurcations.csv, summary.json and the picture; the branch from Omega 0.5 has the
+# grazing, the two folds and the period doubling where tests/test_continuation.c finds them with the
+# library directly (to 1e-7 in Omega: the locate tolerance 1e-8 in arclength, and the grazing's own
+# bias); its stable points have |mu_max| < 1; the period-2 branch switched to at the period doubling
+# starts there. Bad [continuation] settings are refused with exit 2 naming file, line and key, and
+# nothing is written. TAP output.
+set -u
+G=${GEARDYN:?}
+SRC=${GEARDYN_SOURCE:?}
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+n=0; bad=0
+ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+KS="$SRC/cases/continuation/kahraman-singh.ini"
+
+"$G" check "$KS" > "$work/check.txt"; ok $? "check exits 0 on kahraman-singh.ini"
+grep -Eq "^parameter = operating.speed_rpm +; file line" "$work/check.txt"; ok $? "check lists continuation.parameter"
+grep -Eq "^locate_tol = 1e-08 +; file line" "$work/check.txt"; ok $? "check lists continuation.locate_tol"
+
+out="$work/ks"
+"$G" run "$KS" --out "$out" --quiet > "$work/run.txt" 2>&1; ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
+for f in branch.csv bifurcations.csv summary.json; do
+    [ -s "$out/$f" ]; ok $? "wrote $f"
+done
+ls -a "$out" | grep -Eq '\.tmp'; [ $? -ne 0 ]; ok $? "no temporary files left"
+python3 - "$out" > "$work/checks.txt" <<'PY'
+import csv, json, sys
+d = sys.argv[1]
+scale = 3183.0988618379  # rpm per unit of Omega (the case's comment)
+br = list(csv.DictReader(open(d + "/branch.csv")))
+bf = list(csv.DictReader(open(d + "/bifurcations.csv")))
+s = json.load(open(d + "/summary.json"))
+def ok(c, msg):
+    print(("PASS " if c else "FAIL ") + msg)
+# the values tests/test_continuation.c prints for alpha 0 (docs/continuation.md section 4)
+expect = [("contact-change", 0.7088813139), ("fold", 0.7313611271), ("fold", 0.5853315696),
+          ("period-doubling", 1.2267006331)]
+b0 = [b for b in bf if b["branch"] == "0"]
+ok([b["kind"] for b in b0] == [k for k, _ in expect], "branch 0: grazing, fold, fold, period doubling in this "
+   "order (%s)" % [b["kind"] for b in b0])
+for (k, om), b in zip(expect, b0):
+    got = float(b["speed_rpm"]) / scale
+    ok(abs(got - om) < 1e-7, "%s at Omega %.10f (library test %.10f, |d| %.2g)" % (k, got, om, abs(got - om)))
+    ok(abs(float(b["continuation_p"]) - got) < 1e-9, "%s: continuation_p is Omega" % k)
+pd = [b for b in b0 if b["kind"] == "period-doubling"]
+ok(pd and abs(float(pd[0]["mu_re"]) + 1) < 1e-4, "the period doubling's multiplier is -1")
+ok(b0 and b0[0]["clearance"] == "mesh", "the grazing names the clearance 'mesh'")
+p0 = [r for r in br if r["branch"] == "0"]
+ok(abs(float(p0[0]["speed_rpm"]) / scale - 0.5) < 1e-12 and abs(float(p0[-1]["speed_rpm"]) / scale - 1.5) < 1e-9,
+   "branch 0 runs from Omega 0.5 to the bound 1.5")
+ok(all((r["stable"] == "1") == (float(r["mu_max"]) < 1) for r in br), "stable exactly where |mu_max| < 1")
+below = []
+for r in p0:  # the points from the start up to the grazing
+    if float(r["speed_rpm"]) / scale >= 0.7088:
+        break
+    below.append(r)
+ok(len(below) > 5 and all(int(r["events_mesh"]) == 0 for r in below), "no mesh event below the grazing (%d points)"
+   % len(below))
+ok(all(float(r["lambda_min_L_um"]) >= 10 - 1e-6 for r in below),
+   "below the grazing the teeth never separate: lambda_min_L >= b = 10 um")
+b1 = [r for r in br if r["branch"] == "1"]
+ok(b1 and b1[0]["period_n"] == "2" and abs(float(b1[0]["speed_rpm"]) / scale - 1.2267) < 0.02,
+   "branch 1: period 2, switched to near the period doubling")
+sb = s["results"]["branches"]
+ok(s["analysis"] == "continuation" and len(sb) == 2 and sb[0]["end"] == "bound" and
+   "branch.csv" in s["files"] and "summary.json" in s["files"], "summary.json: two branches, the first to its bound, "
+   "the files")
+PY
+ok $? "branch.csv, bifurcations.csv and summary.json read"
+while IFS= read -r line; do
+    case "$line" in
+        PASS\ *) ok 0 "${line#PASS }" ;;
+        *) ok 1 "${line#FAIL }" ;;
+    esac
+done < "$work/checks.txt"
+
+# refusals: exit 2, file:line and key named, nothing written
+refuse() { # key=value, pattern of the message[, another key=value]
+    local o="$work/bad"
+    rm -rf "$o"
+    "$G" run "$KS" --out "$o" --quiet --set "$1" ${3:+--set "$3"} > "$work/bad.txt" 2>&1
+    local rc=$?
+    [ $rc -eq 2 ] && grep -Eq -e "$2" "$work/bad.txt" && [ ! -e "$o" ]
+    ok $? "--set $1 refused with exit 2 (rc $rc: $(head -c 200 "$work/bad.txt"))"
+}
+refuse continuation.parameter=gear.teeth_pinion "continuation.parameter: 'gear.teeth_pinion' is not a real-valued"
+refuse continuation.parameter=operating.nothing "continuation.parameter: 'operating.nothing'"
+refuse continuation.to=1000 "--set #1: continuation.to: 1000 is not above from"
+refuse continuation.from=-5 "continuation.from: operating.speed_rpm = -5 is out of range"
+refuse continuation.ds=0.2 "continuation.ds: 0.2 is outside \[ds_min, ds_max\]"
+refuse continuation.period=17 "continuation.period"
+refuse continuation.direction=sideways "continuation.direction"
+refuse continuation.start_value=9000 "continuation.start_value: 9000 is outside the bounds"
+refuse continuation.newton_tol=1e-12 "continuation.newton_tol: 1e-12 is below solver.rtol = 1e-10"
+refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: no /nonexistent/sweep.csv" \
+    continuation.response=rms_accel
+refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: a sweep has no deflection extremes"
+refuse continuation.start=state "continuation.state: '' \(valid: with start = state"
+refuse continuation.state=1,2 "continuation.state: given with start = attractor"
+# in the file: the message names its line
+sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
+line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)
+"$G" run "$work/bad.ini" --out "$work/bad2" --quiet > "$work/bad.txt" 2>&1
+rc=$?
+[ $rc -eq 2 ] && grep -q "bad.ini:$line: continuation.to: 1000 is not above from" "$work/bad.txt" && [ ! -e "$work/bad2" ]
+ok $? "to = 1000 in the file refused at its line $line (rc $rc: $(head -c 200 "$work/bad.txt"))"
+echo "1..$n"
+[ $bad -eq 0 ]
