@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install what is missing, build geardyn twice (normal with -Werror, and with ASan+UBSan),
 # run the test suite in both, check that every exported symbol has the gd_ prefix, build a
-# third time with Open MPI and run the sweep suite there (2 MPI ranks), build the command line
+# third time with Open MPI and run the sweep and docs suites there (2 MPI ranks; the guide's MPI block), build the command line
 # once more against Debian's SUNDIALS package and check that every shipped case gives the same
 # outputs as with the release build of SUNDIALS (scripts/compare-outputs.sh), and end with the
 # line "N passed, N failed".
@@ -76,9 +76,10 @@ TEST_ARGS=(--timeout-multiplier 4)
 build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
     -Dwerror=true
 
-echo "== build with Open MPI (-Dmpi=enabled) and run the sweep suite (its MPI test runs 2 ranks)"
+echo "== build with Open MPI (-Dmpi=enabled) and run the sweep suite (its MPI test runs 2 ranks) and the"
+echo "   docs suite, whose guide runs its MPI block there"
 unset ASAN_OPTIONS UBSAN_OPTIONS
-TEST_ARGS=(--suite sweep)
+TEST_ARGS=(--suite sweep --suite docs)
 build_and_test build-mpi -Dmpi=enabled -Dbuildtype=debugoptimized -Dwerror=true
 
 echo "$passed passed, $failed failed"
