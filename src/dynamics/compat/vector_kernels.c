@@ -258,6 +258,27 @@ static void lc_sum_sse2(int nvec, const sunrealtype *c, const sunrealtype *const
     }
 }
 
+/* z = sum c[i] X[i] with the vectors accumulated one after the other (vector-outer loop), as the
+ * library does: with z one of the X[i] this order is part of the result. Returns 0. */
+static int lc_vector_outer(int nvec, const sunrealtype *c, N_Vector *X, N_Vector z)
+{
+    const sunindextype n = LEN(z);
+    sunrealtype *zd = DAT(z);
+    if (X[0] == z) {
+        if (c[0] != 1.0)
+            for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
+    } else {
+        const sunrealtype *x0 = DAT(X[0]);
+        for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
+    }
+    for (int i = 1; i < nvec; i++) {
+        const sunrealtype *xd = DAT(X[i]);
+        const sunrealtype ci = c[i];
+        for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
+    }
+    return 0;
+}
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GD_HAVE_AVX_KERNEL 1
 /* The same sum four lanes wide, for processors with AVX (chosen at run time). Separate
@@ -331,8 +352,7 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const sunrealtyp
  * pass that also reads the data pointers and tests the aliasing, with everything in registers
  * until the end: B blocks of four (B a constant in each copy, so the unused accumulators vanish)
  * and r = n - 4 B < 4 single elements. Returns 1, having written nothing, when z is one of
- * X[1..] (the caller then takes the vector-outer loop). The operations of each element are those
- * of lc_sum_avx, in the same order. */
+ * X[1..]. The operations of each element are those of lc_sum_avx, in the same order. */
 #define LC_BLOCKS(OP)                                                                                              \
     do {                                                                                                           \
         if (B > 0) OP(a0, 0);                                                                                      \
@@ -379,23 +399,26 @@ __attribute__((target("avx"), always_inline)) static inline int lc_short_avx(con
 #undef LC_STORE
 }
 
-/* lc_short_avx for n <= 20, one copy per number of blocks, and one more without single elements
- * (r a constant 0 there: no test in the loop) */
-__attribute__((target("avx"))) static int lc_short_avx_n(int nvec, const sunrealtype *c, N_Vector *X, N_Vector z,
-                                                         sunindextype n, int skip)
+/* The linear combination for n <= 20: lc_short_avx, one copy per number of blocks and one more
+ * without single elements (r a constant 0 there: no test in the loop), or the vector-outer loop
+ * when z is one of X[1..]. Returns 0. */
+__attribute__((target("avx"))) static int lc_short_avx_n(int nvec, const sunrealtype *c, N_Vector *X, N_Vector z)
 {
-    const int r = (int)(n % 4);
+    const sunindextype n = LEN(z);
+    const int r = (int)(n % 4), skip = X[0] == z && c[0] == 1.0;
+    int aliased;
 #define LC_COPY(B)                                                                                                 \
     (r ? lc_short_avx(B, nvec, c, X, z, r, skip) : lc_short_avx(B, nvec, c, X, z, 0, skip))
     switch (n / 4) {
-    case 0: return lc_short_avx(0, nvec, c, X, z, r, skip);
-    case 1: return LC_COPY(1);
-    case 2: return LC_COPY(2);
-    case 3: return LC_COPY(3);
-    case 4: return LC_COPY(4);
-    default: return LC_COPY(5);
+    case 0: aliased = lc_short_avx(0, nvec, c, X, z, r, skip); break;
+    case 1: aliased = LC_COPY(1); break;
+    case 2: aliased = LC_COPY(2); break;
+    case 3: aliased = LC_COPY(3); break;
+    case 4: aliased = LC_COPY(4); break;
+    default: aliased = LC_COPY(5); break;
     }
 #undef LC_COPY
+    return aliased ? lc_vector_outer(nvec, c, X, z) : 0;
 }
 #undef LC_BLOCKS
 #endif
@@ -414,8 +437,7 @@ static void lc_sum(int nvec, const sunrealtype *c, const sunrealtype *const *xs,
     lc_sum_sse2(nvec, c, xs, zd, n, skip);
 }
 
-/* z = sum c[i] X[i]. The vectors are accumulated one after the other (vector-outer loop), as the
- * library does: with z aliasing one of the X[i] this order is part of the result. */
+/* z = sum c[i] X[i], bit for bit the library's vector-outer loop (lc_vector_outer) */
 static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1)
@@ -429,14 +451,11 @@ static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z
         return 0;
     }
     const sunindextype n = LEN(z);
-    sunrealtype *zd = DAT(z);
 #ifdef GD_HAVE_AVX_KERNEL
-    if (n <= 20 && !lc_narrow && __builtin_cpu_supports("avx")) {
-        if (lc_short_avx_n(nvec, c, X, z, n, X[0] == z && c[0] == 1.0) == 0)
-            return 0;
-        goto vector_outer; /* z is one of X[1..] */
-    }
+    if (n <= 20 && !lc_narrow && __builtin_cpu_supports("avx"))
+        return lc_short_avx_n(nvec, c, X, z);
 #endif
+    sunrealtype *zd = DAT(z);
     enum { MAXV = 16 };
     if (nvec <= MAXV) { /* the data pointers and the aliasing test in one pass; z among X[1..]:
                          * the vector-outer loop below */
@@ -450,20 +469,7 @@ static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z
             return 0;
         }
     }
-vector_outer:
-    if (X[0] == z) {
-        if (c[0] != 1.0)
-            for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
-    } else {
-        const sunrealtype *x0 = DAT(X[0]);
-        for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
-    }
-    for (int i = 1; i < nvec; i++) {
-        const sunrealtype *xd = DAT(X[i]);
-        const sunrealtype ci = c[i];
-        for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
-    }
-    return 0;
+    return lc_vector_outer(nvec, c, X, z);
 }
 
 /* Z[i] = Y[i] + a[i] x */
