@@ -86,7 +86,9 @@ static const double coef[] = {1.0, -1.0, 0.0, 0.7, -0.7, 1.3, 2.5e-3};
 
 static void op_by_op(SUNContext ctx, const char *width)
 {
-    const int lens[] = {1, 7, 20, 40, 57}; /* 57: the 20-, 16- and 4-wide blocks and single elements */
+    /* up to 20: each number of four-wide blocks with 0 to 3 single elements (the short sum in one
+     * pass); 40 and 57: the 20-, 16- and 4-wide blocks and single elements */
+    const int lens[] = {1, 2, 3, 4, 7, 8, 12, 15, 16, 19, 20, 40, 57};
     int bad[16] = {0}, count[16] = {0};
     const char *names[16] = {"linearsum", "scale", "linearcombination", "scaleaddmulti", "const", "prod", "div",
                              "abs", "inv", "addconst", "dotprod", "maxnorm", "wrmsnorm", "wsqrsumlocal", "min"};

@@ -136,7 +136,6 @@ static void k_div(N_Vector x, N_Vector y, N_Vector z)
             (zd)[i_] = F((xd)[i_]);                                                                                \
     } while (0)
 #define F_SCALE(x) (c * (x))
-#define F_COPY(x) (x)
 #define F_NEG(x) (-(x))
 #define F_INV(x) (1.0 / (x))
 
@@ -146,8 +145,8 @@ static void k_scale(sunrealtype c, N_Vector x, N_Vector z)
     sunrealtype *xd = DAT(x), *zd = DAT(z);
     if (z == x)
         ELEMENTWISE(n, xd, xd, F_SCALE);
-    else if (c == 1.0)
-        ELEMENTWISE(n, xd, zd, F_COPY);
+    else if (c == 1.0) /* a copy: ARKODE's N_VScale(1, x, z) at every step */
+        memcpy(zd, xd, (size_t)n * sizeof *zd);
     else if (c == -1.0)
         ELEMENTWISE(n, xd, zd, F_NEG);
     else
@@ -259,6 +258,27 @@ static void lc_sum_sse2(int nvec, const sunrealtype *c, const sunrealtype *const
     }
 }
 
+/* z = sum c[i] X[i] with the vectors accumulated one after the other (vector-outer loop), as the
+ * library does: with z one of the X[i] this order is part of the result. Returns 0. */
+static int lc_vector_outer(int nvec, const sunrealtype *c, N_Vector *X, N_Vector z)
+{
+    const sunindextype n = LEN(z);
+    sunrealtype *zd = DAT(z);
+    if (X[0] == z) {
+        if (c[0] != 1.0)
+            for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
+    } else {
+        const sunrealtype *x0 = DAT(X[0]);
+        for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
+    }
+    for (int i = 1; i < nvec; i++) {
+        const sunrealtype *xd = DAT(X[i]);
+        const sunrealtype ci = c[i];
+        for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
+    }
+    return 0;
+}
+
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 #define GD_HAVE_AVX_KERNEL 1
 /* The same sum four lanes wide, for processors with AVX (chosen at run time). Separate
@@ -327,6 +347,80 @@ __attribute__((target("avx"))) static void lc_sum_avx(int nvec, const sunrealtyp
         zd[j] = acc;
     }
 }
+
+/* The same sum for the short vectors of the runs (n <= 20: the torsional and bta states), in one
+ * pass that also reads the data pointers and tests the aliasing, with everything in registers
+ * until the end: B blocks of four (B a constant in each copy, so the unused accumulators vanish)
+ * and r = n - 4 B < 4 single elements. Returns 1, having written nothing, when z is one of
+ * X[1..]. The operations of each element are those of lc_sum_avx, in the same order. */
+#define LC_BLOCKS(OP)                                                                                              \
+    do {                                                                                                           \
+        if (B > 0) OP(a0, 0);                                                                                      \
+        if (B > 1) OP(a1, 4);                                                                                      \
+        if (B > 2) OP(a2, 8);                                                                                      \
+        if (B > 3) OP(a3, 12);                                                                                     \
+        if (B > 4) OP(a4, 16);                                                                                     \
+    } while (0)
+__attribute__((target("avx"), always_inline)) static inline int lc_short_avx(const int B, int nvec, const sunrealtype *c,
+                                                                             N_Vector *X, N_Vector z, int r, int skip)
+{
+    sunrealtype *zd = DAT(z);
+    const sunrealtype *p = skip ? zd : DAT(X[0]);
+    const sunrealtype c0 = c[0];
+    const v4 cv = {c0, c0, c0, c0};
+    v4 a0 = {0}, a1 = {0}, a2 = {0}, a3 = {0}, a4 = {0};
+    sunrealtype s0 = 0.0, s1 = 0.0, s2 = 0.0;
+    const int t = 4 * B;
+#define LC_FIRST(a, o) (a = skip ? LD4(p + (o)) : cv * LD4(p + (o)))
+    LC_BLOCKS(LC_FIRST);
+    if (r > 0) s0 = skip ? p[t] : c0 * p[t];
+    if (r > 1) s1 = skip ? p[t + 1] : c0 * p[t + 1];
+    if (r > 2) s2 = skip ? p[t + 2] : c0 * p[t + 2];
+    for (int i = 1; i < nvec; i++) {
+        if (X[i] == z)
+            return 1;
+        const sunrealtype ci = c[i];
+        const v4 civ = {ci, ci, ci, ci};
+        const sunrealtype *xi = DAT(X[i]);
+#define LC_ADD(a, o) (a += civ * LD4(xi + (o)))
+        LC_BLOCKS(LC_ADD);
+        if (r > 0) s0 += ci * xi[t];
+        if (r > 1) s1 += ci * xi[t + 1];
+        if (r > 2) s2 += ci * xi[t + 2];
+    }
+#define LC_STORE(a, o) ST4(zd + (o), a)
+    LC_BLOCKS(LC_STORE);
+    if (r > 0) zd[t] = s0;
+    if (r > 1) zd[t + 1] = s1;
+    if (r > 2) zd[t + 2] = s2;
+    return 0;
+#undef LC_FIRST
+#undef LC_ADD
+#undef LC_STORE
+}
+
+/* The linear combination for n <= 20: lc_short_avx, one copy per number of blocks and one more
+ * without single elements (r a constant 0 there: no test in the loop), or the vector-outer loop
+ * when z is one of X[1..]. Returns 0. */
+__attribute__((target("avx"))) static int lc_short_avx_n(int nvec, const sunrealtype *c, N_Vector *X, N_Vector z)
+{
+    const sunindextype n = LEN(z);
+    const int r = (int)(n % 4), skip = X[0] == z && c[0] == 1.0;
+    int aliased;
+#define LC_COPY(B)                                                                                                 \
+    (r ? lc_short_avx(B, nvec, c, X, z, r, skip) : lc_short_avx(B, nvec, c, X, z, 0, skip))
+    switch (n / 4) {
+    case 0: aliased = lc_short_avx(0, nvec, c, X, z, r, skip); break;
+    case 1: aliased = LC_COPY(1); break;
+    case 2: aliased = LC_COPY(2); break;
+    case 3: aliased = LC_COPY(3); break;
+    case 4: aliased = LC_COPY(4); break;
+    default: aliased = LC_COPY(5); break;
+    }
+#undef LC_COPY
+    return aliased ? lc_vector_outer(nvec, c, X, z) : 0;
+}
+#undef LC_BLOCKS
 #endif
 
 static int lc_narrow; /* 1: two lanes even where AVX is available (gd_vector_kernels_wide(0), for the tests) */
@@ -343,8 +437,7 @@ static void lc_sum(int nvec, const sunrealtype *c, const sunrealtype *const *xs,
     lc_sum_sse2(nvec, c, xs, zd, n, skip);
 }
 
-/* z = sum c[i] X[i]. The vectors are accumulated one after the other (vector-outer loop), as the
- * library does: with z aliasing one of the X[i] this order is part of the result. */
+/* z = sum c[i] X[i], bit for bit the library's vector-outer loop (lc_vector_outer) */
 static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z)
 {
     if (nvec < 1)
@@ -358,6 +451,10 @@ static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z
         return 0;
     }
     const sunindextype n = LEN(z);
+#ifdef GD_HAVE_AVX_KERNEL
+    if (n <= 20 && !lc_narrow && __builtin_cpu_supports("avx"))
+        return lc_short_avx_n(nvec, c, X, z);
+#endif
     sunrealtype *zd = DAT(z);
     enum { MAXV = 16 };
     if (nvec <= MAXV) { /* the data pointers and the aliasing test in one pass; z among X[1..]:
@@ -372,19 +469,7 @@ static int k_linearcombination(int nvec, sunrealtype *c, N_Vector *X, N_Vector z
             return 0;
         }
     }
-    if (X[0] == z) {
-        if (c[0] != 1.0)
-            for (sunindextype j = 0; j < n; j++) zd[j] *= c[0];
-    } else {
-        const sunrealtype *x0 = DAT(X[0]);
-        for (sunindextype j = 0; j < n; j++) zd[j] = c[0] * x0[j];
-    }
-    for (int i = 1; i < nvec; i++) {
-        const sunrealtype *xd = DAT(X[i]);
-        const sunrealtype ci = c[i];
-        for (sunindextype j = 0; j < n; j++) zd[j] += ci * xd[j];
-    }
-    return 0;
+    return lc_vector_outer(nvec, c, X, z);
 }
 
 /* Z[i] = Y[i] + a[i] x */
