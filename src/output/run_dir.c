@@ -3,7 +3,6 @@
  * The directory is locked for the run (flock); the run's files are staged in DIR/.staging-PID
  * and moved into DIR together by gd_run_dir_publish, so that a failed or interrupted run leaves
  * the previous result (docs/robustness.md). */
-#define _XOPEN_SOURCE 700
 #include "output_internal.h"
 
 #include <dirent.h>
