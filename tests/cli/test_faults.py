@@ -248,6 +248,12 @@ def main():
        and not os.path.exists(os.path.join(r, 'response.png')),
        'a new set without time_history.csv and pictures: the previous ones are gone (%s)' %
        sorted(os.listdir(r)))
+    # an output path that fails further on (a file in the way) leaves none of the directories made
+    open(os.path.join(tmp, 'afile'), 'w').close()
+    bad = os.path.join(tmp, 'made', '..', 'afile', 'z')
+    rc, err = run([quick, '--out', bad, '--quiet'])
+    ok(rc == 2 and not os.path.exists(os.path.join(tmp, 'made')) and 'cannot be a directory' in err,
+       'an output path through a file: exit %d, no leading directory left: %s' % (rc, err.strip()))
     print('# outcomes: ' + json.dumps(outcomes, sort_keys=True))
     print('1..%d' % n_tap)
     subprocess.run(['rm', '-rf', tmp])
