@@ -17,7 +17,7 @@ extern "C" {
  * file), and the names committed, in order, with those added by gd_run_dir_add (pictures drawn
  * into the stage by other means), are the list summary.json gives. The directory is made
  * (mkdir -p) and locked (flock; a second run into it is refused) at the first file; the files
- * are written into its stage (DIR/.staging-PID) and moved into DIR together by
+ * are written into its stage (DIR/.staging) and moved into DIR together by
  * gd_run_dir_publish: closing an unpublished run removes the stage and leaves DIR as it was.
  * Publishing a set with a summary.json first removes the previous summary.json and the files it
  * lists that the new set does not have. A name that starts with '.' is a working file of the run

@@ -11,7 +11,7 @@ static const cli_help commands[] = {
      "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers or "
      "work-precision. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
-     "The run locks DIR (a second run into it is refused), writes its files into DIR/.staging-PID "
+     "The run locks DIR (a second run into it is refused), writes its files into DIR/.staging "
      "and moves them into DIR together when the whole run has succeeded, so a failed or "
      "interrupted run (SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
      "Pictures are drawn with gnuplot when it is installed.\n\n"

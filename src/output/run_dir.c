@@ -1,6 +1,6 @@
 /* The output directory of a run: every file of a run is opened and committed here, and the names
  * committed (or added, like the pictures drawn into it) make the list that summary.json gives.
- * The directory is locked for the run (flock); the run's files are staged in DIR/.staging-PID
+ * The directory is locked for the run (flock); the run's files are staged in DIR/.staging
  * and moved into DIR together by gd_run_dir_publish, so that a failed or interrupted run leaves
  * the previous result (docs/robustness.md). */
 #include "output_internal.h"
@@ -21,7 +21,7 @@
 
 struct gd_run_dir {
     char path[GD_PATH_MAX];
-    char stage[GD_PATH_MAX + 32];            /* path/.staging-PID, where the run's files are written */
+    char stage[GD_PATH_MAX + 32];            /* path/.staging, where the run's files are written */
     int made;                                /* the directory exists, is locked and has the stage */
     int dir_fd;                              /* path, open and locked while the run lasts */
     int published;
@@ -59,7 +59,7 @@ static void remove_stale(const char *dir)
         return;
     struct dirent *e;
     while ((e = readdir(dp)) != NULL)
-        if (strncmp(e->d_name, ".staging-", 9) == 0 || strncmp(e->d_name, ".plot-", 6) == 0) {
+        if (strncmp(e->d_name, ".staging", 8) == 0 || strncmp(e->d_name, ".plot-", 6) == 0) {
             char p[GD_PATH_MAX + 300];
             snprintf(p, sizeof p, "%s/%s", dir, e->d_name);
             remove_tree(p);
@@ -103,7 +103,9 @@ GD_API gd_status gd_run_dir_make(gd_run_dir *d, gd_error *err)
                             "to end, or choose another --out)", d->path);
     }
     remove_stale(d->path);
-    snprintf(d->stage, sizeof d->stage, "%s/.staging-%ld", d->path, (long)getpid());
+    /* one name: the lock makes this run the only one staging here, and a fixed name keeps the
+     * paths gnuplot writes into an SVG the same from run to run */
+    snprintf(d->stage, sizeof d->stage, "%s/.staging", d->path);
     if (mkdir(d->stage, 0777) != 0)
         return gd_error_set(err, GD_ERR_IO, "%s: cannot create: %s", d->stage, strerror(errno));
     d->made = 1;

@@ -236,8 +236,8 @@ def main():
     rc, err = run(oargs)
     ok(rc == 0 and state(o)[1] == [] and whole_set(o), 'the next run removes what it left (left %s)' % state(o)[1])
     # a killed run's stage and gnuplot script, and a journal's temporary, are removed by the next run
-    os.mkdir(os.path.join(r, '.staging-999999'))
-    open(os.path.join(r, '.staging-999999', 'time_history.csv'), 'w').close()
+    os.mkdir(os.path.join(r, '.staging'))
+    open(os.path.join(r, '.staging', 'time_history.csv'), 'w').close()
     open(os.path.join(r, '.plot-abcdef'), 'w').close()
     rc, err = run(rargs)
     ok(rc == 0 and state(r)[1] == [] and whole_set(r), 'a stale stage and .plot- file are removed by the next '
