@@ -5,7 +5,7 @@
 # the system package. Run by scripts/quickstart.sh and scripts/test.sh; safe to run again.
 set -euo pipefail
 GD_PACKAGES=(gcc pkg-config meson ninja-build cmake dpkg-dev xz-utils python3 libsundials-dev libgsl-dev libnlopt-dev
-             libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev)
+             libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev clang libclang-rt-14-dev)
 missing=()
 for p in "${GD_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

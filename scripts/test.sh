@@ -3,8 +3,9 @@
 # run the test suite in both, check that every exported symbol has the gd_ prefix, build a
 # third time with Open MPI and run the sweep and docs suites there (2 MPI ranks; the guide's MPI block), build the command line
 # once more against Debian's SUNDIALS package and check that every shipped case gives the same
-# outputs as with the release build of SUNDIALS (scripts/compare-outputs.sh), and end with the
-# line "N passed, N failed".
+# outputs as with the release build of SUNDIALS (scripts/compare-outputs.sh), build the libFuzzer
+# harnesses with clang and fuzz each for a minute (scripts/fuzz.sh), and end with the line
+# "N passed, N failed".
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh || { echo "0 passed, 1 failed"; exit 1; }
@@ -81,6 +82,22 @@ echo "   docs suite, whose guide runs its MPI block there"
 unset ASAN_OPTIONS UBSAN_OPTIONS
 TEST_ARGS=(--suite sweep --suite docs)
 build_and_test build-mpi -Dmpi=enabled -Dbuildtype=debugoptimized -Dwerror=true
+
+echo "== fuzzing (clang, libFuzzer + ASan + UBSan): replay each harness's corpus, then fuzz it for 60 s"
+echo "   (scripts/fuzz.sh; a crash leaves its input in build-fuzz/fuzz-artifacts/)"
+if command -v clang >/dev/null; then
+    if { [ -d build-fuzz/meson-info ] || CC=clang meson setup build-fuzz -Dfuzz=true -Db_lundef=false \
+            -Dbuildtype=debugoptimized -Dwerror=true >/dev/null; } &&
+            ninja -C build-fuzz tests/fuzz/fuzz_case tests/fuzz/fuzz_eventlog >/dev/null; then
+        for h in case eventlog; do
+            if bash scripts/fuzz.sh build-fuzz 60 "$h"; then passed=$((passed + 1)); else failed=$((failed + 1)); fi
+        done
+    else
+        echo "build-fuzz (-Dfuzz=true, CC=clang) failed"; failed=$((failed + 1))
+    fi
+else
+    echo "clang is not installed (scripts/deps.sh installs it)"; failed=$((failed + 1))
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -103,6 +103,7 @@ static void *run_row(const gd_analysis_type *a, const gd_case *c, const char *di
     CHECK(a->run(c, &env, *out, &res, &e), &e);
     CHECK(a->write(c, res, *out, &e), &e);
     CHECK(a->summary(c, res, *out, &e), &e);
+    CHECK(gd_run_dir_publish(*out, &e), &e);
     return res;
 }
 

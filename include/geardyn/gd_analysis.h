@@ -12,6 +12,7 @@
  *     a->write(&c, res, out, &err);           the tables (CSV)
  *     ... pictures of one's own: gd_run_dir_add(out, "picture.png", &err)
  *     a->summary(&c, res, out, &err);         summary.json, listing every file of out
+ *     gd_run_dir_publish(out, &err);          the set moved from the stage into results/x
  *     ... read the result (gd_response_outcome, gd_tca_result, ...: below)
  *     a->free(res);  gd_run_dir_close(out);
  *
@@ -59,6 +60,8 @@ typedef struct gd_run_env {
     gd_status (*sweep_start)(void *user, const gd_sweep_plan *p, gd_sweep_point *pts, gd_run_dir *out,
                              gd_error *err);
     gd_status (*sweep_point)(void *user, const gd_sweep_plan *p, const gd_sweep_point *pt, gd_error *err);
+    /* every run: asked before the set is published; nonzero ends the run with
+     * GD_ERR_INTERRUPTED and nothing published (the command line's signals) */
     int (*should_stop)(void *user);
     gd_status (*sweep_end)(void *user, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_status st,
                            gd_error *err);

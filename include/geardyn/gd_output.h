@@ -13,26 +13,34 @@ extern "C" {
 #endif
 
 /* The output directory of a run. Every file of a run is opened and committed through it: a file
- * is written under a temporary name and renamed into place on commit (a reader never sees a
- * half-written file), and the names committed, in order, with those added by gd_run_dir_add
- * (pictures drawn into the directory by other means), are the list summary.json gives. The
- * directory is made (mkdir -p) at the first file, so that a run that fails first leaves nothing.
- * A name that starts with '.' is a working file of the run (the sweep's journal) and is not
- * listed. */
+ * is written under a temporary name and renamed on commit (a reader never sees a half-written
+ * file), and the names committed, in order, with those added by gd_run_dir_add (pictures drawn
+ * into the stage by other means), are the list summary.json gives. The directory is made
+ * (mkdir -p) and locked (flock; a second run into it is refused) at the first file; the files
+ * are written into its stage (DIR/.staging) and moved into DIR together by
+ * gd_run_dir_publish: closing an unpublished run removes the stage and leaves DIR as it was.
+ * Publishing a set with a summary.json first removes the previous summary.json and the files it
+ * lists that the new set does not have. A name that starts with '.' is a working file of the run
+ * (the sweep's journal), written in DIR itself, and is not listed. */
 typedef struct gd_run_dir gd_run_dir;
 
 GD_API gd_status gd_run_dir_open(const char *dir, gd_run_dir **out, gd_error *err);
-/* Discards the files still open (nothing committed is removed) and frees d; NULL is allowed. */
+/* Discards the files still open and the stage when not published, unlocks and frees d; NULL is
+ * allowed. */
 GD_API void gd_run_dir_close(gd_run_dir *d);
 GD_API const char *gd_run_dir_path(const gd_run_dir *d);
-/* Make the directory now (the first gd_run_dir_create does it otherwise). */
+/* Where the run's files are written before gd_run_dir_publish (pictures are drawn there). */
+GD_API const char *gd_run_dir_stage(const gd_run_dir *d);
+/* Make and lock the directory now (the first gd_run_dir_create does it otherwise). */
 GD_API gd_status gd_run_dir_make(gd_run_dir *d, gd_error *err);
 /* A new file name of the run, open for writing in *fp until gd_run_dir_commit or _discard. */
 GD_API gd_status gd_run_dir_create(gd_run_dir *d, const char *name, FILE **fp, gd_error *err);
 GD_API gd_status gd_run_dir_commit(gd_run_dir *d, FILE *fp, gd_error *err);
 GD_API void gd_run_dir_discard(gd_run_dir *d, FILE *fp);
-/* A file written into the directory by other means joins the list. */
+/* A file written into the stage by other means joins the list. */
 GD_API gd_status gd_run_dir_add(gd_run_dir *d, const char *name, gd_error *err);
+/* Move the listed files of the stage into the directory (summary.json last). */
+GD_API gd_status gd_run_dir_publish(gd_run_dir *d, gd_error *err);
 /* The files of the run so far, in order (valid until the next call on d). */
 GD_API const char *const *gd_run_dir_files(const gd_run_dir *d, int *n);
 

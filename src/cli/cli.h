@@ -32,6 +32,14 @@ int cli_fail(const gd_error *err);
  * OpenMP). */
 int cli_threads(int requested);
 
+/* Signals during a run (signals.c): catch SIGINT, SIGTERM and SIGHUP; the signal caught (0: none);
+ * should_stop of gd_run_env; the line and exit status (128 + signal) of an interrupted run. */
+void cli_signals_catch(void);
+int cli_signal_caught(void);
+const char *cli_signal_name(int sig);
+int cli_should_stop(void *user);
+int cli_interrupted(const char *dir);
+
 /* Progress on stderr while an analysis runs (the user of gd_run_env). */
 typedef struct cli_progress {
     int quiet, tty;

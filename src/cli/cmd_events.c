@@ -146,6 +146,8 @@ int cmd_events(int argc, char **argv)
         st = gd_eventlog_summarise(path, &f, fp, &sum, &err);
     if (st == GD_OK && fp)
         st = gd_run_dir_commit(d, fp, &err);
+    if (st == GD_OK && d)
+        st = gd_run_dir_publish(d, &err);
     gd_run_dir_close(d);
     if (st != GD_OK)
         return cli_fail(&err);

@@ -61,6 +61,7 @@ void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
     env->user = p;
     env->threads = a->threads;
     env->progress = cli_response_progress;
+    env->should_stop = cli_should_stop;
     env->workprec.start = cli_workprec_start;
     env->workprec.done = cli_workprec_done;
     env->optimize_run = cli_optimize_run;
@@ -81,7 +82,10 @@ static int run_row(const cli_case_args *a, const gd_case *c, const gd_analysis_t
     cli_run_env(&p, a, &env);
     if (r->announce && !a->quiet)
         r->announce(dir, c);
-    return gd_analysis_run_in(t, c, &env, dir, &err) == GD_OK ? 0 : cli_fail(&err);
+    gd_status st = gd_analysis_run_in(t, c, &env, dir, &err);
+    if (st != GD_OK && cli_signal_caught())
+        return cli_interrupted(dir);
+    return st == GD_OK ? 0 : cli_fail(&err);
 }
 
 static void default_out_dir(const char *case_path, char *out, size_t len)
@@ -111,6 +115,7 @@ int cmd_run(int argc, char **argv)
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
     static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);
+    cli_signals_catch();
     if (r && r->own)
         rc = r->own(&a, &c, dir);
     else

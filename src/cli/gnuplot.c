@@ -87,10 +87,43 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
     return st;
 }
 
+/* A whole picture: a PNG from its signature to its IEND chunk, an SVG to its closing tag (gnuplot
+ * exits 0 after a write that failed, on a full disk, leaving a truncated file). */
+static int picture_whole(const char *path, int png)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    unsigned char head[8] = {0}, tail[16] = {0};
+    size_t nh = fread(head, 1, sizeof head, f);
+    long size = fseek(f, 0, SEEK_END) == 0 ? ftell(f) : -1;
+    size_t nt = 0;
+    if (size >= 16 && fseek(f, size - 16, SEEK_SET) == 0)
+        nt = fread(tail, 1, sizeof tail, f);
+    fclose(f);
+    if (nh != sizeof head || nt != sizeof tail)
+        return 0;
+    if (png)
+        return memcmp(head, "\x89PNG\r\n\x1a\n", 8) == 0 &&
+               memcmp(tail + 4, "\0\0\0\0IEND\xae\x42\x60\x82", 12) == 0;
+    int k = (int)sizeof tail;
+    while (k > 0 && (tail[k - 1] == '\n' || tail[k - 1] == '\r' || tail[k - 1] == ' '))
+        k--;
+    return k >= 6 && memcmp(tail + k - 6, "</svg>", 6) == 0;
+}
+
 gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const *names, int nnames, gd_error *err)
 {
     static const char *ext[2] = {".png", ".svg"};
     gd_status st = gd_gnuplot_run(dir, script, err);
+    for (int i = 0; i < nnames && st == GD_OK; i++)
+        for (int e = 0; e < 2 && st == GD_OK; e++) {
+            char tmp[1400];
+            snprintf(tmp, sizeof tmp, "%s/.%s%s.tmp", dir, names[i], ext[e]);
+            if (!picture_whole(tmp, e == 0))
+                st = gd_error_set(err, GD_ERR_IO, "%s%s: gnuplot wrote no whole picture (a full disk?)", names[i],
+                                  ext[e]);
+        }
     for (int i = 0; i < nnames; i++)
         for (int e = 0; e < 2; e++) {
             char tmp[1400], fin[1400];

@@ -11,8 +11,10 @@ static const cli_help commands[] = {
      "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers, "
      "work-precision or continuation. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
-     "Every file is written under a temporary name and renamed when complete, so a failed run "
-     "leaves nothing behind. Pictures are drawn with gnuplot when it is installed.\n\n"
+     "The run locks DIR (a second run into it is refused), writes its files into DIR/.staging "
+     "and moves them into DIR together when the whole run has succeeded, so a failed or "
+     "interrupted run (SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
+     "Pictures are drawn with gnuplot when it is installed.\n\n"
      "A sweep started by mpirun -n N geardyn run CASE (geardyn built with -Dmpi=enabled) spreads "
      "its points over the N ranks; rank 0 writes the same files as a serial run.",
      {{"--set section.key=value", "override one key of the case (repeatable; -s is the short form)"},

@@ -8,7 +8,7 @@
 /* The four panels (PNG and SVG), drawn under temporary names then renamed; a failure is a note. */
 void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir *out)
 {
-    const char *dir = gd_run_dir_path(out);
+    const char *dir = gd_run_dir_stage(out);
     const gd_model *m = &ro->model;
     const gd_response_result *r = &ro->res;
     const gd_local *L = &ro->local;

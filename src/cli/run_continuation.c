@@ -18,7 +18,7 @@ void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const v
     (void)a;
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = cli_continuation_draw(gd_run_dir_path(out), c, result, &perr);
+        gd_status pst = cli_continuation_draw(gd_run_dir_stage(out), c, result, &perr);
         static const char *pics[] = {"continuation.png", "continuation.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 2, out);
     }

@@ -76,7 +76,7 @@ void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *res
 {
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_path(out), result, &perr);
+        gd_status pst = draw(gd_run_dir_stage(out), result, &perr);
         static const char *pics[] = {"load_distribution.png", "load_distribution.svg", "lte.png", "lte.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 4, out);
     }

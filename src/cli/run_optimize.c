@@ -70,7 +70,7 @@ void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void 
     const gd_optimize_outcome *o = result;
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_path(out), c, o, &perr);
+        gd_status pst = draw(gd_run_dir_stage(out), c, o, &perr);
         static const char *pics[] = {"convergence.png", "convergence.svg", "lte.png", "lte.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, o->gear ? 4 : 2, out);
     }

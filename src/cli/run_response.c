@@ -10,6 +10,8 @@
 int cli_response_progress(void *user, long done, long total)
 {
     cli_progress *o = user;
+    if (cli_signal_caught())
+        return 1;
     if (!o->tty)
         return 0;
     long pct = done * 100 / total;
@@ -76,7 +78,7 @@ void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void 
         cli_local_draw(c, r, out);
     if (gd_gnuplot_wanted(c->plots && c->time_history, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_path(out), c, &r->model, &r->res, &perr);
+        gd_status pst = draw(gd_run_dir_stage(out), c, &r->model, &r->res, &perr);
         static const char *pics[] = {"time_history.png", "time_history.svg", "phase.png", "phase.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 4, out);
     }

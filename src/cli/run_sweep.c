@@ -28,8 +28,6 @@
 
 #define JOURNAL ".sweep.journal"
 
-static volatile sig_atomic_t g_signal = 0;
-static void on_signal(int sig) { g_signal = sig; }
 
 typedef struct sweep_cli {
     cli_progress base;       /* first: the user of the common hooks (cli_run_env) */
@@ -38,7 +36,6 @@ typedef struct sweep_cli {
     gd_sweep_point *pts;
     int rank, size;
     int fd;                  /* the journal, rank 0 */
-    int dir_fd;              /* the output directory, locked against a second sweep into it */
     char journal[GD_PATH_MAX + 32];
     pthread_mutex_t io;      /* journal appends, the progress line and MPI calls */
     int progress;
@@ -53,7 +50,6 @@ typedef struct sweep_cli {
     size_t tlen;
     int threads;             /* for the summary line */
     double wall;
-    struct sigaction old_int, old_term;
     int decided, rc;         /* the exit status is decided by the hooks (not to be cli_fail'ed) */
 } sweep_cli;
 
@@ -170,7 +166,7 @@ static gd_status on_point(void *user, const gd_sweep_plan *p, const gd_sweep_poi
 static int should_stop(void *user)
 {
     sweep_cli *s = user;
-    if (g_signal || atomic_load(&s->fatal))
+    if (cli_signal_caught() || atomic_load(&s->fatal))
         return 1;
     if (s->size > 1 && s->rank == 0) {
         /* rank 0 takes the other ranks' points while it computes (every 20 ms at most) */
@@ -214,11 +210,6 @@ static gd_status prepare(sweep_cli *s, const cli_case_args *a, gd_run_dir *out, 
     gd_status st = gd_run_dir_make(out, err);
     if (st != GD_OK)
         return st;
-    s->dir_fd = open(dir, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (s->dir_fd < 0)
-        return gd_error_set(err, GD_ERR_IO, "%s: cannot open: %s", dir, strerror(errno));
-    if (flock(s->dir_fd, LOCK_EX | LOCK_NB) != 0)
-        return gd_error_set(err, GD_ERR_IO, "%s: another geardyn is running a sweep into this directory", dir);
     remove_stale_temporaries(dir);
     snprintf(s->journal, sizeof s->journal, "%s/%s", dir, JOURNAL);
     int exists = access(s->journal, F_OK) == 0;
@@ -403,7 +394,7 @@ static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_pla
 static gd_status draw(gd_run_dir *out, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
                       gd_error *err)
 {
-    const char *dir = gd_run_dir_path(out);
+    const char *dir = gd_run_dir_stage(out);
     int has[3] = {0, 0, 0}, mle = 0;
     double mle_abs = 0;
     for (int s = 0; s < p->nslots; s++) {
@@ -543,20 +534,6 @@ static int share_journal(sweep_cli *s, const cli_case_args *a, gd_run_dir *out, 
     return ok;
 }
 
-/* SIGINT and SIGTERM stop the sweep after the running points (the previous handlers saved). */
-static void catch_signals(struct sigaction *old_int, struct sigaction *old_term)
-{
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESTART;
-    sigaction(SIGINT, &sa, old_int);
-    sigaction(SIGTERM, &sa, old_term);
-    if (old_int->sa_handler == SIG_IGN) /* started in the background by a shell: leave it so */
-        sigaction(SIGINT, old_int, NULL);
-}
-
 /* Under MPI after this rank's points (status st): the other ranks report to rank 0, which
  * journals their records until every rank is done. */
 static void gather_ranks(sweep_cli *s, gd_status st, const gd_error *err)
@@ -591,12 +568,13 @@ static void gather_ranks(sweep_cli *s, gd_status st, const gd_error *err)
 static int conclude(sweep_cli *s, int pending, gd_status st, const gd_error *err)
 {
     const gd_sweep_plan *plan = s->p;
-    if (g_signal || st == GD_ERR_INTERRUPTED || s->remote_interrupted) {
-        fprintf(stderr, "geardyn: sweep interrupted%s: %d of %d points done and kept in %s; run the same "
+    int sig = cli_signal_caught();
+    if (sig || st == GD_ERR_INTERRUPTED || s->remote_interrupted) {
+        fprintf(stderr, "geardyn: sweep interrupted%s%s%s: %d of %d points done and kept in %s; run the same "
                         "command with --resume to finish it\n",
-                g_signal == SIGINT ? " (SIGINT)" : g_signal == SIGTERM ? " (SIGTERM)" : "", plan->nslots - pending,
+                sig ? " (" : "", sig ? cli_signal_name(sig) : "", sig ? ")" : "", plan->nslots - pending,
                 plan->nslots, s->journal);
-        return g_signal ? 128 + g_signal : 1;
+        return sig ? 128 + sig : 1;
     }
     if (st != GD_OK || s->remote_failed) {
         fprintf(stderr, "geardyn: %s; %d of %d points done and kept: run again with --resume\n",
@@ -608,7 +586,7 @@ static int conclude(sweep_cli *s, int pending, gd_status st, const gd_error *err
 }
 
 /* Once the points exist: rank 0 prepares the directory and the journal (and reads it back with
- * --resume), the others get what it read; signals are caught and the clock starts. */
+ * --resume), the others get what it read; the clock starts. */
 static gd_status on_start(void *user, const gd_sweep_plan *p, gd_sweep_point *pts, gd_run_dir *out, gd_error *err)
 {
     sweep_cli *s = user;
@@ -621,21 +599,18 @@ static gd_status on_start(void *user, const gd_sweep_plan *p, gd_sweep_point *pt
     }
     s->done = s->done_at_start = p->nslots - gd_sweep_pending(p, pts);
     s->progress = s->rank == 0 && !s->a->quiet && isatty(2);
-    catch_signals(&s->old_int, &s->old_term);
     s->t0 = now();
     progress_line(s, 0);
     return GD_OK;
 }
 
-/* After this rank's points: the ranks gathered, the signals restored. The files are written (the
+/* After this rank's points: the ranks gathered. The files are written (the
  * row goes on) only on rank 0 with every point done; otherwise the exit status is decided here. */
 static gd_status on_end(void *user, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_status st, gd_error *err)
 {
     sweep_cli *s = user;
     gather_ranks(s, st, err);
     s->wall = now() - s->t0;
-    sigaction(SIGINT, &s->old_int, NULL);
-    sigaction(SIGTERM, &s->old_term, NULL);
     s->decided = 1;
     if (s->rank != 0)
         return GD_ERR_INTERRUPTED; /* rank 0 writes; the exit status comes from it */
@@ -681,19 +656,16 @@ int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
     s.rank = cli_mpi_rank();
     s.size = cli_mpi_size();
     s.fd = -1;
-    s.dir_fd = -1;
     pthread_mutex_init(&s.io, NULL);
     sweep_env(&s, a, &env);
     s.threads = cli_threads(env.threads);
     gd_error err = {0};
     gd_status st = gd_analysis_run_in(gd_analysis_find(GD_ANALYSIS_SWEEP), c, &env, dir, &err);
-    int rc = s.decided ? s.rc : st == GD_OK ? 0 : cli_fail(&err);
+    int rc = s.decided ? s.rc : st == GD_OK ? 0 : cli_signal_caught() ? cli_interrupted(dir) : cli_fail(&err);
     if (s.size > 1)
         rc = cli_mpi_bcast_int(rc);
     if (s.fd >= 0)
         close(s.fd);
-    if (s.dir_fd >= 0)
-        close(s.dir_fd); /* and its lock */
     pthread_mutex_destroy(&s.io);
     free(s.text);
     return rc;

@@ -60,7 +60,7 @@ void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *resu
 {
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_path(out), c, result, &perr);
+        gd_status pst = draw(gd_run_dir_stage(out), c, result, &perr);
         static const char *pics[] = {"contact_pattern.png", "contact_pattern.svg", "gte.png", "gte.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 4, out);
     }

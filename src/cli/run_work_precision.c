@@ -265,7 +265,7 @@ void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void 
     const gd_workprec_outcome *r = result;
     if (gd_gnuplot_wanted(c->plots, note)) {
         gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_path(out), c, &r->res, &perr);
+        gd_status pst = draw(gd_run_dir_stage(out), c, &r->res, &perr);
         static const char *pics[] = {"work_precision.png", "work_precision.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 2, out);
     }

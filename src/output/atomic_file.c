@@ -19,26 +19,45 @@ static gd_status mkdir_failed(const char *path, int e, gd_error *err)
     return gd_error_set(err, GD_ERR_IO, "%s: cannot create directory: %s", path, strerror(e));
 }
 
+/* mkdir -p; on a failure the directories this call made are removed again (deepest first), so that
+ * a path that fails further on (NEW/../FILE/x) leaves nothing. */
 gd_status gd_mkdir_p(const char *dir, gd_error *err)
 {
     char buf[1200];
     if (strlen(dir) >= sizeof buf)
         return mkdir_failed(dir, ENAMETOOLONG, err);
     snprintf(buf, sizeof buf, "%s", dir);
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/')
+    char failed[1200] = "";
+    size_t made[64];
+    int nmade = 0, e = 0;
+    for (char *p = buf + 1;; p++) {
+        if (*p && *p != '/')
             continue;
+        char c = *p;
         *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-            return mkdir_failed(buf, errno, err);
-        *p = '/';
+        if (mkdir(buf, 0777) == 0) {
+            if (nmade < 64)
+                made[nmade++] = (size_t)(p - buf);
+        } else if (errno != EEXIST) {
+            e = errno;
+            snprintf(failed, sizeof failed, "%s", buf);
+        }
+        *p = c;
+        if (e || !c)
+            break;
     }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return mkdir_failed(buf, errno, err);
     struct stat sb = {0};
-    if (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))
-        return mkdir_failed(buf, sb.st_mode ? EEXIST : errno, err);
-    return GD_OK;
+    if (!e && (stat(buf, &sb) != 0 || !S_ISDIR(sb.st_mode))) {
+        e = sb.st_mode ? EEXIST : errno;
+        snprintf(failed, sizeof failed, "%s", buf);
+    }
+    if (!e)
+        return GD_OK;
+    for (int i = nmade - 1; i >= 0; i--) {
+        buf[made[i]] = '\0';
+        rmdir(buf);
+    }
+    return mkdir_failed(failed, e, err);
 }
 
 gd_status gd_atomic_open(gd_atomic_file *f, const char *dir, const char *name, gd_error *err)

@@ -120,6 +120,10 @@ GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c,
         env->pictures(env->user, c, res, out);
     if (st == GD_OK)
         st = a->summary(c, res, out, err);
+    if (st == GD_OK && env && env->should_stop && env->should_stop(env->user))
+        st = gd_error_set(err, GD_ERR_INTERRUPTED, "%s: interrupted: nothing published", dir);
+    if (st == GD_OK)
+        st = gd_run_dir_publish(out, err);
     if (st == GD_OK && env && env->done)
         env->done(env->user, c, res, out);
     if (res)

@@ -145,9 +145,11 @@ static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const 
         quiet.threads = env->threads;
         quiet.pictures = env->pictures;
     }
-    char sdir[GD_PATH_MAX + 32], name[64];
-    snprintf(sdir, sizeof sdir, "%s/%s", gd_run_dir_path(out), sub);
-    st = gd_analysis_run_in(gd_analysis_find(analysis), &t, &quiet, sdir, err);
+    char sdir[GD_PATH_MAX + 64], name[64];
+    st = gd_run_dir_make(out, err); /* the sub-directory is made in out's stage */
+    snprintf(sdir, sizeof sdir, "%s/%s", gd_run_dir_stage(out), sub);
+    if (st == GD_OK)
+        st = gd_analysis_run_in(gd_analysis_find(analysis), &t, &quiet, sdir, err);
     gd_case_free(&t);
     snprintf(name, sizeof name, "%s/", sub);
     return st == GD_OK ? gd_run_dir_add(out, name, err) : st;

@@ -1,0 +1,264 @@
+#!/usr/bin/env python3
+"""Fault injection without privileges: a full disk (RLIMIT_FSIZE, SIGXFSZ ignored) at several
+sizes and SIGINT / SIGTERM / SIGHUP at several moments of a response run, a sweep and an
+optimisation, and SIGKILL then --resume for the sweep. Each trial runs into a directory that holds
+a previous result and proves that afterwards it holds either that result unchanged (sha256 of
+every file) or a whole new set (exactly the files its summary.json lists, every picture whole),
+and no temporaries (but the sweep's journal after an interrupted sweep). Also: a second run into
+a locked directory, a second signal, what a killed run left, the previous set's files a new set
+lacks. TAP; python3 standard library only.
+
+  test_faults.py        (GEARDYN names the executable, GEARDYN_SOURCE the source tree)
+"""
+import hashlib
+import json
+import os
+import resource
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+G = os.environ.get('GEARDYN', 'geardyn')
+SRC = os.environ.get('GEARDYN_SOURCE', '.')
+n_tap = 0
+failed = 0
+outcomes = {}
+
+
+def ok(cond, msg):
+    global n_tap, failed
+    n_tap += 1
+    if not cond:
+        failed += 1
+    print(('ok' if cond else 'not ok') + ' %d - %s' % (n_tap, msg))
+    sys.stdout.flush()
+
+
+SWEEP = """[scene]
+analysis = sweep
+model = torsional
+error_excitation = on
+[gear]
+helix_angle_deg = 0
+equivalent_mass_kg = 1
+[operating]
+torque_nm = 14.095389311789
+[clearance]
+backlash_um = 20
+[excitation]
+stiffness = harmonic
+mesh_stiffness_n_per_m = 1e8
+stiffness_harmonics = 0.2
+ste_amplitude_um = 1
+ste_phase_deg = 90
+[damping]
+mesh_damping_ratio = 0.05
+[solver]
+characteristic_length_um = 10
+[run]
+transient_periods = 200
+record_periods = 30
+[output]
+plots = on
+[sweep]
+parameter = operating.speed_rpm
+from = 1591.5
+to = 4774.6
+points = 80
+mode = continuation
+direction = both
+"""
+
+
+def state(d):
+    """sha256 of every file under d (relative names), '.'-names at the top apart."""
+    files, dots = {}, []
+    if not os.path.isdir(d):
+        return files, dots
+    for name in os.listdir(d):
+        if name.startswith('.'):
+            dots.append(name)
+    for root, dirs, names in os.walk(d):
+        rel = os.path.relpath(root, d)
+        if rel != '.' and rel.split(os.sep)[0].startswith('.'):
+            continue
+        for n in names:
+            p = os.path.join(root, n)
+            r = os.path.normpath(os.path.join(rel, n))
+            if r.startswith('.'):
+                continue
+            with open(p, 'rb') as f:
+                files[r] = hashlib.sha256(f.read()).hexdigest()
+    return files, sorted(dots)
+
+
+def picture_whole(p):
+    with open(p, 'rb') as f:
+        b = f.read()
+    if p.endswith('.png'):
+        return b[:8] == b'\x89PNG\r\n\x1a\n' and b[-12:] == b'\0\0\0\0IEND\xaeB`\x82'
+    return b.rstrip().endswith(b'</svg>')
+
+
+def whole_set(d):
+    """The top-level names are exactly summary.json's list (sub-directories likewise), pictures whole."""
+    try:
+        listed = json.load(open(os.path.join(d, 'summary.json')))['files']
+    except (OSError, ValueError, KeyError):
+        return False
+    have = sorted(n for n in os.listdir(d) if not n.startswith('.'))
+    want = sorted(n.rstrip('/') for n in listed)
+    if have != want:
+        return False
+    for n in listed:
+        p = os.path.join(d, n.rstrip('/'))
+        if n.endswith('/') and not whole_set(p):
+            return False
+        if p.endswith(('.png', '.svg')) and not picture_whole(p):
+            return False
+    return True
+
+
+def fsize(limit):
+    def pre():
+        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
+        resource.setrlimit(resource.RLIMIT_FSIZE, (limit, limit))
+    return pre
+
+
+def run(args, pre=None, sig=None, at=0.0, second=False):
+    p = subprocess.Popen([G, 'run'] + args, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         preexec_fn=pre)
+    if sig:
+        time.sleep(at)
+        try:
+            p.send_signal(sig)
+            if second:
+                time.sleep(0.005)
+                p.send_signal(sig)
+        except ProcessLookupError:
+            pass
+    err = p.communicate(timeout=600)[1].decode('utf-8', 'replace')
+    return p.returncode, err
+
+
+def trial(kind, d, args, what, before, pre=None, sig=None, at=0.0, journal_ok=False):
+    rc, err = run(args, pre, sig, at)
+    files, dots = state(d)
+    allowed = ['.sweep.journal'] if journal_ok and rc != 0 else []
+    clean = all(x in allowed for x in dots)
+    if rc == 0:
+        outcome = 'new'
+        good = whole_set(d) and clean
+    else:
+        outcome = 'kept'
+        good = files == before and clean
+        if sig and sig != signal.SIGKILL:
+            good = good and rc == 128 + sig and ('interrupted' in err)
+        elif not sig:
+            good = good and rc == 1
+    outcomes.setdefault(kind, {}).setdefault(outcome, 0)
+    outcomes[kind][outcome] += 1
+    ok(good, '%s, %s: exit %d, %s (%d files, left %s) %s' % (kind, what, rc, 'whole new set' if rc == 0
+       else 'previous result unchanged', len(files), dots, err.strip().splitlines()[-1:] if rc else ''))
+    return rc, files
+
+
+def timed(args):
+    t0 = time.monotonic()
+    rc, err = run(args)
+    return rc, time.monotonic() - t0, err
+
+
+def series(kind, d, args, sizes, moments, journal_ok=False):
+    rc, dur, err = timed(args)
+    ok(rc == 0 and whole_set(d), '%s: the previous result (%.2f s) %s' % (kind, dur, err.strip()[-200:]))
+    before, _ = state(d)
+    for sz in sizes:
+        rc, files = trial(kind, d, args, 'file size limit %d bytes' % sz, before, pre=fsize(sz),
+                          journal_ok=journal_ok)
+        before = files
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        for frac in moments:
+            rc, files = trial(kind, d, args, '%s at %.0f%% of its time' % (sig.name, 100 * frac), before, sig=sig,
+                              at=frac * dur, journal_ok=journal_ok)
+            before = files
+    return dur
+
+
+def main():
+    tmp = tempfile.mkdtemp(prefix='geardyn-faults-')
+    quick = os.path.join(SRC, 'cases', 'quickstart.ini')
+    # response: small tables, so that a limit between the tables and the pictures truncates a picture
+    r = os.path.join(tmp, 'response')
+    rargs = [quick, '--out', r, '--quiet', '--set', 'run.record_periods=5', '--set', 'output.event_log=off']
+    series('response', r, rargs, [1000, 40000, 90000, 150000], [0.1, 0.5, 0.9])
+
+    s = os.path.join(tmp, 'sweep')
+    sc = os.path.join(tmp, 'ks.ini')
+    with open(sc, 'w') as f:
+        f.write(SWEEP)
+    sargs = [sc, '--out', s, '--quiet', '--threads', '2']
+    dur = series('sweep', s, sargs, [300, 5000, 60000], [0.2, 0.6, 0.97], journal_ok=True)
+    before, _ = state(s)
+    for frac in (0.3, 0.7):
+        rc, err = run(sargs, sig=signal.SIGKILL, at=frac * dur)
+        files, dots = state(s)
+        ok((rc == -9 and files == before) or (rc == 0 and whole_set(s)), 'sweep, SIGKILL at %.0f%%: exit %d, '
+           '%s, left %s' % (100 * frac, rc, 'whole new set' if rc == 0 else 'previous result unchanged', dots))
+        rc, err = run(sargs + ['--resume'])
+        files, dots = state(s)
+        ok(rc == 0 and whole_set(s) and dots == [], 'sweep, --resume after SIGKILL: exit %d, whole new set, '
+           'left %s' % (rc, dots))
+        outcomes['sweep']['kill+resume'] = outcomes['sweep'].get('kill+resume', 0) + 1
+        before = files
+
+    o = os.path.join(tmp, 'optimize')
+    oargs = [os.path.join(SRC, 'cases', 'paper', 'optimize-alo.ini'), '--out', o, '--quiet', '--set',
+             'optimize.iterations=2', '--set', 'optimize.population=4', '--set', 'solver.ltca_positions_per_cycle=8']
+    series('optimize', o, oargs, [500, 5000, 60000], [0.2, 0.6, 0.95])
+
+    # a second run into a directory being written is refused, the first one ends well
+    p = subprocess.Popen([G, 'run'] + rargs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    time.sleep(0.3)
+    rc, err = run(rargs)
+    p.wait()
+    ok(rc == 1 and 'another geardyn run is writing into this directory' in err and p.returncode == 0
+       and whole_set(r), 'a second run into a locked directory: exit %d, %s' % (rc, err.strip()))
+    # a second signal ends the run at once (the optimisation asks for signals only between its
+    # stages); what it left is removed by the next run
+    before, _ = state(o)
+    rc, err = run(oargs, sig=signal.SIGTERM, at=0.3, second=True)
+    ok(rc == 143 and 'second signal' in err and state(o)[0] == before,
+       'a second SIGTERM: exit %d, previous result unchanged: %s' % (rc, err.strip().splitlines()[-1:]))
+    rc, err = run(oargs)
+    ok(rc == 0 and state(o)[1] == [] and whole_set(o), 'the next run removes what it left (left %s)' % state(o)[1])
+    # a killed run's stage and gnuplot script, and a journal's temporary, are removed by the next run
+    os.mkdir(os.path.join(r, '.staging'))
+    open(os.path.join(r, '.staging', 'time_history.csv'), 'w').close()
+    open(os.path.join(r, '.plot-abcdef'), 'w').close()
+    rc, err = run(rargs)
+    ok(rc == 0 and state(r)[1] == [] and whole_set(r), 'a stale stage and .plot- file are removed by the next '
+       'run (left %s)' % state(r)[1])
+    # the files of the previous set that the new one lacks go (the local analysis's tables)
+    rc, err = run(rargs + ['--set', 'output.plots=off', '--set', 'output.time_history=off'])
+    ok(rc == 0 and whole_set(r) and not os.path.exists(os.path.join(r, 'time_history.csv'))
+       and not os.path.exists(os.path.join(r, 'response.png')),
+       'a new set without time_history.csv and pictures: the previous ones are gone (%s)' %
+       sorted(os.listdir(r)))
+    # an output path that fails further on (a file in the way) leaves none of the directories made
+    open(os.path.join(tmp, 'afile'), 'w').close()
+    bad = os.path.join(tmp, 'made', '..', 'afile', 'z')
+    rc, err = run([quick, '--out', bad, '--quiet'])
+    ok(rc == 2 and not os.path.exists(os.path.join(tmp, 'made')) and 'cannot be a directory' in err,
+       'an output path through a file: exit %d, no leading directory left: %s' % (rc, err.strip()))
+    print('# outcomes: ' + json.dumps(outcomes, sort_keys=True))
+    print('1..%d' % n_tap)
+    subprocess.run(['rm', '-rf', tmp])
+    return 1 if failed else 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
