@@ -269,6 +269,7 @@ static int make_beside(gd_stage *s)
     }
     close(m);
     snprintf(s->path, sizeof s->path, "%s/%s", s->parent, s->sname);
+    flock(s->stage_fd, LOCK_EX | LOCK_NB); /* new: nobody else has it; DIR after the exchange */
     return 1;
 }
 
