@@ -11,9 +11,10 @@ static const cli_help commands[] = {
      "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers, "
      "work-precision or continuation. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
-     "The run locks DIR (a second run into it is refused), writes its files into DIR/.staging "
-     "and moves them into DIR together when the whole run has succeeded, so a failed or "
-     "interrupted run (SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
+     "The run locks DIR (a second run into it is refused), writes its files into a stage beside "
+     "it (.NAME.geardyn-stage in DIR's parent) and exchanges the stage and DIR in one step when "
+     "the whole run has succeeded, keeping the other files of DIR; a failed or interrupted run "
+     "(SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
      "Pictures are drawn with gnuplot when it is installed.\n\n"
      "A sweep started by mpirun -n N geardyn run CASE (geardyn built with -Dmpi=enabled) spreads "
      "its points over the N ranks; rank 0 writes the same files as a serial run.",

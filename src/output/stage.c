@@ -188,6 +188,15 @@ static int carry_over(int from, int to, int link)
     return failed;
 }
 
+/* The path of the stage beside DIR (".NAME.geardyn-stage" for a DIR given as "NAME"). */
+static void beside_path(const gd_stage *s, char *buf, size_t n)
+{
+    if (strcmp(s->parent, ".") == 0)
+        snprintf(buf, n, "%s", s->sname);
+    else
+        snprintf(buf, n, "%s/%s", s->parent, s->sname);
+}
+
 /* What a killed run left in the parent and in DIR (the lock is held: no run is using them). A
  * tree at the stage's name without the marker is the previous result a killed run had swapped
  * out: the user's entries still in it go back to DIR before it is removed. */
@@ -198,8 +207,8 @@ static void remove_stale(gd_stage *s)
         if (fd >= 0) {
             int kept = !exists_at(fd, MARKER) && carry_over(fd, s->dir_fd, 0) != 0;
             close(fd);
-            char p[sizeof s->parent + sizeof s->sname + 2];
-            snprintf(p, sizeof p, "%s/%s", s->parent, s->sname);
+            char p[sizeof s->path];
+            beside_path(s, p, sizeof p);
             if (!kept)
                 remove_tree(p);
         }
@@ -263,12 +272,12 @@ static int make_beside(gd_stage *s)
         if (s->stage_fd >= 0)
             close(s->stage_fd);
         s->stage_fd = -1;
-        snprintf(s->path, sizeof s->path, "%s/%s", s->parent, s->sname);
+        beside_path(s, s->path, sizeof s->path);
         remove_tree(s->path);
         return 0;
     }
     close(m);
-    snprintf(s->path, sizeof s->path, "%s/%s", s->parent, s->sname);
+    beside_path(s, s->path, sizeof s->path);
     flock(s->stage_fd, LOCK_EX | LOCK_NB); /* new: nobody else has it; DIR after the exchange */
     return 1;
 }
