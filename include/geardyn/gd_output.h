@@ -15,13 +15,17 @@ extern "C" {
 /* The output directory of a run. Every file of a run is opened and committed through it: a file
  * is written under a temporary name and renamed on commit (a reader never sees a half-written
  * file), and the names committed, in order, with those added by gd_run_dir_add (pictures drawn
- * into the stage by other means), are the list summary.json gives. The directory is made
- * (mkdir -p) and locked (flock; a second run into it is refused) at the first file; the files
- * are written into its stage (DIR/.staging) and moved into DIR together by
- * gd_run_dir_publish: closing an unpublished run removes the stage and leaves DIR as it was.
- * Publishing a set with a summary.json first removes the previous summary.json and the files it
- * lists that the new set does not have. A name that starts with '.' is a working file of the run
- * (the sweep's journal), written in DIR itself, and is not listed. */
+ * into the stage by other means), are the list summary.json gives. The directory DIR is made
+ * (mkdir -p) and locked (flock; a second run into it is refused) at the first file, and the
+ * files are written into its stage, PARENT/.NAME.geardyn-stage beside DIR. gd_run_dir_publish
+ * exchanges the stage and DIR in one step (renameat2 RENAME_EXCHANGE) when the set has a
+ * summary.json: the previous result's files the new set lacks are gone, DIR's other entries (a
+ * user's files, the sweep's journal) stay. Where an exchange cannot be (gd_run_dir_fallback says
+ * why) the stage is DIR/.staging and the files are moved in one by one, summary.json last, after
+ * the previous summary.json and its files the new set lacks are removed; a set without
+ * summary.json (an export) is always moved in that way and removes nothing. Closing an
+ * unpublished run removes the stage and leaves DIR as it was. A name that starts with '.' is a
+ * working file of the run (the sweep's journal), written in DIR itself, and is not listed. */
 typedef struct gd_run_dir gd_run_dir;
 
 GD_API gd_status gd_run_dir_open(const char *dir, gd_run_dir **out, gd_error *err);
@@ -39,8 +43,11 @@ GD_API gd_status gd_run_dir_commit(gd_run_dir *d, FILE *fp, gd_error *err);
 GD_API void gd_run_dir_discard(gd_run_dir *d, FILE *fp);
 /* A file written into the stage by other means joins the list. */
 GD_API gd_status gd_run_dir_add(gd_run_dir *d, const char *name, gd_error *err);
-/* Move the listed files of the stage into the directory (summary.json last). */
+/* Publish the listed files of the stage (see above). */
 GD_API gd_status gd_run_dir_publish(gd_run_dir *d, gd_error *err);
+/* NULL when the set is published in one step (or nothing is made yet), else why its files are
+ * moved in one by one ("it is the working directory", "it is a mount point", ...). */
+GD_API const char *gd_run_dir_fallback(const gd_run_dir *d);
 /* The files of the run so far, in order (valid until the next call on d). */
 GD_API const char *const *gd_run_dir_files(const gd_run_dir *d, int *n);
 

@@ -67,6 +67,9 @@ typedef struct cli_row {
 /* The environment of a run: *p (its user) from the arguments, the command line's hooks of every
  * analysis (progress, pictures, the lines at the end). */
 void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env);
+/* Unless quiet, the note that DIR received its files one by one, not in one step, and why
+ * (gd_run_dir_fallback, docs/robustness.md). */
+void cli_publish_note(const cli_case_args *a, const gd_run_dir *out);
 
 int cli_response_progress(void *user, long done, long total);
 void cli_response_after_run(const cli_progress *p, gd_status st);

@@ -50,8 +50,17 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
     const cli_row *r = cli_row_for(c->analysis);
     if (p->note && !p->args->quiet)
         fprintf(stderr, "geardyn: note: %s\n", p->note);
+    cli_publish_note(p->args, out);
     if (r && r->report)
         r->report(p->args, gd_run_dir_path(out), c, result);
+}
+
+void cli_publish_note(const cli_case_args *a, const gd_run_dir *out)
+{
+    const char *why = gd_run_dir_fallback(out);
+    if (why && !a->quiet)
+        fprintf(stderr, "geardyn: note: %s: files moved in one by one, not published in one step: %s\n",
+                gd_run_dir_path(out), why);
 }
 
 void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)

@@ -458,6 +458,7 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
     unlink(s->journal);
     if (s->base.note && !a->quiet)
         fprintf(stderr, "geardyn: note: %s\n", s->base.note);
+    cli_publish_note(a, out);
     int failed = 0;
     char counts[512] = "";
     const char *seen[24];

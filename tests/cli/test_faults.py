@@ -6,7 +6,8 @@ a previous result and proves that afterwards it holds either that result unchang
 every file) or a whole new set (exactly the files its summary.json lists, every picture whole),
 and no temporaries (but the sweep's journal after an interrupted sweep). Also: a second run into
 a locked directory, a second signal, what a killed run left, the previous set's files a new set
-lacks. TAP; python3 standard library only.
+lacks. No stage is left beside the directory (PARENT/.NAME.geardyn-stage). TAP; python3 standard
+library only.
 
   test_faults.py        (GEARDYN names the executable, GEARDYN_SOURCE the source tree)
 """
@@ -94,6 +95,12 @@ def state(d):
     return files, sorted(dots)
 
 
+def beside(d):
+    """Stages left beside d (PARENT/.NAME.geardyn-stage)."""
+    parent, name = os.path.split(d)
+    return sorted(n for n in os.listdir(parent) if n.startswith('.' + name + '.'))
+
+
 def picture_whole(p):
     with open(p, 'rb') as f:
         b = f.read()
@@ -148,7 +155,7 @@ def trial(kind, d, args, what, before, pre=None, sig=None, at=0.0, journal_ok=Fa
     rc, err = run(args, pre, sig, at)
     files, dots = state(d)
     allowed = ['.sweep.journal'] if journal_ok and rc != 0 else []
-    clean = all(x in allowed for x in dots)
+    clean = all(x in allowed for x in dots) and beside(d) == []
     if rc == 0:
         outcome = 'new'
         good = whole_set(d) and clean
@@ -162,7 +169,7 @@ def trial(kind, d, args, what, before, pre=None, sig=None, at=0.0, journal_ok=Fa
     outcomes.setdefault(kind, {}).setdefault(outcome, 0)
     outcomes[kind][outcome] += 1
     ok(good, '%s, %s: exit %d, %s (%d files, left %s) %s' % (kind, what, rc, 'whole new set' if rc == 0
-       else 'previous result unchanged', len(files), dots, err.strip().splitlines()[-1:] if rc else ''))
+       else 'previous result unchanged', len(files), dots + beside(d), err.strip().splitlines()[-1:] if rc else ''))
     return rc, files
 
 
@@ -210,8 +217,8 @@ def main():
            '%s, left %s' % (100 * frac, rc, 'whole new set' if rc == 0 else 'previous result unchanged', dots))
         rc, err = run(sargs + ['--resume'])
         files, dots = state(s)
-        ok(rc == 0 and whole_set(s) and dots == [], 'sweep, --resume after SIGKILL: exit %d, whole new set, '
-           'left %s' % (rc, dots))
+        ok(rc == 0 and whole_set(s) and dots == [] and beside(s) == [], 'sweep, --resume after SIGKILL: exit %d, '
+           'whole new set, left %s' % (rc, dots + beside(s)))
         outcomes['sweep']['kill+resume'] = outcomes['sweep'].get('kill+resume', 0) + 1
         before = files
 
@@ -234,14 +241,20 @@ def main():
     ok(rc == 143 and 'second signal' in err and state(o)[0] == before,
        'a second SIGTERM: exit %d, previous result unchanged: %s' % (rc, err.strip().splitlines()[-1:]))
     rc, err = run(oargs)
-    ok(rc == 0 and state(o)[1] == [] and whole_set(o), 'the next run removes what it left (left %s)' % state(o)[1])
-    # a killed run's stage and gnuplot script, and a journal's temporary, are removed by the next run
+    ok(rc == 0 and state(o)[1] == [] and beside(o) == [] and whole_set(o),
+       'the next run removes what it left (left %s)' % (state(o)[1] + beside(o)))
+    # a killed run's stages (beside DIR, and DIR/.staging where DIR cannot be exchanged) and
+    # gnuplot script are removed by the next run
+    stage = os.path.join(tmp, '.response.geardyn-stage')
+    os.mkdir(stage)
+    open(os.path.join(stage, '.geardyn-unpublished'), 'w').close()
+    open(os.path.join(stage, 'time_history.csv'), 'w').close()
     os.mkdir(os.path.join(r, '.staging'))
     open(os.path.join(r, '.staging', 'time_history.csv'), 'w').close()
     open(os.path.join(r, '.plot-abcdef'), 'w').close()
     rc, err = run(rargs)
-    ok(rc == 0 and state(r)[1] == [] and whole_set(r), 'a stale stage and .plot- file are removed by the next '
-       'run (left %s)' % state(r)[1])
+    ok(rc == 0 and state(r)[1] == [] and beside(r) == [] and whole_set(r), 'stale stages and a .plot- file are '
+       'removed by the next run (left %s)' % (state(r)[1] + beside(r)))
     # the files of the previous set that the new one lacks go (the local analysis's tables)
     rc, err = run(rargs + ['--set', 'output.plots=off', '--set', 'output.time_history=off'])
     ok(rc == 0 and whole_set(r) and not os.path.exists(os.path.join(r, 'time_history.csv'))
