@@ -1,5 +1,5 @@
 /* A sweep's final states (states.csv): written with the sweep's tables, one row per point with the
- * state the point ended in (at the end of its recorded window, a whole number of mesh periods
+ * swept values and the state (%.17g, so that they read back exactly) the point ended in (at the end of its recorded window, a whole number of mesh periods
  * from t = 0, so at mesh phase 0), and read back as the starting orbit of a continuation
  * (continuation.start = sweep, docs/continuation.md section 7) after checking that the sweep is
  * finished, in the continued key, and of this case's model. */
@@ -44,9 +44,9 @@ gd_status gd_sweep_write_states(gd_run_dir *d, const gd_sweep_plan *p, const gd_
     for (int s = 0; s < p->nslots; s++) {
         const gd_sweep_point *pt = &pts[s];
         int done = pt->status == GD_POINT_DONE;
-        fprintf(fp, "%.12g,%s", pt->value[0], gd_sweep_branch_name(pt->branch));
+        fprintf(fp, "%.17g,%s", pt->value[0], gd_sweep_branch_name(pt->branch));
         if (p->naxes > 1)
-            fprintf(fp, ",%.12g", pt->value[1]);
+            fprintf(fp, ",%.17g", pt->value[1]);
         fprintf(fp, ",%d,%s", pt->period_n, done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
         for (int j = 0; j < p->n; j++) {
             if (done)
@@ -96,6 +96,18 @@ static int same_value(json_t *a, json_t *b)
     return json_equal(a, b);
 }
 
+/* A value of summary.json as text: numbers as %.10g, the rest as JSON (malloc'd). */
+static char *value_text(json_t *v)
+{
+    if (json_is_number(v)) {
+        char *t = malloc(32);
+        if (t)
+            snprintf(t, 32, "%.10g", json_number_value(v));
+        return t;
+    }
+    return v ? json_dumps(v, JSON_ENCODE_ANY) : NULL;
+}
+
 static int derived(json_t *e)
 {
     const char *s = json_string_value(json_object_get(e, "source"));
@@ -121,8 +133,8 @@ static gd_status same_model(const gd_case *c, json_t *sweep_case, const char *di
         if (b && (derived(a) || derived(b)))
             continue;
         if (!b || !same_value(json_object_get(a, "value"), json_object_get(b, "value"))) {
-            char *va = json_dumps(json_object_get(a, "value"), JSON_ENCODE_ANY | JSON_REAL_PRECISION(12));
-            char *vb = b ? json_dumps(json_object_get(b, "value"), JSON_ENCODE_ANY | JSON_REAL_PRECISION(12)) : NULL;
+            char *va = value_text(json_object_get(a, "value"));
+            char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
             st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.start_sweep: the sweep in %s is of another model: "
                               "%s = %s there, %s here (valid: a sweep of this case, which may differ in %s only)",
                               WHERE("start_sweep"), dir, name, vb ? vb : "(absent)", va ? va : "?",
