@@ -305,6 +305,7 @@ static gd_status grow(gd_contin_result *res, gd_error *err)
     return GD_OK;
 }
 
+/* A note of summary.json (at most 8): fmt holds one %.10g (value) and one %s (why). */
 static void note(gd_contin_result *res, const char *fmt, double value, const char *why)
 {
     if (res->nnotes < (int)(sizeof res->notes / sizeof res->notes[0]))
@@ -372,15 +373,23 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double
     co.direction = dir;
     co.p_min = lo;
     co.p_max = hi;
-    if ((st = gd_continue(gd_model_at_case_key, &r->cp, &r->o, &co, start, &b->br, err)) != GD_OK)
-        return st;
-    res->nbranches++;
+    st = gd_continue(gd_model_at_case_key, &r->cp, &r->o, &co, start, &b->br, err);
     res->corrections += b->br.corrections;
     res->newton_iterations += b->br.newton_iterations;
-    if (isfinite(vertex))
-        end_at_vertex(b, vertex, tol);
-    end_reason(res, &co, b, vertex);
-    return measure_branch(r, b, err);
+    if (st == GD_OK) {
+        if (isfinite(vertex))
+            end_at_vertex(b, vertex, tol);
+        end_reason(res, &co, b, vertex);
+        st = measure_branch(r, b, err);
+    }
+    if (st != GD_OK) { /* no branch: its memory goes (a switched one's failure is a note) */
+        gd_branch_free(&b->br);
+        free(b->meas);
+        free(b->bif_meas);
+        return st;
+    }
+    res->nbranches++;
+    return GD_OK;
 }
 
 /* The orbit of twice the period at the period doubling bf of branch ib, followed both ways: away
