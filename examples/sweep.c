@@ -4,8 +4,8 @@
  *
  * The case must be a sweep (`[scene] analysis = sweep`, a [sweep] section). The program finds the
  * row of the case's analysis in the library's table (gd_analysis_find) and runs all of it in
- * OUT_DIR with gd_analysis_run_in: the points, then sweep.csv, bifurcation.csv and summary.json,
- * the tables `geardyn run CASE.ini --out OUT_DIR` writes (the command line adds, through hooks of
+ * OUT_DIR with gd_analysis_run_in: the points, then sweep.csv, bifurcation.csv, states.csv and
+ * summary.json, the tables `geardyn run CASE.ini --out OUT_DIR` writes (the command line adds, through hooks of
  * its own, the pictures drawn by gnuplot and the journal of --resume). What the caller wants to
  * see or steer goes through the hooks of a gd_run_env: here `sweep_point`, called as each point
  * finishes, counts them, and `done`, called with the result before it is freed, reads the

@@ -101,7 +101,7 @@ def sweep(exe, tmp):
            (speed, motion, regime, steps, r["motion"], r["impact_regime"], s["solver"]["steps"]))
     with open(os.path.join(out, "summary.json")) as f:
         files = json.load(f)["files"]
-    ok(sorted(files) == ["bifurcation.csv", "summary.json", "sweep.csv"] and files[-1] == "summary.json",
+    ok(sorted(files) == ["bifurcation.csv", "states.csv", "summary.json", "sweep.csv"] and files[-1] == "summary.json",
        "sweep: summary.json lists the sweep's tables, then itself: %s" % ", ".join(files))
 
 

@@ -42,7 +42,7 @@ typedef enum gd_tca_formulation { GD_TCA_SEPARATION = 0, GD_TCA_TANGENCY = 1, GD
 typedef enum gd_pinion_axial { GD_PINION_FLOATING = 0, GD_PINION_FIXED = 1 } gd_pinion_axial;
 /* [continuation] shooting, start and the response drawn */
 typedef enum gd_cont_shooting { GD_SHOOT_MULTIPLE = 0, GD_SHOOT_SINGLE = 1 } gd_cont_shooting;
-typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1 } gd_cont_start;
+typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1, GD_CONT_START_SWEEP = 2 } gd_cont_start;
 typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
     GD_CONT_RESP_POINCARE = 3
@@ -189,6 +189,9 @@ typedef struct gd_case {
     int cont_shooting;       /* gd_cont_shooting */
     int cont_start;          /* gd_cont_start */
     char cont_state[1024];   /* start = state: the dimensionless state, comma-separated */
+    char cont_start_sweep[GD_PATH_MAX]; /* start = sweep: a finished sweep's directory */
+    int cont_start_sweep_direction; /* gd_sweep_branch of the sweep's point: up, down, independent */
+    int cont_max_branches;   /* branches at most, the start's and the switched ones */
     int cont_branch_switching;
     char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
     int cont_response;       /* gd_cont_response */

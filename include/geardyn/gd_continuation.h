@@ -1,7 +1,7 @@
 /* The `continuation` analysis (docs/continuation.md): the periodic orbits of a case followed in one
  * numeric case key by pseudo-arclength continuation (gd_periodic.h), from the attractor after the
- * case's transient or from a given state, in one or both directions, with branch switching at
- * period doublings; every branch point with its Floquet multipliers and what one period of the
+ * case's transient, from a given state or from a finished sweep's point, in one or both
+ * directions, with branch switching at the period doublings of every branch; every branch point with its Floquet multipliers and what one period of the
  * orbit integrated with samples gives (RMS mesh acceleration, extremes of the mesh deflections).
  *
  * gd_contin_run computes (case -> result), gd_contin_result_free frees; the row `continuation` of
@@ -16,8 +16,6 @@
 extern "C" {
 #endif
 
-#define GD_CONTIN_MAX_BRANCHES 8
-
 /* What one period of a branch point's orbit gives (integrated with output.samples_per_period
  * samples per mesh period). */
 typedef struct gd_contin_measure {
@@ -30,7 +28,9 @@ typedef struct gd_contin_branch {
     int nper;                    /* mesh periods of its orbits */
     int direction;               /* +1: set out towards increasing parameter, -1 decreasing */
     int parent;                  /* the branch whose period doubling it was switched from, -1 for a start branch */
+    int at_doubling;             /* 1: it ends back at the period doubling it was born at (the way back) */
     gd_branch br;                /* points, bifurcations, end (gd_periodic.h); p = value / scale */
+    char end_reason[GD_ERROR_MSG_MAX + 256]; /* how it ended, the parameter in the key's unit (and p) */
     gd_contin_measure *meas;     /* one per point */
     gd_contin_measure *bif_meas; /* one per bifurcation */
 } gd_contin_branch;
@@ -45,9 +45,10 @@ typedef struct gd_contin_result {
     int nper_start;              /* the starting orbit's period */
     int period_found;            /* 1: nper_start found from the Poincare section after the transient */
     double start_value;          /* the parameter at the start, in the key's unit */
-    int nbranches;
-    gd_contin_branch branch[GD_CONTIN_MAX_BRANCHES];
-    char notes[4][GD_ERROR_MSG_MAX]; /* branch switchings that found no doubled orbit */
+    char start_source[GD_PATH_MAX + 96]; /* start = sweep: which point of which sweep ("" otherwise) */
+    int nbranches, branch_cap;   /* branches (at most continuation.max_branches) and the array's size */
+    gd_contin_branch *branch;    /* the start's branches (down before up), then those switched to, in order */
+    char notes[8][GD_ERROR_MSG_MAX]; /* branch switchings that found no doubled orbit or were beyond the bound */
     int nnotes;
     long corrections, newton_iterations;
     double cpu_s;
@@ -61,9 +62,20 @@ GD_API gd_status gd_contin_check_case(gd_case *c, gd_error *err);
  * (GD_ERR_INTERRUPTED). */
 typedef int (*gd_contin_progress_fn)(void *user, int branches_done, int branches_planned);
 
-/* Run the continuation of a resolved case into *res (free with gd_contin_result_free). */
-GD_API gd_status gd_contin_run(const gd_case *c, gd_contin_progress_fn progress, void *user, gd_contin_result *res,
-                               gd_error *err);
+/* A starting orbit given by the caller: its state at mesh phase 0 near the parameter value. */
+typedef struct gd_contin_start {
+    double value;                /* the parameter, in the key's unit, inside [from, to] */
+    int nper;                    /* mesh periods of the orbit (0: continuation.period, or 1) */
+    int n;                       /* the state's size: the model's */
+    double y[GD_MAX_STATE];      /* the dimensionless state at mesh phase 0 */
+    char source[GD_PATH_MAX + 96]; /* what it is, for summary.json ("sweep DIR, up, speed_rpm = 3000") */
+} gd_contin_start;
+
+/* Run the continuation of a resolved case into *res (free with gd_contin_result_free). start:
+ * NULL for start = attractor or state; required for start = sweep (the row `continuation` reads
+ * it from the sweep's states.csv), and used instead of the case's start when given. */
+GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *start, gd_contin_progress_fn progress,
+                               void *user, gd_contin_result *res, gd_error *err);
 GD_API void gd_contin_result_free(gd_contin_result *res);
 
 /* The parameter of a branch point or bifurcation in the key's unit. */

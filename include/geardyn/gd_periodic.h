@@ -127,6 +127,8 @@ typedef struct gd_branch {
     gd_bifurcation *bif;
     int end;                 /* gd_branch_end */
     char end_reason[GD_ERROR_MSG_MAX];
+    char end_detail[GD_ERROR_MSG_MAX]; /* why the corrector failed (no orbit at the bound, or at the smallest
+                                        * step): the solver's message, "" otherwise */
     long newton_iterations;  /* over all points, located bifurcations included */
     long corrections;        /* corrector runs (accepted, rejected, and the bisection's) */
 } gd_branch;

@@ -68,6 +68,7 @@ typedef struct gd_sweep_plan {
     int nresp;
     gd_sweep_response resp[GD_SWEEP_MAX_RESPONSES];
     int n, nclear, nmesh;    /* state size, clearances and meshes of the model */
+    char state_name[GD_MAX_STATE][16]; /* y1L, ..., y1L_dot: the columns of states.csv */
     long npoincare;          /* Poincare samples per point: record_periods + 1 */
     uint64_t fingerprint;    /* of every input that changes a result, and the version */
     int *slot_info;          /* 4 x nslots: chain, position in the chain, index along each axis */

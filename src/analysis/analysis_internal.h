@@ -18,6 +18,10 @@ int gd_local_add_poincare(gd_local *L, double x, double xdot);
 gd_status gd_local_spectrum(gd_local *L, double dt_s, gd_error *err);
 void gd_local_free(gd_local *L);
 
+/* The names of the state's components, as the tables name them: the degrees of freedom (y1L, ...),
+ * then their rates (y1L_dot, ...). */
+void gd_state_names(const gd_model *m, char name[][16]);
+
 /* ---- sweep ---- */
 /* Check the [sweep] keys of a resolved case (gd_case_resolve calls it for analysis =
  * sweep): the parameters name numeric keys, every value of the grid is inside the key's
@@ -36,6 +40,11 @@ gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_swe
                                       gd_modes *md0, gd_error *err);
 /* Responses of the plan at a Poincare point (t_s, y) of model m: out[nresp]. */
 void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, const double *y, double *out);
+
+/* ---- continuation ---- */
+/* The parameter's value at the starting orbit: continuation.start_value, else from with
+ * direction up, to with down, the middle with both. */
+double gd_contin_start_value(const gd_case *c);
 
 /* ---- work-precision ---- */
 /* The method families of the case's [workprecision] (families, root_finding_off): n <= max. */

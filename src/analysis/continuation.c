@@ -304,6 +304,7 @@ static gd_status end_on_bound(cont *c, const double *u, const double *t, double 
         st = gd_shoot_orbit(&c->sh, u1, &po, &e1);
     c->br->end = GD_END_BOUND;
     if (st != GD_OK) { /* the branch ends at the last point inside */
+        snprintf(c->br->end_detail, sizeof c->br->end_detail, "%s", e1.msg);
         snprintf(c->br->end_reason, sizeof c->br->end_reason, "the parameter left [%.9g, %.9g] after p = %.9g "
                  "(no orbit at the bound: %s)", c->co->p_min, c->co->p_max, u[N], e1.msg);
         return st == GD_ERR_NOMEM ? gd_error_set(err, st, "%s", e1.msg) : GD_OK;
@@ -340,6 +341,8 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
         if (st != GD_OK || turn < 0.5 || too_far) { /* no convergence, a turn too sharp, or p moved too far */
             if (ds <= co->ds_min) {
                 c->br->end = GD_END_STEP;
+                snprintf(c->br->end_detail, sizeof c->br->end_detail, "%s", st != GD_OK ? e1.msg : too_far
+                         ? "the parameter moves more than dp_max" : "the tangent turns too sharply");
                 snprintf(c->br->end_reason, sizeof c->br->end_reason, "no convergence at the smallest step %.3g "
                          "from p = %.9g: %s", ds, u[N], st != GD_OK ? e1.msg : too_far ? "the parameter moves more than dp_max"
                          : "the tangent turns too sharply");

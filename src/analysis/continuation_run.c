@@ -1,14 +1,16 @@
 /* The `continuation` analysis (include/geardyn/gd_continuation.h): the [continuation] keys
  * checked, the starting orbit (the attractor after the transient, its period found from the
- * Poincare section, or a given state), its branches in one or both directions, the branches of
- * twice the period at its period doublings, and one period of every orbit integrated with
- * samples for what the tables and the picture show. */
+ * Poincare section, a given state, or a finished sweep's point handed in by the caller), its
+ * branches in one or both directions, the branches of twice the period at the period doublings
+ * of every branch (the cascade, up to GD_PO_MAX_PERIODS), each followed both ways, and one
+ * period of every orbit integrated with samples for what the tables and the picture show. */
 #include "geardyn/gd_continuation.h"
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_scene.h"
 #include "../case/case_keys.h"
 #include "../core/clock.h"
+#include "analysis_internal.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -88,6 +90,16 @@ static gd_status check_settings(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is below solver.rtol = %g (valid: "
                             "newton_tol >= %g, or a tighter solver.rtol)", WHERE("newton_tol"), c->cont_newton_tol,
                             c->rtol, c->rtol);
+    static const char *start_name[] = {"attractor", "state", "sweep"};
+    if (c->cont_start == GD_CONT_START_SWEEP && !c->cont_start_sweep[0])
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.start_sweep: missing (valid: with start = sweep, "
+                            "the directory of a finished sweep in %s)", WHERE("start"), c->cont_parameter);
+    static const char *sweep_keys[] = {"start_sweep", "start_sweep_direction"};
+    for (int i = 0; i < 2 && c->cont_start != GD_CONT_START_SWEEP; i++)
+        if (gd_case_key_given(c, "continuation", sweep_keys[i]))
+            return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.%s: given with start = %s (valid: set start = "
+                                "sweep, or leave %s out)", WHERE(sweep_keys[i]), sweep_keys[i],
+                                start_name[c->cont_start], sweep_keys[i]);
     if (c->cont_start == GD_CONT_START_STATE) {
         double y[GD_MAX_STATE];
         int n;
@@ -101,8 +113,8 @@ static gd_status check_settings(gd_case *c, gd_error *err)
             return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.state: %d numbers (valid: the %d of this "
                                 "model's state)", WHERE("state"), n, m.n);
     } else if (gd_case_key_given(c, "continuation", "state")) {
-        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.state: given with start = attractor (valid: set "
-                            "start = state, or leave state out)", WHERE("state"));
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.state: given with start = %s (valid: set "
+                            "start = state, or leave state out)", WHERE("state"), start_name[c->cont_start]);
     }
     if (c->cont_overlay_sweep[0]) {
         if (c->cont_response == GD_CONT_RESP_MAX_DEFLECTION || c->cont_response == GD_CONT_RESP_MIN_DEFLECTION)
@@ -126,6 +138,14 @@ GD_API gd_status gd_contin_check_case(gd_case *c, gd_error *err)
     return st == GD_OK ? check_settings(c, err) : st;
 }
 
+double gd_contin_start_value(const gd_case *c)
+{
+    if (gd_case_key_given(c, "continuation", "start_value"))
+        return c->cont_start_value;
+    return c->cont_direction == GD_SWEEP_UP ? c->cont_from
+         : c->cont_direction == GD_SWEEP_DOWN ? c->cont_to : 0.5 * (c->cont_from + c->cont_to);
+}
+
 GD_API double gd_contin_value(const gd_contin_result *res, double p) { return p * res->scale; }
 
 GD_API void gd_contin_result_free(gd_contin_result *res)
@@ -135,7 +155,9 @@ GD_API void gd_contin_result_free(gd_contin_result *res)
         free(res->branch[b].meas);
         free(res->branch[b].bif_meas);
     }
-    res->nbranches = 0;
+    free(res->branch);
+    res->branch = NULL;
+    res->nbranches = res->branch_cap = 0;
 }
 
 /* The run: the case (changed as the parameter moves), its model at the start and the options. */
@@ -145,6 +167,7 @@ typedef struct crun {
     gd_solver_opts o;
     gd_cont_opts co;
     gd_contin_result *res;
+    int max_branches;            /* continuation.max_branches */
 } crun;
 
 /* One period (nper mesh periods) of the orbit through y at parameter p, integrated with samples. */
@@ -224,17 +247,14 @@ static gd_status attractor(crun *r, const gd_model *m, double *y, gd_error *err)
 }
 
 /* The case copy, its model at the start value, the scale and the options. */
-static gd_status setup(crun *r, const gd_case *c, gd_model *m, gd_error *err)
+static gd_status setup(crun *r, const gd_case *c, const gd_contin_start *start, gd_model *m, gd_error *err)
 {
     gd_contin_result *res = r->res;
     gd_status st = gd_case_copy(&r->c, c, err);
     if (st != GD_OK)
         return st;
     r->c.analysis = GD_ANALYSIS_RESPONSE; /* the model at every parameter value: no check of these keys again */
-    double v0 = c->cont_start_value;
-    if (!gd_case_key_given(c, "continuation", "start_value"))
-        v0 = c->cont_direction == GD_SWEEP_UP ? c->cont_from
-           : c->cont_direction == GD_SWEEP_DOWN ? c->cont_to : 0.5 * (c->cont_from + c->cont_to);
+    double v0 = start ? start->value : gd_contin_start_value(c);
     res->start_value = v0;
     snprintf(res->parameter, sizeof res->parameter, "%s", c->cont_parameter);
     snprintf(res->unit, sizeof res->unit, "%s", gd_case_key_dotted(c->cont_parameter)->unit);
@@ -253,10 +273,7 @@ static gd_status setup(crun *r, const gd_case *c, gd_model *m, gd_error *err)
     res->nmesh = m->nmesh;
     for (int j = 0; j < m->nclear; j++)
         snprintf(res->clear_name[j], sizeof res->clear_name[j], "%s", m->clear[j].name);
-    for (int j = 0; j < m->ndof; j++) {
-        snprintf(res->state_name[j], sizeof res->state_name[j], "%s", m->dof_name[j]);
-        snprintf(res->state_name[m->ndof + j], sizeof res->state_name[j], "%s_dot", m->dof_name[j]);
-    }
+    gd_state_names(m, res->state_name);
     gd_solver_opts_from_case(&r->c, &r->o);
     gd_cont_opts_default(&r->co);
     r->co.po.multiple = c->cont_shooting == GD_SHOOT_MULTIPLE;
@@ -274,12 +291,78 @@ static gd_status setup(crun *r, const gd_case *c, gd_model *m, gd_error *err)
     return GD_OK;
 }
 
-/* A branch from the orbit start, of start->nper periods, in direction dir. */
-static gd_status follow(crun *r, const gd_po *start, int dir, int parent, gd_error *err)
+/* Room for one more branch in res->branch. */
+static gd_status grow(gd_contin_result *res, gd_error *err)
+{
+    if (res->nbranches < res->branch_cap)
+        return GD_OK;
+    int cap = res->branch_cap ? 2 * res->branch_cap : 4;
+    gd_contin_branch *b = realloc(res->branch, sizeof *b * (size_t)cap);
+    if (!b)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for %d branches", cap);
+    res->branch = b;
+    res->branch_cap = cap;
+    return GD_OK;
+}
+
+/* A note of summary.json (at most 8): fmt holds one %.10g (value) and one %s (why). */
+static void note(gd_contin_result *res, const char *fmt, double value, const char *why)
+{
+    if (res->nnotes < (int)(sizeof res->notes / sizeof res->notes[0]))
+        snprintf(res->notes[res->nnotes++], GD_ERROR_MSG_MAX, fmt, value, why);
+}
+
+/* How branch b ended, with the parameter in the key's unit (and p); co: its options (bounds in p);
+ * vertex: the period doubling it ran back to. */
+static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_contin_branch *b, double vertex)
+{
+    const gd_branch *br = &b->br;
+    double p = br->pt[br->npoints - 1].orbit.p, bound = b->direction > 0 ? co->p_max : co->p_min;
+    const char *k = res->parameter, *sp = res->unit[0] ? " " : "";
+    char *o = b->end_reason;
+    size_t n = sizeof b->end_reason;
+    if (b->at_doubling)
+        snprintf(o, n, "back at the period doubling it was born at, %s = %.10g%s%s (p = %.9g), from %.10g%s%s", k,
+                 gd_contin_value(res, vertex), sp, res->unit, vertex, gd_contin_value(res, p), sp, res->unit);
+    else if (br->end == GD_END_BOUND && !br->end_detail[0])
+        snprintf(o, n, "the bound %s = %.10g%s%s reached (p = %.9g)", k, gd_contin_value(res, p), sp, res->unit, p);
+    else if (br->end == GD_END_BOUND)
+        snprintf(o, n, "no orbit at the bound %s = %.10g%s%s (p = %.9g): the branch ends at %.10g%s%s (p = %.9g): "
+                 "%s", k, gd_contin_value(res, bound), sp, res->unit, bound, gd_contin_value(res, p), sp, res->unit,
+                 p, br->end_detail);
+    else if (br->end == GD_END_BUDGET)
+        snprintf(o, n, "%d points reached at %s = %.10g%s%s (p = %.9g)", br->npoints, k, gd_contin_value(res, p),
+                 sp, res->unit, p);
+    else
+        snprintf(o, n, "no convergence at the smallest step %.3g from %s = %.10g%s%s (p = %.9g): %s", co->ds_min,
+                 k, gd_contin_value(res, p), sp, res->unit, p, br->end_detail);
+}
+
+/* The way back to a period doubling at p = vertex (section 7 of docs/continuation.md): the doubled
+ * orbit turns there, at a fold of the branch within tol of the doubling, onto its mirror image.
+ * The branch ends at the point before that fold (the fold itself is the doubling, not listed). */
+static void end_at_vertex(gd_contin_branch *b, double vertex, double tol)
+{
+    gd_branch *br = &b->br;
+    for (int i = 0; i < br->nbif; i++) {
+        if (br->bif[i].kind != GD_BIF_FOLD || !(fabs(br->bif[i].p - vertex) <= tol))
+            continue;
+        br->npoints = br->bif[i].after > 0 ? br->bif[i].after : 1;
+        br->nbif = i;
+        b->at_doubling = 1;
+        return;
+    }
+}
+
+/* A branch from the orbit start, of start->nper periods, in direction dir, p kept in [lo, hi];
+ * vertex: the parameter of the period doubling it runs back to (NAN for none), tol its margin. */
+static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double lo, double hi, double vertex,
+                        double tol, gd_error *err)
 {
     gd_contin_result *res = r->res;
-    if (res->nbranches == GD_CONTIN_MAX_BRANCHES)
-        return GD_OK;
+    gd_status st = grow(res, err);
+    if (st != GD_OK)
+        return st;
     gd_contin_branch *b = &res->branch[res->nbranches];
     memset(b, 0, sizeof *b);
     b->nper = start->nper;
@@ -288,42 +371,93 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, gd_err
     gd_cont_opts co = r->co;
     co.po.nper = start->nper;
     co.direction = dir;
-    gd_status st = gd_continue(gd_model_at_case_key, &r->cp, &r->o, &co, start, &b->br, err);
-    if (st != GD_OK)
-        return st;
-    res->nbranches++;
+    co.p_min = lo;
+    co.p_max = hi;
+    st = gd_continue(gd_model_at_case_key, &r->cp, &r->o, &co, start, &b->br, err);
     res->corrections += b->br.corrections;
     res->newton_iterations += b->br.newton_iterations;
-    return measure_branch(r, b, err);
+    if (st == GD_OK) {
+        if (isfinite(vertex))
+            end_at_vertex(b, vertex, tol);
+        end_reason(res, &co, b, vertex);
+        st = measure_branch(r, b, err);
+    }
+    if (st != GD_OK) { /* no branch: its memory goes (a switched one's failure is a note) */
+        gd_branch_free(&b->br);
+        free(b->meas);
+        free(b->bif_meas);
+        return st;
+    }
+    res->nbranches++;
+    return GD_OK;
+}
+
+/* The orbit of twice the period at the period doubling bf of branch ib, followed both ways: away
+ * from the doubling to the bounds, and back towards it. There the doubled orbit meets the branch
+ * it was born from at the vertex of a pitchfork (in the map of 2n periods), beyond which it
+ * would only run back along its own mirror image (the same orbit shifted by n periods): so the
+ * way back is kept within dp beyond its start and ends at the fold within tol of the doubling
+ * (tol a hundred times the bracket that located it, at least 1e-6 of the range). */
+static gd_status switch_at(crun *r, int ib, const gd_bifurcation *bf, gd_error *err)
+{
+    gd_contin_result *res = r->res;
+    const int nper = res->branch[ib].nper;
+    if (res->nbranches + 2 > r->max_branches) {
+        note(res, "no branch switching at the period doubling at %.10g: %s", gd_contin_value(res, bf->p),
+             "continuation.max_branches reached");
+        return GD_OK;
+    }
+    gd_po_opts po = r->co.po;
+    po.nper = nper;
+    double dp = 0.01 * (r->co.p_max - r->co.p_min);
+    gd_po p2;
+    gd_error e2 = {0};
+    if (gd_po_period_doubled(gd_model_at_case_key, &r->cp, &r->o, &po, bf, dp, 0.05, &p2, &e2) != GD_OK) {
+        note(res, "no orbit of twice the period found at the period doubling at %.10g: %s",
+             gd_contin_value(res, bf->p), e2.msg);
+        return GD_OK;
+    }
+    int away = p2.p > bf->p ? +1 : -1;
+    double tol = fmax(100.0 * fabs(bf->p_hi - bf->p_lo), 1e-6 * (r->co.p_max - r->co.p_min));
+    double lo = away > 0 ? bf->p : p2.p - dp, hi = away > 0 ? p2.p + dp : bf->p;
+    gd_status st = follow(r, &p2, away, ib, r->co.p_min, r->co.p_max, NAN, 0.0, &e2);
+    if (st == GD_OK)
+        st = follow(r, &p2, -away, ib, fmax(lo, r->co.p_min), fmin(hi, r->co.p_max), bf->p, tol, &e2);
+    if (st == GD_ERR_NOMEM || st == GD_ERR_INTERRUPTED)
+        return gd_error_set(err, st, "%s", e2.msg);
+    if (st != GD_OK) /* the doubled orbit found, but no branch from it: the others go on */
+        note(res, "the branch of twice the period switched to at the period doubling at %.10g: %s",
+             gd_contin_value(res, bf->p), e2.msg);
+    return GD_OK;
+}
+
+/* Whether a period doubling of an orbit of nper periods at p was switched at before (on an earlier
+ * branch, or earlier on this one: a branch that closes on itself meets its doublings again). */
+static int switched_before(const gd_contin_result *res, int ib, int i, double tol)
+{
+    for (int b = 0; b <= ib; b++)
+        for (int j = 0; j < (b < ib ? res->branch[b].br.nbif : i); j++) {
+            const gd_bifurcation *o = &res->branch[b].br.bif[j];
+            if (res->branch[b].nper == res->branch[ib].nper && o->kind == GD_BIF_PERIOD_DOUBLING &&
+                fabs(o->p - res->branch[ib].br.bif[i].p) <= tol)
+                return 1;
+        }
+    return 0;
 }
 
 /* The branches of twice the period at the period doublings of branch ib. */
 static gd_status switch_branches(crun *r, int ib, gd_error *err)
 {
-    gd_contin_result *res = r->res;
-    const gd_contin_branch *b = &res->branch[ib];
-    if (2 * b->nper > GD_PO_MAX_PERIODS)
+    if (2 * r->res->branch[ib].nper > GD_PO_MAX_PERIODS)
         return GD_OK;
-    gd_po_opts po = r->co.po;
-    po.nper = b->nper;
-    double dp = 0.01 * (r->co.p_max - r->co.p_min);
-    for (int i = 0; i < b->br.nbif; i++) {
-        const gd_bifurcation *bf = &res->branch[ib].br.bif[i];
-        if (bf->kind != GD_BIF_PERIOD_DOUBLING || res->nbranches == GD_CONTIN_MAX_BRANCHES)
-            continue;
-        gd_po p2;
-        gd_error e2 = {0};
-        if (gd_po_period_doubled(gd_model_at_case_key, &r->cp, &r->o, &po, bf, dp, 0.05, &p2, &e2) != GD_OK) {
-            if (res->nnotes < 4)
-                snprintf(res->notes[res->nnotes++], GD_ERROR_MSG_MAX, "no orbit of %d periods found at the period "
-                         "doubling at %.10g: %s", 2 * b->nper, gd_contin_value(res, bf->p), e2.msg);
-            continue;
-        }
-        gd_status st = follow(r, &p2, p2.p > bf->p ? +1 : -1, ib, err);
-        if (st != GD_OK)
-            return st;
+    gd_status st = GD_OK;
+    double tol = 1e-6 * (r->co.p_max - r->co.p_min);
+    for (int i = 0; i < r->res->branch[ib].br.nbif && st == GD_OK; i++) {
+        gd_bifurcation bf = r->res->branch[ib].br.bif[i]; /* a copy: res->branch moves as it grows */
+        if (bf.kind == GD_BIF_PERIOD_DOUBLING && !switched_before(r->res, ib, i, tol))
+            st = switch_at(r, ib, &bf, err);
     }
-    return GD_OK;
+    return st;
 }
 
 static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_contin_progress_fn progress,
@@ -336,32 +470,45 @@ static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_
     if (c->cont_direction != GD_SWEEP_DOWN)
         dirs[nd++] = +1;
     gd_status st = GD_OK;
-    for (int i = 0; i < nd && st == GD_OK; i++) {
-        st = follow(r, start, dirs[i], -1, err);
+    for (int i = 0; i < nd && i < r->max_branches && st == GD_OK; i++) {
+        st = follow(r, start, dirs[i], -1, r->co.p_min, r->co.p_max, NAN, 0.0, err);
         if (st == GD_OK && progress && progress(user, res->nbranches, nd))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
-    int primary = res->nbranches;
-    for (int ib = 0; ib < primary && st == GD_OK && c->cont_branch_switching; ib++) {
+    /* every branch, those switched to included (res->nbranches grows): the period-doubling cascade */
+    for (int ib = 0; ib < res->nbranches && st == GD_OK && c->cont_branch_switching; ib++) {
         st = switch_branches(r, ib, err);
-        if (st == GD_OK && progress && progress(user, res->nbranches, res->nbranches))
+        if (st == GD_OK && progress && progress(user, ib + 1, res->nbranches))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
     return st;
 }
 
-GD_API gd_status gd_contin_run(const gd_case *c, gd_contin_progress_fn progress, void *user, gd_contin_result *res,
-                               gd_error *err)
+GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd_contin_progress_fn progress,
+                               void *user, gd_contin_result *res, gd_error *err)
 {
     memset(res, 0, sizeof *res);
     double t0 = gd_clock_thread_cpu_s();
     crun r;
     memset(&r, 0, sizeof r);
     r.res = res;
+    r.max_branches = c->cont_max_branches;
+    if (!from && c->cont_start == GD_CONT_START_SWEEP)
+        return gd_error_set(err, GD_ERR_INPUT, "continuation.start = sweep: the sweep's point is read from %s by the "
+                            "continuation row (gd_analysis_run_in), or given as gd_contin_start", c->cont_start_sweep);
     gd_model m;
-    gd_status st = setup(&r, c, &m, err);
+    gd_status st = setup(&r, c, from, &m, err);
     double y[GD_MAX_STATE];
-    if (st == GD_OK && c->cont_start == GD_CONT_START_STATE) {
+    if (st == GD_OK && from && from->n != m.n)
+        st = gd_error_set(err, GD_ERR_INPUT, "the continuation's start (%s): %d state components, the model has %d",
+                          from->source, from->n, m.n);
+    if (st == GD_OK && from) {
+        memcpy(y, from->y, sizeof y);
+        snprintf(res->start_source, sizeof res->start_source, "%s", from->source);
+        if (res->nper_start == 0)
+            res->nper_start = from->nper > 0 ? from->nper : 1;
+        res->period_found = c->cont_period == 0 && from->nper > 0;
+    } else if (st == GD_OK && c->cont_start == GD_CONT_START_STATE) {
         int n;
         parse_state(c->cont_state, y, &n);
         if (res->nper_start == 0)

@@ -341,7 +341,15 @@ static gd_status plan_chains(const gd_case *c, gd_sweep_plan *p, gd_error *err)
     return GD_OK;
 }
 
-/* The model's state size and the responses, from the base case's model. */
+void gd_state_names(const gd_model *m, char name[][16])
+{
+    for (int j = 0; j < m->ndof; j++) {
+        snprintf(name[j], 16, "%s", m->dof_name[j]);
+        snprintf(name[m->ndof + j], 16, "%s_dot", m->dof_name[j]);
+    }
+}
+
+/* The model's state size, its names and the responses, from the base case's model. */
 static gd_status plan_model(const gd_case *c, gd_sweep_plan *p, gd_error *err)
 {
     gd_model m;
@@ -351,6 +359,7 @@ static gd_status plan_model(const gd_case *c, gd_sweep_plan *p, gd_error *err)
     p->n = m.n;
     p->nclear = m.nclear;
     p->nmesh = m.nmesh;
+    gd_state_names(&m, p->state_name);
     char bad[700];
     if (parse_responses(c->sweep_response, &m, p->resp, &p->nresp, bad, sizeof bad) != GD_OK) {
         char w[GD_PATH_MAX + 32];

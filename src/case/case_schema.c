@@ -259,13 +259,22 @@ static const gd_keyspec schema[] = {
       "mesh periods of the starting orbit (0: the smallest n up to 16 whose Poincare section repeats after the transient)"),
     E("continuation", "shooting", cont_shooting, 0, "multiple|single",
       "multiple: one shooting segment per mesh period (strongly unstable orbits converge); single: one segment"),
-    E("continuation", "start", cont_start, 0, "attractor|state",
+    E("continuation", "start", cont_start, 0, "attractor|state|sweep",
       "attractor: the orbit reached after run.transient_periods from run.initial_condition at start_value; "
-      "state: the orbit near continuation.state"),
+      "state: the orbit near continuation.state; sweep: the orbit near the final state of a finished sweep's "
+      "point (start_sweep, start_sweep_direction), the one nearest start_value"),
     S("continuation", "state", cont_state, "",
       "start = state: the dimensionless state at mesh phase 0, comma-separated (as summary.json writes it)"),
+    S("continuation", "start_sweep", cont_start_sweep, "",
+      "start = sweep: a finished sweep of this case's model in this parameter (its directory, relative to the "
+      "working directory); its states.csv gives the start"),
+    E("continuation", "start_sweep_direction", cont_start_sweep_direction, 0, "up|down|independent",
+      "start = sweep: the sweep's branch whose point starts the continuation (the direction column of its tables)"),
     B("continuation", "branch_switching", cont_branch_switching, 1,
-      "at each period doubling of a branch from the start, follow the orbit of twice the period born there"),
+      "at each period doubling of any branch (a switched one too, up to 16 mesh periods), follow the orbit of "
+      "twice the period born there, both ways"),
+    I("continuation", "max_branches", cont_max_branches, 1, 1000, 32,
+      "branches at most, those from the start and those switched to; a switching beyond it is listed under notes"),
     S("continuation", "overlay_sweep", cont_overlay_sweep, "",
       "a finished sweep's directory (as output.directory: relative to the working directory) whose points are drawn over the branches"),
     E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",

@@ -30,15 +30,16 @@ void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_c
     const gd_contin_result *res = result;
     if (a->quiet)
         return;
-    printf("%s: continuation in %s from %.10g (period %d%s): %d branches, %ld corrections, %.2f Newton iterations "
-           "per correction, %.2f s CPU\n", dir, res->parameter, res->start_value, res->nper_start,
-           res->period_found ? ", found" : "", res->nbranches, res->corrections,
+    printf("%s: continuation in %s from %.10g (period %d%s%s%s): %d branches, %ld corrections, %.2f Newton "
+           "iterations per correction, %.2f s CPU\n", dir, res->parameter, res->start_value, res->nper_start,
+           res->period_found ? ", found" : "", res->start_source[0] ? ", the point of " : "", res->start_source,
+           res->nbranches, res->corrections,
            res->corrections ? (double)res->newton_iterations / (double)res->corrections : 0.0, res->cpu_s);
     for (int b = 0; b < res->nbranches; b++) {
         const gd_branch *br = &res->branch[b].br;
         printf("  branch %d, period %d, %s: %d points to %.10g (%s)\n", b, res->branch[b].nper,
                res->branch[b].direction > 0 ? "up" : "down", br->npoints,
-               gd_contin_value(res, br->pt[br->npoints - 1].orbit.p), br->end_reason);
+               gd_contin_value(res, br->pt[br->npoints - 1].orbit.p), res->branch[b].end_reason);
         for (int i = 0; i < br->nbif; i++)
             printf("    %s%s%s at %.10g\n", gd_bif_kind_name(br->bif[i].kind), br->bif[i].clearance >= 0 ? " of " : "",
                    br->bif[i].clearance >= 0 ? res->clear_name[br->bif[i].clearance] : "",

@@ -133,8 +133,8 @@ static json_t *branch_json(const gd_contin_result *res, int b)
     json_object_set_new(o, "stable_points", json_integer(stable));
     json_object_set_new(o, "first", gd_json_num(gd_contin_value(res, br->br.pt[0].orbit.p)));
     json_object_set_new(o, "last", gd_json_num(gd_contin_value(res, br->br.pt[br->br.npoints - 1].orbit.p)));
-    json_object_set_new(o, "end", json_string(end_name(br->br.end)));
-    json_object_set_new(o, "end_reason", json_string(br->br.end_reason));
+    json_object_set_new(o, "end", json_string(br->at_doubling ? "period-doubling" : end_name(br->br.end)));
+    json_object_set_new(o, "end_reason", json_string(br->end_reason));
     json_object_set_new(o, "corrections", json_integer(br->br.corrections));
     json_object_set_new(o, "newton_iterations", json_integer(br->br.newton_iterations));
     json_t *bifs = json_array();
@@ -164,6 +164,7 @@ gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_cont
     json_object_set_new(r, "start_value", gd_json_num(res->start_value));
     json_object_set_new(r, "start_period_n", json_integer(res->nper_start));
     json_object_set_new(r, "start_period_found", json_boolean(res->period_found));
+    json_object_set_new(r, "start_sweep_point", res->start_source[0] ? json_string(res->start_source) : json_null());
     json_t *brs = json_array();
     for (int b = 0; b < res->nbranches; b++)
         json_array_append_new(brs, branch_json(res, b));

@@ -85,6 +85,8 @@ gd_status gd_summary_write_workprec(gd_run_dir *d, const gd_case *c, const gd_mo
 /* ---- sweep ---- */
 /* sweep.csv and bifurcation.csv from the points in slot order. */
 gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_error *err);
+/* states.csv: every point's final state (at mesh phase 0), its period and status, in slot order. */
+gd_status gd_sweep_write_states(gd_run_dir *d, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_error *err);
 /* the settings, failed points, motion tallies, branches and the hysteresis intervals
  * (gd_sweep_hysteresis) */
 gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
@@ -93,6 +95,12 @@ gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep
 /* ---- continuation ---- */
 /* branch.csv (every branch point) and bifurcations.csv (every located bifurcation). */
 gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_error *err);
+/* continuation.start = sweep: the point of the finished sweep continuation.start_sweep in the direction
+ * start_sweep_direction nearest the start value (inside [from, to], done), after checking that the
+ * directory holds a finished one-parameter sweep in the continued key, of this case's model (every
+ * key of the model equal but the continued one and derived values), listing states.csv. Refusals
+ * are GD_ERR_INPUT naming the key. */
+gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *err);
 gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_contin_result *res, gd_error *err);
 
 #endif

@@ -59,7 +59,7 @@ static const gd_analysis_type analyses[] = {
       workprec_check_case, gd_row_workprec_run, gd_row_workprec_write, gd_row_workprec_summary,
       gd_row_workprec_free },
     { GD_ANALYSIS_CONTINUATION, "continuation",
-      "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_contin_check_case,
+      "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_row_continuation_check,
       gd_row_continuation_run, gd_row_continuation_write, gd_row_continuation_summary, gd_row_continuation_free },
 };
 

@@ -1,5 +1,5 @@
-/* The continuation row: periodic orbits followed in one key (gd_contin_run), then branch.csv,
- * bifurcations.csv and summary.json. */
+/* The continuation row: its keys checked (with start = sweep, the sweep's point read), periodic
+ * orbits followed in one key (gd_contin_run), then branch.csv, bifurcations.csv and summary.json. */
 #include "rows.h"
 #include "geardyn/gd_continuation.h"
 #include "../output/output_internal.h"
@@ -13,15 +13,29 @@ static int on_branch(void *user, int done, int planned)
     return env && env->continuation_branch ? env->continuation_branch(env->user, done, planned) : 0;
 }
 
+/* The [continuation] keys, and with start = sweep the sweep's directory and point. */
+gd_status gd_row_continuation_check(gd_case *c, gd_error *err)
+{
+    gd_status st = gd_contin_check_case(c, err);
+    if (st != GD_OK || c->cont_start != GD_CONT_START_SWEEP)
+        return st;
+    gd_contin_start s;
+    return gd_contin_sweep_start(c, &s, err);
+}
+
 gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_run_dir *out, void **result,
                                   gd_error *err)
 {
     (void)out;
     *result = NULL;
+    gd_contin_start s;
+    gd_status st = c->cont_start == GD_CONT_START_SWEEP ? gd_contin_sweep_start(c, &s, err) : GD_OK;
+    if (st != GD_OK)
+        return st;
     gd_contin_result *r = malloc(sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
-    gd_status st = gd_contin_run(c, on_branch, (void *)env, r, err);
+    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, r, err);
     if (st != GD_OK) {
         free(r);
         return st;

@@ -69,7 +69,8 @@ gd_status gd_row_sweep_write(const gd_case *c, const void *result, gd_run_dir *o
 {
     (void)c;
     const gd_sweep_outcome *o = result;
-    return gd_sweep_write_tables(out, &o->plan, o->pts, err);
+    gd_status st = gd_sweep_write_tables(out, &o->plan, o->pts, err);
+    return st == GD_OK ? gd_sweep_write_states(out, &o->plan, o->pts, err) : st;
 }
 
 gd_status gd_row_sweep_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)

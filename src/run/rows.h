@@ -20,5 +20,7 @@ GD_ROW_DECLARE(workprec)
 GD_ROW_DECLARE(optimize)
 GD_ROW_DECLARE(compare)
 GD_ROW_DECLARE(continuation)
+/* continuation's check_case: gd_contin_check_case, and the sweep's point with start = sweep */
+gd_status gd_row_continuation_check(gd_case *c, gd_error *err);
 
 #endif

@@ -5,7 +5,9 @@
 # grazing, the two folds and the period doubling where tests/test_continuation.c finds them with the
 # library directly (to 1e-7 in Omega: the locate tolerance 1e-8 in arclength, and the grazing's own
 # bias); its stable points have |mu_max| < 1; the period-2 branch switched to at the period doubling
-# starts there. Bad [continuation] settings are refused with exit 2 naming file, line and key, and
+# starts there, period-doubles again where the library test finds it, and the period-4 branch born
+# there runs to the bound; each switched branch is followed back to its doubling; max_branches
+# bounds their number; end_reason says the bound in rpm. Bad [continuation] settings are refused with exit 2 naming file, line and key, and
 # nothing is written. TAP output.
 set -u
 G=${GEARDYN:?}
@@ -65,9 +67,28 @@ b1 = [r for r in br if r["branch"] == "1"]
 ok(b1 and b1[0]["period_n"] == "2" and abs(float(b1[0]["speed_rpm"]) / scale - 1.2267) < 0.02,
    "branch 1: period 2, switched to near the period doubling")
 sb = s["results"]["branches"]
-ok(s["analysis"] == "continuation" and len(sb) == 2 and sb[0]["end"] == "bound" and
-   "branch.csv" in s["files"] and "summary.json" in s["files"], "summary.json: two branches, the first to its bound, "
+ok(s["analysis"] == "continuation" and sb[0]["end"] == "bound" and
+   "branch.csv" in s["files"] and "summary.json" in s["files"], "summary.json: the first branch to its bound, "
    "the files")
+# the end in the key's unit: the bound 1.5 as rpm, and p
+ok("operating.speed_rpm = 4774.648293 rpm" in sb[0]["end_reason"] and "p = 1.5" in sb[0]["end_reason"],
+   "end_reason in rpm and p (%s)" % sb[0]["end_reason"])
+# the cascade: period 1 -> 2 at Omega 1.2267, 2 -> 4 on the switched branch at 1.4004 (the library test's
+# 1.4003789567); each switched branch followed away from its doubling and back to it
+ok([(b["period_n"], b["direction"], b["switched_from_branch"]) for b in sb] ==
+   [(1, "up", None), (2, "up", 0), (2, "down", 0), (4, "up", 1), (4, "down", 1)],
+   "five branches: 1; 2 up and back from branch 0; 4 up and back from branch 1 (%s)"
+   % [(b["period_n"], b["direction"], b["switched_from_branch"]) for b in sb])
+pd1 = [b for b in bf if b["branch"] == "1" and b["kind"] == "period-doubling"]
+ok(len(pd1) == 1 and abs(float(pd1[0]["speed_rpm"]) / scale - 1.4003789567) < 1e-7,
+   "branch 1 (period 2) period-doubles at Omega 1.4003789567 (%s)" % [b["speed_rpm"] for b in pd1])
+for b, born in ((2, 1.2267006331), (4, 1.4003789567)):
+    ok(len(sb) > b and sb[b]["end"] == "period-doubling" and abs(sb[b]["last"] / scale - born) < 0.01
+       and abs(sb[b]["last"] / scale - born) > 0, "branch %d ends back at the doubling at Omega %.4f (last %.6f)"
+       % (b, born, sb[b]["last"] / scale if len(sb) > b else 0))
+b3 = [r for r in br if r["branch"] == "3"]
+ok(b3 and all(r["period_n"] == "4" for r in b3) and abs(float(b3[-1]["speed_rpm"]) / scale - 1.5) < 1e-9,
+   "branch 3: period 4 up to the bound 1.5")
 PY
 ok $? "branch.csv, bifurcations.csv and summary.json read"
 while IFS= read -r line; do
@@ -100,6 +121,19 @@ refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: no /
 refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: a sweep has no deflection extremes"
 refuse continuation.start=state "continuation.state: '' \(valid: with start = state"
 refuse continuation.state=1,2 "continuation.state: given with start = attractor"
+refuse continuation.max_branches=0 "continuation.max_branches"
+refuse continuation.start_sweep=/tmp "continuation.start_sweep: given with start = attractor"
+refuse continuation.start=sweep "continuation.start_sweep: missing"
+# max_branches bounds the cascade: 3 branches, the doubling on branch 1 not switched, said in notes
+"$G" run "$KS" --out "$work/mb" --quiet --set continuation.max_branches=3 --set output.plots=off > "$work/mb.txt" 2>&1
+ok $? "max_branches = 3 runs"
+python3 -c '
+import json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+assert len(s["branches"]) == 3, len(s["branches"])
+assert any("max_branches" in n for n in s["notes"]), s["notes"]
+' "$work/mb"
+ok $? "max_branches = 3: three branches, a note for the doubling not switched"
 # in the file: the message names its line
 sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
 line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)

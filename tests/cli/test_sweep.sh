@@ -59,7 +59,7 @@ EOF
 }
 case="$work/ks.ini"
 ks_case > "$case"
-files=(sweep.csv bifurcation.csv summary.json)
+files=(sweep.csv bifurcation.csv states.csv summary.json)
 same_files() { # dir dir
     local f
     for f in "${files[@]}"; do cmp -s "$1/$f" "$2/$f" || return 1; done
@@ -92,7 +92,7 @@ ok $? "bifurcation.csv has the stable columns ($(head -1 "$ref/bifurcation.csv")
 rows=$(($(wc -l < "$ref/sweep.csv") - 1)); [ "$rows" -eq $((2 * POINTS)) ]; ok $? "sweep.csv: one row per point and direction ($rows)"
 brows=$(($(wc -l < "$ref/bifurcation.csv") - 1)); [ "$brows" -eq $((2 * POINTS * (REC + 1))) ]
 ok $? "bifurcation.csv: record_periods + 1 Poincare samples per point ($brows)"
-[ -z "$(ls -A "$ref" | grep -v -e '^sweep.csv$' -e '^bifurcation.csv$' -e '^summary.json$')" ]
+[ -z "$(ls -A "$ref" | grep -v -e '^sweep.csv$' -e '^bifurcation.csv$' -e '^states.csv$' -e '^summary.json$')" ]
 ok $? "only the final files are left (no journal, no temporary files): $(ls -A "$ref" | tr '\n' ' ')"
 python3 - "$ref" $((2 * POINTS)) <<'PY'
 import csv, json, sys

@@ -52,7 +52,7 @@ from = 1591.5
 to = 4774.6
 points = 40
 EOF
-files=(sweep.csv bifurcation.csv summary.json)
+files=(sweep.csv bifurcation.csv states.csv summary.json)
 same_files() {
     local f
     for f in "${files[@]}"; do cmp -s "$1/$f" "$2/$f" || return 1; done
