@@ -21,4 +21,11 @@ GD_ROW_DECLARE(optimize)
 GD_ROW_DECLARE(compare)
 GD_ROW_DECLARE(continuation)
 
+/* The environment's should_stop (the command line's signals) as the stop hook of a computation
+ * that has no hook of its own in gd_run_env (TCA, LTCA, the optimisers); none without env. */
+static inline gd_stop_hook gd_row_stop(const gd_run_env *env)
+{
+    return env ? (gd_stop_hook){env->should_stop, env->user} : (gd_stop_hook){NULL, NULL};
+}
+
 #endif
