@@ -263,7 +263,7 @@ def main():
     early_stops('ltca', tmp, 'cases/paper/ltca-modified.ini', ['solver.ltca_positions_per_cycle=1500'])
     early_stops('tca', tmp, 'cases/paper/tca-modified.ini', ['solver.tca_positions_per_cycle=2500'])
     early_stops('compare-optimizers', tmp, 'cases/paper/compare-optimizers.ini',
-                ['optimize.runs=2', 'optimize.budget_evals=60', 'optimize.population=10',
+                ['optimize.runs=2', 'optimize.budget_evals=40', 'optimize.population=10',
                  'solver.ltca_positions_per_cycle=8'])
     early_stops('work-precision', tmp, 'cases/accuracy/period1-7000rpm.ini',
                 ['workprecision.families=rk4,erk4,erk8', 'workprecision.rtol_tightest=1e-7',
