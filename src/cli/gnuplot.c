@@ -69,7 +69,7 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
          * were drawn in */
         if (rc == 0)
             rc = posix_spawn_file_actions_addchdir_np(&fa, dir);
-        char *argv[] = {exe, spath + strlen(dir) + 1, NULL};
+        char *argv[] = {exe, strrchr(spath, '/') + 1, NULL}; /* the script by its name in dir */
         if (rc == 0)
             rc = posix_spawn(&pid, exe, &fa, NULL, argv, environ);
         posix_spawn_file_actions_destroy(&fa);
