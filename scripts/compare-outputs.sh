@@ -8,7 +8,8 @@
 # directory under /tmp), which holds a symlink `cases` to the repository's cases/, as
 # `geardyn run cases/X.ini --out out/X --quiet --threads T` plus the case's shortening below.
 # Both runs therefore see the same relative paths, which geardyn writes into summary.json
-# (case.path) and gnuplot into the SVGs (<title> of every plotted data file).
+# (case.path); gnuplot runs in the run's stage and names each plotted data file by its bare name
+# in the SVGs (<title> of the data set).
 #
 # Compared, for every file the runs leave (hidden files included):
 #   * exit status, stdout and stderr of the two runs (a failure must be the same failure);
@@ -20,7 +21,7 @@
 #   * .sweep.journal (present only after an interrupted sweep): line by line with the version
 #     and CRC of the header and the wall_s field and CRC of each point record masked;
 #   * everything else (PNG, SVG, ...): byte for byte. gnuplot embeds no date, version of
-#     geardyn or absolute path (the paths are relative), so the pictures are reproducible,
+#     geardyn or path (data files by their bare names), so the pictures are reproducible,
 #     except PIC_SKIP: work_precision.png/.svg plot the errors against the measured CPU time.
 #
 # WORKDIR/hashes.txt lists a SHA-256 prefix of every old output (to compare two runs by hand).

@@ -5,7 +5,7 @@
  *    their keys; the fields checked cover all of sizeof(gd_pair), so a field added to the pair
  *    and not to this table fails here.
  * 2. gd_tca_settings_from_case and gd_ltca_settings_from_case in the same way, with every field
- *    covered.
+ *    covered; their stop hook, which is the caller's and no key's, is left empty.
  * 3. gd_pair_modification_to_case writes the seven [modification] amounts and lengths of a pair
  *    into a case and nothing else: every other key keeps its value. */
 #include "geardyn/gd_scene.h"
@@ -139,6 +139,8 @@ static void conversions(void)
     tap_ok(t.formulation == GD_TCA_BOTH && t.refine == 0, "gd_tca_settings_from_case: formulation %d (both %d), "
            "refine %d (false)", t.formulation, GD_TCA_BOTH, t.refine);
     bytes += sizeof t.formulation + sizeof t.refine;
+    tap_ok(!t.stop.should_stop && !t.stop.user, "gd_tca_settings_from_case: no stop hook (the caller's)");
+    bytes += sizeof t.stop;
     tap_ok(bytes == sizeof t, "gd_tca_settings: the fields checked cover %zu of its %zu bytes", bytes, sizeof t);
 
     const gd_ltca_settings l = gd_ltca_settings_from_case(&c);
@@ -146,6 +148,8 @@ static void conversions(void)
     tap_ok(l.pinion_axial == GD_PINION_FIXED && l.refine == 0, "gd_ltca_settings_from_case: pinion_axial %d "
            "(fixed %d), refine %d (false)", l.pinion_axial, GD_PINION_FIXED, l.refine);
     bytes += sizeof l.pinion_axial + sizeof l.refine;
+    tap_ok(!l.stop.should_stop && !l.stop.user, "gd_ltca_settings_from_case: no stop hook (the caller's)");
+    bytes += sizeof l.stop;
     tap_ok(bytes <= sizeof l && sizeof l - bytes < sizeof(double), "gd_ltca_settings: the fields checked cover %zu "
            "of its %zu bytes (the rest is padding)", bytes, sizeof l);
     gd_case_free(&c);

@@ -58,6 +58,21 @@ GD_API const char *gd_status_name(gd_status code);
 /* The command-line exit status for an error code: 2 for bad input, 1 otherwise. */
 GD_API int gd_status_exit_code(gd_status code);
 
+/* A caller's way to stop a long computation early (a signal, a user's cancel): should_stop(user)
+ * is asked between units of work (a contact position, an objective evaluation), possibly from
+ * several threads at once; nonzero ends the computation with GD_ERR_INTERRUPTED and no result.
+ * should_stop NULL: never stopped. */
+typedef struct gd_stop_hook {
+    int (*should_stop)(void *user);
+    void *user;
+} gd_stop_hook;
+
+/* Whether h (may be NULL) asks to stop now. */
+static inline int gd_stop_asked(const gd_stop_hook *h)
+{
+    return h && h->should_stop && h->should_stop(h->user) != 0;
+}
+
 #ifdef __cplusplus
 }
 #endif

@@ -76,6 +76,8 @@ typedef struct gd_ltca_settings {
     int face_slices;         /* slices per half: the face grid of the TCA under it */
     int profile_points;      /* the profile grid of the TCA under it */
     int refine;              /* the TCA's refinement of the grid minimum */
+    gd_stop_hook stop;       /* gd_ltca_run, _run_opts and what calls them: asked before each position
+                                solved (not part of the LTCA's cache key: it does not change the result) */
 } gd_ltca_settings;
 
 /* Workspace of one pair: TCA workspace, tooth compliance tables, matrices; create once, solve

@@ -100,6 +100,8 @@ typedef struct gd_opt_settings {
     double local_xtol;       /* local NLopt methods: xtol_abs in the normalised box (0: 1e-8) */
     double local_step;       /* local NLopt methods: initial step in the normalised box (0: 0.25) */
     int keep_history;        /* record every evaluation (f_history, best_history) */
+    gd_stop_hook stop;       /* asked before each objective evaluation (from the threads evaluating a
+                                population); stopped: GD_ERR_INTERRUPTED, no result */
 } gd_opt_settings;
 
 GD_API void gd_opt_settings_default(gd_opt_settings *s);
@@ -219,6 +221,7 @@ typedef struct gd_opt_compare_settings {
     double target_loosest;   /* ECDF targets log-spaced from target_loosest down to target */
     int ntargets;            /* >= 1 (1: the target only) */
     int threads;             /* runs in parallel over (algorithm, run); 0 the OpenMP default */
+    gd_stop_hook stop;       /* every run's gd_opt_settings.stop */
 } gd_opt_compare_settings;
 
 typedef struct gd_opt_compare_run {

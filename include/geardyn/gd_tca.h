@@ -48,6 +48,7 @@ typedef struct gd_tca_settings {
     int refine;                      /* 1: the grid minimum refined to the exact minimum (Newton) */
     int positions_per_cycle, cycles; /* gd_tca_run: pinion positions per mesh cycle, mesh cycles */
     int formulation;                 /* gd_tca_run: gd_tca_formulation (gd_case.h) */
+    gd_stop_hook stop;               /* gd_tca_run: asked before each pinion position of each half */
 } gd_tca_settings;
 
 /* The first contact of one half at one pinion position. */

@@ -130,10 +130,13 @@ typedef struct gd_wp_result {
 } gd_wp_result;
 
 /* Progress: called before each run (what: "reference", "check", "grid", "order") and after
- * it with the finished run (run != NULL). Return nonzero to stop with GD_ERR_INTERRUPTED. */
+ * it with the finished run (run != NULL). Return nonzero to stop with GD_ERR_INTERRUPTED.
+ * should_stop is asked also after every mesh period of every integration (the transient, the
+ * reference and its Lyapunov exponent, each run): nonzero stops with GD_ERR_INTERRUPTED. */
 typedef struct gd_wp_hooks {
     int (*start)(void *user, const char *what, const char *label, int index, int total);
     int (*done)(void *user, const char *what, const gd_wp_run *run, const gd_wp_result *res);
+    int (*should_stop)(void *user);
 } gd_wp_hooks;
 
 

@@ -302,7 +302,8 @@ static void opts_of(const gd_case *c, const wp_setting *w, gd_solver_opts *o)
  * events, the RMS of the mean mesh acceleration (when sample) and the statistics. A failed or
  * over-budget run is not an error of the analysis: it is reported in tr->status. */
 static gd_status run_one(const gd_case *c, const gd_model *m, const wp_setting *w, const double *y0,
-                         const gd_modes *md0, long periods, int sample, long budget, wp_trace *tr, gd_error *err)
+                         const gd_modes *md0, long periods, int sample, long budget, const gd_stop_hook *stop,
+                         wp_trace *tr, gd_error *err)
 {
     memset(tr, 0, sizeof *tr);
     tr->pts = malloc(sizeof(double) * (size_t)m->n * (size_t)(periods + 1));
@@ -345,7 +346,10 @@ static gd_status run_one(const gd_case *c, const gd_model *m, const wp_setting *
         if (w->exact_samples || c->exact_samples) /* samples on step ends, as in a response run */
             gd_sim_set_sample_grid(s, 0.0, x.dt_sample);
     }
+    int stopped = 0;
     for (long k = 0; k < periods; k++) {
+        if ((stopped = gd_stop_asked(stop)))
+            break;
         st = gd_sim_period(s, &e);
         if (st != GD_OK)
             break;
@@ -354,6 +358,10 @@ static gd_status run_one(const gd_case *c, const gd_model *m, const wp_setting *
     }
     gd_sim_get_stats(s, &tr->stats);
     gd_sim_free(s);
+    if (stopped) {
+        trace_free(tr);
+        return gd_error_set(err, GD_ERR_INTERRUPTED, "interrupted");
+    }
     tr->cpu = gd_clock_thread_cpu_s() - t0;
     if (x.nomem)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the event list");
@@ -450,8 +458,15 @@ static double event_error(const wp_trace *ref, const wp_trace *tr, double t_end,
 
 /* ---------------------------------------------------------------- the analysis */
 
+/* The response's progress hook: asks the stop hook after each mesh period. */
+static int lyapunov_progress(void *user, long period, long total)
+{
+    (void)period, (void)total;
+    return gd_stop_asked(user);
+}
+
 static gd_status lyapunov_run(const gd_case *c, const gd_model *m, const wp_setting *w, const double *y0,
-                              const gd_modes *md0, long periods, double *mle, gd_error *err)
+                              const gd_modes *md0, long periods, const gd_stop_hook *stop, double *mle, gd_error *err)
 {
     gd_case cc = *c;
     cc.transient_periods = 0;
@@ -474,7 +489,8 @@ static gd_status lyapunov_run(const gd_case *c, const gd_model *m, const wp_sett
     ro.y0 = y0;
     ro.md0 = md0;
     gd_response_result rr;
-    gd_status st = gd_response_run(&cc, m, &ro, NULL, NULL, &rr, err);
+    const gd_response_hooks hooks = {.progress = lyapunov_progress};
+    gd_status st = gd_response_run(&cc, m, &ro, &hooks, (void *)stop, &rr, err);
     *mle = st == GD_OK ? rr.mle_per_period : NAN;
     return st;
 }
@@ -512,11 +528,15 @@ static void fill_run(gd_wp_run *r, const wp_trace *tr, const wp_trace *ref, long
 
 static int hook_start(const gd_wp_hooks *h, void *user, const char *what, const char *label, int i, int n)
 {
+    if (h && h->should_stop && h->should_stop(user))
+        return 1;
     return h && h->start ? h->start(user, what, label, i, n) : 0;
 }
 
 static int hook_done(const gd_wp_hooks *h, void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res)
 {
+    if (h && h->should_stop && h->should_stop(user))
+        return 1;
     return h && h->done ? h->done(user, what, r, res) : 0;
 }
 
@@ -634,6 +654,7 @@ typedef struct wp_job {
     const gd_model *m;
     const gd_wp_hooks *hooks;
     void *user;
+    gd_stop_hook stop;       /* hooks->should_stop, asked after every mesh period of every integration */
     long W, H;               /* window and horizon, mesh periods */
     double y0[GD_MAX_STATE];
     gd_modes md0;
@@ -663,7 +684,7 @@ static gd_status wp_start_state(wp_job *j, gd_error *err)
         if ((st = gd_sim_create(m, &o, j->y0, &j->md0, &s, err)) != GD_OK)
             return gd_error_prefix(err, "work-precision transient");
         for (long k = 0; k < c->transient_periods && st == GD_OK; k++)
-            st = gd_sim_period(s, err);
+            st = gd_stop_asked(&j->stop) ? interrupted(err) : gd_sim_period(s, err);
         if (st == GD_OK) {
             memcpy(j->y0, gd_sim_state(s), sizeof(double) * (size_t)m->n);
             j->md0 = *gd_sim_modes(s);
@@ -671,7 +692,7 @@ static gd_status wp_start_state(wp_job *j, gd_error *err)
         }
         gd_sim_free(s);
         if (st != GD_OK)
-            return gd_error_prefix(err, "work-precision transient");
+            return st == GD_ERR_INTERRUPTED ? st : gd_error_prefix(err, "work-precision transient");
     }
     memcpy(j->res->start_state, j->y0, sizeof(double) * (size_t)m->n);
     return GD_OK;
@@ -684,7 +705,7 @@ static gd_status wp_reference_and_check(wp_job *j, const wp_setting *wr, const w
     gd_wp_reference *R = &j->res->ref;
     if (hook_start(j->hooks, j->user, "reference", R->method, 0, 2))
         return interrupted(err);
-    gd_status st = run_one(j->c, j->m, wr, j->y0, &j->md0, j->W, 1, 0, &j->ref, err);
+    gd_status st = run_one(j->c, j->m, wr, j->y0, &j->md0, j->W, 1, 0, &j->stop, &j->ref, err);
     if (st != GD_OK)
         return st;
     if (j->ref.status != GD_WP_OK)
@@ -697,7 +718,7 @@ static gd_status wp_reference_and_check(wp_job *j, const wp_setting *wr, const w
     R->rms_accel_mps2 = j->ref.rms;
     if (hook_start(j->hooks, j->user, "check", R->check_method, 1, 2))
         return interrupted(err);
-    if ((st = run_one(j->c, j->m, wc, j->y0, &j->md0, j->W, 1, 0, chk, err)) != GD_OK)
+    if ((st = run_one(j->c, j->m, wc, j->y0, &j->md0, j->W, 1, 0, &j->stop, chk, err)) != GD_OK)
         return st;
     if (chk->status != GD_WP_OK)
         return gd_error_set(err, GD_ERR_SOLVER, "the check of the reference (%s) failed: %s", R->check_method,
@@ -719,7 +740,7 @@ static gd_status wp_reference_class(wp_job *j, const wp_setting *wr, const wp_tr
     if (need_mle) {
         if (hook_start(j->hooks, j->user, "reference", "largest Lyapunov exponent", 1, 2))
             return interrupted(err);
-        if ((st = lyapunov_run(c, j->m, wr, j->y0, &j->md0, j->W, &R->mle_per_period, err)) != GD_OK) {
+        if ((st = lyapunov_run(c, j->m, wr, j->y0, &j->md0, j->W, &j->stop, &R->mle_per_period, err)) != GD_OK) {
             gd_error_prefix(err, "the Lyapunov exponent of the reference");
             return st;
         }
@@ -814,7 +835,7 @@ static gd_status wp_grid_measure(wp_job *j, const wp_setting *w, gd_wp_run *r, i
     const gd_case *c = j->c;
     const gd_wp_reference *R = &j->res->ref;
     wp_trace tr;
-    gd_status st = run_one(c, j->m, w, j->y0, &j->md0, j->W, 1, c->wp_max_steps_per_period, &tr, err);
+    gd_status st = run_one(c, j->m, w, j->y0, &j->md0, j->W, 1, c->wp_max_steps_per_period, &j->stop, &tr, err);
     if (st != GD_OK) {
         trace_free(&tr);
         return st;
@@ -822,7 +843,7 @@ static gd_status wp_grid_measure(wp_job *j, const wp_setting *w, gd_wp_run *r, i
     double best = tr.cpu;
     for (int k = 1; k < c->wp_repeats && tr.status == GD_WP_OK; k++) {
         wp_trace again;
-        st = run_one(c, j->m, w, j->y0, &j->md0, j->W, 1, c->wp_max_steps_per_period, &again, err);
+        st = run_one(c, j->m, w, j->y0, &j->md0, j->W, 1, c->wp_max_steps_per_period, &j->stop, &again, err);
         if (st == GD_OK)
             best = fmin(best, again.cpu);
         trace_free(&again);
@@ -840,8 +861,13 @@ static gd_status wp_grid_measure(wp_job *j, const wp_setting *w, gd_wp_run *r, i
     *over = tr.status == GD_WP_OVER_BUDGET;
     if (tr.status == GD_WP_OK && R->chaotic && c->wp_lyapunov && isfinite(R->mle_per_period)) {
         gd_error le = {0};
-        if (lyapunov_run(c, j->m, w, j->y0, &j->md0, j->W, &r->mle_per_period, &le) == GD_OK)
+        st = lyapunov_run(c, j->m, w, j->y0, &j->md0, j->W, &j->stop, &r->mle_per_period, &le);
+        if (st == GD_OK)
             r->err_mle = fabs(r->mle_per_period - R->mle_per_period);
+        else if (st == GD_ERR_INTERRUPTED) { /* a failed exponent is only missing; a stop ends the analysis */
+            trace_free(&tr);
+            return interrupted(err);
+        }
     }
     trace_free(&tr);
     return GD_OK;
@@ -914,7 +940,7 @@ static gd_status wp_order_level(wp_job *j, int f, long s, gd_wp_order *O, int id
     if (hook_start(j->hooks, j->user, "order", r->label, idx, total))
         return interrupted(err);
     wp_trace tr;
-    gd_status st = run_one(c, j->m, &w, j->y0, &j->md0, j->H, 0, c->wp_max_steps_per_period, &tr, err);
+    gd_status st = run_one(c, j->m, &w, j->y0, &j->md0, j->H, 0, c->wp_max_steps_per_period, &j->stop, &tr, err);
     if (st == GD_OK)
         fill_run(r, &tr, &j->ref, j->H, j->H, 1, j->m->period, j->m->n, err, &st);
     if (st != GD_OK) {
@@ -982,6 +1008,7 @@ GD_API gd_status gd_workprec_run(const gd_case *c, const gd_model *m, const gd_w
     j->m = m;
     j->hooks = hooks;
     j->user = user;
+    j->stop = (gd_stop_hook){hooks ? hooks->should_stop : NULL, user};
     j->W = c->record_periods;
     j->H = c->wp_horizon_periods < j->W ? c->wp_horizon_periods : j->W;
     j->res = res;

@@ -361,15 +361,34 @@ typedef struct load_ctx {
     const char *next;  /* the rest of the checked text (case_text.h): one line per line of the file */
     int line;
     int failed;
+    char section[GD_CASE_MAX_LINE + 1]; /* the section being read, its header's line, its keys so far */
+    int section_line, section_keys;
 } load_ctx;
 
+/* A section header followed by no key before the next header or the end of the file is refused:
+ * it would leave every key of the section at its default while the file seems to set them. */
+static int section_empty(load_ctx *ctx)
+{
+    if (ctx->section_line == 0 || ctx->section_keys > 0)
+        return 0;
+    gd_error_set(ctx->err, GD_ERR_INPUT, "%s:%d: [%s]: section has no keys (valid: key = value lines under the "
+                 "header, or no header)", ctx->c->path, ctx->section_line, ctx->section);
+    ctx->failed = 1;
+    return 1;
+}
+
 /* inih's stream reader: one line of the checked text per call, so ctx->line is the file's line.
- * A section header is checked here, where it is seen, so that an empty [section] is checked too. */
+ * A section header is checked here, where it is seen, so that an empty [section] is checked too;
+ * the section it ends, or the end of the file, must have had a key. */
 static char *reader(char *str, int num, void *stream)
 {
     load_ctx *ctx = stream;
-    if (ctx->failed || !*ctx->next)
+    if (ctx->failed)
         return NULL;
+    if (!*ctx->next) {
+        section_empty(ctx);
+        return NULL;
+    }
     size_t l = strcspn(ctx->next, "\n") + 1;  /* at most GD_CASE_MAX_LINE + 1 < num */
     if (l >= (size_t)num)
         l = (size_t)num - 1;
@@ -387,6 +406,11 @@ static char *reader(char *str, int num, void *stream)
             ctx->failed = 1;
             return NULL;
         }
+        if (section_empty(ctx))
+            return NULL;
+        snprintf(ctx->section, sizeof ctx->section, "%s", name);
+        ctx->section_line = ctx->line;
+        ctx->section_keys = 0;
     }
     return str;
 }
@@ -420,6 +444,7 @@ static int handler(void *user, const char *section, const char *name, const char
     if (store(ctx->c, k, value, where, ctx->err) != GD_OK)
         return 0;
     ctx->failed = 0;
+    ctx->section_keys++;
     ctx->c->src[i] = GD_SRC_FILE;
     ctx->c->src_line[i] = ctx->line;
     return 1;
@@ -434,7 +459,7 @@ GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
     if (st != GD_OK)
         return st;
     snprintf(c->path, sizeof c->path, "%s", path);
-    load_ctx ctx = {c, err, text, 0, 0};
+    load_ctx ctx = {.c = c, .err = err, .next = text};
     int rc = ini_parse_stream(reader, &ctx, handler, &ctx);
     free(text);
     if (ctx.failed)

@@ -4,6 +4,7 @@
  * one (continuation.overlay_sweep). Drawn by gnuplot from branch.csv and bifurcations.csv. */
 #include "cli.h"
 
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -31,12 +32,12 @@ static resp_cols response_columns(int response, int n)
     return r;
 }
 
-static void plot_one(gd_gnuplot_script *s, const char *dir, const gd_case *c, const gd_contin_result *res,
+static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c, const gd_contin_result *res,
                      const char *term, const char *ext)
 {
     resp_cols rc = response_columns(c->cont_response, res->n);
     const char *key = strchr(res->parameter, '.') + 1;
-    gd_gnuplot_printf(s, "set terminal %s\nset output '%s/.continuation%s.tmp'\n", term, dir, ext);
+    gd_gnuplot_printf(s, "set terminal %s\nset output '.continuation%s.tmp'\n", term, ext);
     gd_gnuplot_printf(s, "set title \"%s%scontinuation in %s: solid stable, dashed unstable\" noenhanced\n",
                       c->title, c->title[0] ? "\\n" : "", res->parameter);
     gd_gnuplot_printf(s, "set xlabel '%s' noenhanced\nset ylabel '%s'\nset grid\nset key outside right top "
@@ -46,11 +47,11 @@ static void plot_one(gd_gnuplot_script *s, const char *dir, const gd_case *c, co
     /* a segment joins consecutive points of branch b: solid when both ends are stable, dashed otherwise */
     for (int b = 0; b < res->nbranches; b++) {
         for (int stable = 1; stable >= 0; stable--) {
-            gd_gnuplot_printf(s, "%sk1 = -1, x1 = 0, y1 = 0, s1 = 0, '%s/branch.csv' every ::1 using (x0 = x1, "
+            gd_gnuplot_printf(s, "%sk1 = -1, x1 = 0, y1 = 0, s1 = 0, 'branch.csv' every ::1 using (x0 = x1, "
                                  "x1 = $4, y0 = y1, y1 = $%d, k0 = k1, k1 = $1, s0 = s1, s1 = $6, k0 == %d && k1 == %d "
                                  "&& (s0 == 1 && s1 == 1) == %d ? x0 : 1/0):(y0):(x1 - x0):(y1 - y0) with vectors "
                                  "nohead lw 2 dt %d lc %d notitle",
-                              sep, dir, rc.branch_col, b, b, stable, stable ? 1 : 2, b + 1);
+                              sep, rc.branch_col, b, b, stable, stable ? 1 : 2, b + 1);
             sep = ", \\\n  ";
         }
         gd_gnuplot_printf(s, "%s1/0 with lines lw 2 lc %d title 'branch %d: period %d'", sep, b + 1, b,
@@ -61,17 +62,17 @@ static void plot_one(gd_gnuplot_script *s, const char *dir, const gd_case *c, co
         {"fold", "fold", "F", 7}, {"period-doubling", "period doubling", "PD", 5},
         {"neimark-sacker", "Neimark-Sacker", "NS", 13}, {"contact-change", "contact change (grazing)", "C", 9}};
     for (int k = 0; k < 4; k++)
-        gd_gnuplot_printf(s, "%s'%s/bifurcations.csv' every ::1 using 4:(strcol(3) eq '%s' ? $%d : 1/0) with points "
-                             "pt %d ps 1.6 lc rgb 'black' title '%s', \\\n  '%s/bifurcations.csv' every ::1 using "
+        gd_gnuplot_printf(s, "%s'bifurcations.csv' every ::1 using 4:(strcol(3) eq '%s' ? $%d : 1/0) with points "
+                             "pt %d ps 1.6 lc rgb 'black' title '%s', \\\n  'bifurcations.csv' every ::1 using "
                              "4:(strcol(3) eq '%s' ? $%d : 1/0):('%s') with labels offset 0.8,0.8 notitle",
-                          sep, dir, kinds[k].kind, rc.bif_col, kinds[k].pt, kinds[k].label, dir, kinds[k].kind,
+                          sep, kinds[k].kind, rc.bif_col, kinds[k].pt, kinds[k].label, kinds[k].kind,
                           rc.bif_col, kinds[k].mark);
-    if (c->cont_overlay_sweep[0])
+    if (overlay)
         gd_gnuplot_printf(s, "%s'%s/%s' using 'parameter':(strcol('direction') eq 'up' ? column('%s') : 1/0) with "
                              "points pt 8 ps 0.9 lc rgb '#555555' title 'sweep up', \\\n  '%s/%s' using 'parameter':"
                              "(strcol('direction') eq 'down' ? column('%s') : 1/0) with points pt 10 ps 0.9 lc rgb "
                              "'#555555' title 'sweep down'",
-                          sep, c->cont_overlay_sweep, rc.sweep_file, rc.sweep_col, c->cont_overlay_sweep,
+                          sep, overlay, rc.sweep_file, rc.sweep_col, overlay,
                           rc.sweep_file, rc.sweep_col);
     gd_gnuplot_printf(s, "\nunset output\n");
 }
@@ -80,10 +81,17 @@ gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_cont
 {
     if (res->nbranches == 0)
         return GD_OK;
+    /* gnuplot reads the tables in dir, where it runs; the overlay sweep, named relative to this
+     * process's working directory, by its absolute path */
+    char *overlay = NULL;
+    if (c->cont_overlay_sweep[0] && !(overlay = realpath(c->cont_overlay_sweep, NULL)))
+        return gd_error_set(err, GD_ERR_IO, "%s: continuation.overlay_sweep: %s", c->cont_overlay_sweep,
+                            strerror(errno));
     gd_gnuplot_script s = {0};
     gd_gnuplot_printf(&s, "set datafile separator ','\nset datafile missing 'NaN'\n");
-    plot_one(&s, dir, c, res, "pngcairo size 1200,720 font ',11'", ".png");
-    plot_one(&s, dir, c, res, "svg size 1200,720 dynamic font 'sans,11'", ".svg");
+    plot_one(&s, overlay, c, res, "pngcairo size 1200,720 font ',11'", ".png");
+    plot_one(&s, overlay, c, res, "svg size 1200,720 dynamic font 'sans,11'", ".svg");
+    free(overlay);
     if (s.bad) {
         free(s.p);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the continuation's gnuplot script");

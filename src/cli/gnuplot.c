@@ -56,14 +56,24 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
     close(fd);
     snprintf(logpath, sizeof logpath, "%s.log", spath);
     posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&fa, 2, logpath, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    char *argv[] = {exe, spath, NULL};
-    pid_t pid;
-    int rc = posix_spawn(&pid, exe, &fa, NULL, argv, environ);
-    posix_spawn_file_actions_destroy(&fa);
+    pid_t pid = -1;
+    int rc = posix_spawn_file_actions_init(&fa);
+    if (rc == 0) {
+        rc = posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
+        if (rc == 0)
+            rc = posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+        if (rc == 0)
+            rc = posix_spawn_file_actions_addopen(&fa, 2, logpath, O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        /* gnuplot runs in dir and the script names every file relative to it: a picture names
+         * its data files (an SVG in the <title> of each data set) without the directory they
+         * were drawn in */
+        if (rc == 0)
+            rc = posix_spawn_file_actions_addchdir_np(&fa, dir);
+        char *argv[] = {exe, strrchr(spath, '/') + 1, NULL}; /* the script by its name in dir */
+        if (rc == 0)
+            rc = posix_spawn(&pid, exe, &fa, NULL, argv, environ);
+        posix_spawn_file_actions_destroy(&fa);
+    }
     gd_status st = GD_OK;
     if (rc != 0) {
         st = gd_error_set(err, GD_ERR_IO, "cannot start gnuplot: %s", strerror(rc));

@@ -9,10 +9,11 @@
 
 /* 1 when gnuplot is on the PATH. */
 int gd_gnuplot_available(void);
-/* Run gnuplot on a script in dir, quietly. */
+/* Run gnuplot on a script in dir, quietly, with dir its working directory: the script names the
+ * files it reads and writes relative to dir. */
 gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err);
-/* gd_gnuplot_run on a script that writes each picture of names[] as dir/.NAME.png.tmp and
- * dir/.NAME.svg.tmp; when it succeeded and every picture is whole (a PNG to its IEND chunk, an SVG to
+/* gd_gnuplot_run on a script that writes each picture of names[] as .NAME.png.tmp and
+ * .NAME.svg.tmp (in dir); when it succeeded and every picture is whole (a PNG to its IEND chunk, an SVG to
  * its </svg>) they move into place (NAME.png, NAME.svg), else the run gets a note. The temporary
  * files are removed either way. */
 gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const *names, int nnames, gd_error *err);

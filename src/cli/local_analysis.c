@@ -37,29 +37,29 @@ void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir 
     vhi += pv;
     for (int k = 0; k < 2; k++) {
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.response%s.tmp'\nset datafile separator ','\n"
+            "set terminal %s\nset output '.response%s.tmp'\nset datafile separator ','\n"
             "set multiplot layout 2,2 title '%s: %s, %s, largest Lyapunov exponent %.4g per mesh period'\n"
             "set grid\nunset key\n"
             "set title 'Time history (last %d mesh periods)'\nset xlabel 't (ms)'\nset ylabel '%s (um)'\n"
             "set xrange [%.12g:%.12g]\n"
-            "plot '%s/variable.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $2 : 1/0) with lines lw 1.2\n"
+            "plot 'variable.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $2 : 1/0) with lines lw 1.2\n"
             "set xrange [*:*]\n"
             "set title 'Phase portrait'\nset xlabel '%s (um)'\nset ylabel 'rate (m/s)'\n"
-            "plot '%s/variable.csv' every ::1 using 2:3 with lines lw 0.6 lc rgb '#4477aa', "
-            "'%s/variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
+            "plot 'variable.csv' every ::1 using 2:3 with lines lw 0.6 lc rgb '#4477aa', "
+            "'variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
             "set title 'Amplitude spectrum (Hann window)'\nset xlabel 'order of the mesh frequency (%.6g Hz)'\n"
             "set ylabel 'amplitude (um)'\nset xrange [0:%g]\nset x2tics\nset x2label 'frequency (Hz)'\n"
             "set link x2 via x*%.12g inverse x/%.12g\nset logscale y\nset format y '%%g'\nset yrange [%.6g:*]\n"
-            "plot '%s/spectrum.csv' every ::1 using 2:($3 > %.6g ? $3 : %.6g) with impulses lw 1.5\n"
+            "plot 'spectrum.csv' every ::1 using 2:($3 > %.6g ? $3 : %.6g) with impulses lw 1.5\n"
             "unset logscale y\nset yrange [*:*]\nunset x2tics\nunset x2label\nunset link x2\nset xrange [*:*]\n"
             "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n"
             "set title 'Poincare section (%d distinct points)'\nset xlabel '%s (um)'\nset ylabel 'rate (m/s)'\n"
-            "plot '%s/variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
+            "plot 'variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
             "unset multiplot\nunset output\nset xrange [*:*]\nset yrange [*:*]\n",
-            fmt[k][0], dir, fmt[k][1], v, r->motion, gd_impact_regime_name(r->impact_regime[2]),
-            r->n_lyapunov ? r->mle_per_period : 0.0 / 0.0, shown, v, 1e3 * t_from, 1e3 * t_end, dir, t_from, v, dir,
-            dir, m->mesh_freq_hz, fmax_order, m->mesh_freq_hz, m->mesh_freq_hz, floor_amp, dir, floor_amp, floor_amp,
-            xlo, xhi, vlo, vhi, r->poincare_distinct, v, dir);
+            fmt[k][0], fmt[k][1], v, r->motion, gd_impact_regime_name(r->impact_regime[2]),
+            r->n_lyapunov ? r->mle_per_period : 0.0 / 0.0, shown, v, 1e3 * t_from, 1e3 * t_end, t_from, v,
+            m->mesh_freq_hz, fmax_order, m->mesh_freq_hz, m->mesh_freq_hz, floor_amp, floor_amp, floor_amp,
+            xlo, xhi, vlo, vhi, r->poincare_distinct, v);
     }
     gd_error perr = {0};
     static const char *names[] = {"response"};

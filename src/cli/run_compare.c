@@ -50,7 +50,7 @@ static gd_status draw(const char *dir, const gd_compare_outcome *C, gd_error *er
             int cols = panels < 3 ? panels : 3, rows = (panels + cols - 1) / cols;
             char term[128];
             snprintf(term, sizeof term, fmt[fi][0], cols == 1 ? 900 : 520 * cols + 200, 420 * rows + 60);
-            OUT("set terminal %s\nset output '%s/.%s%s.tmp'\n", term, dir, pic ? "ecdf" : "convergence", fmt[fi][1]);
+            OUT("set terminal %s\nset output '.%s%s.tmp'\n", term, pic ? "ecdf" : "convergence", fmt[fi][1]);
             OUT("set multiplot layout %d,%d title '%s: %d optimisers, %d runs each, budget %ld evaluations' noenhanced\n", rows,
                 cols, pic ? "Runtime distributions (fraction of (run, target) pairs reached)"
                           : "Convergence: median and quartiles of best - f_ref over the runs", r0->nalgs, r0->runs, r0->budget);
@@ -79,13 +79,13 @@ static gd_status draw(const char *dir, const gd_compare_outcome *C, gd_error *er
                     snprintf(sel, sizeof sel, "strcol(1) eq '%s' && $2 == %d && strcol(3) eq '%s'",
                              pooled ? "all" : obj_name(q), pooled ? 0 : q->dim, an);
                     if (pic == 0)
-                        OUT("%s'%s/convergence.csv' every ::1 using (%s ? $4 : 1/0):($5 > 0 ? $5 : 1/0):($7 > 0 ? $7 : 1/0) "
+                        OUT("%s'convergence.csv' every ::1 using (%s ? $4 : 1/0):($5 > 0 ? $5 : 1/0):($7 > 0 ? $7 : 1/0) "
                             "with filledcurves fs transparent solid 0.12 noborder lc rgb '%s' notitle, "
                             "'' every ::1 using (%s ? $4 : 1/0):($6 > 0 ? $6 : 1/0) with lines lw 2 lc rgb '%s' "
-                            "title '%s' noenhanced", a ? ", " : "", dir, sel, colour, sel, colour, an);
+                            "title '%s' noenhanced", a ? ", " : "", sel, colour, sel, colour, an);
                     else
-                        OUT("%s'%s/ecdf.csv' every ::1 using (%s ? $4 : 1/0):5 with steps lw 2 lc rgb '%s' title '%s' noenhanced",
-                            a ? ", " : "", dir, sel, colour, an);
+                        OUT("%s'ecdf.csv' every ::1 using (%s ? $4 : 1/0):5 with steps lw 2 lc rgb '%s' title '%s' noenhanced",
+                            a ? ", " : "", sel, colour, an);
                 }
                 OUT("\n");
             }

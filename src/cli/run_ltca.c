@@ -28,41 +28,41 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
     n += snprintf(script + n, sizeof script - n, "set datafile separator ','\n");
     for (int fi = 0; fi < 2; fi++) {
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.load_distribution%s.tmp'\n"
+            "set terminal %s\nset output '.load_distribution%s.tmp'\n"
             "set multiplot layout 1,%d title 'Load distribution on the unrolled pinion flank over one mesh cycle "
             "(%d positions, %.0f N m)'\n"
             "set xlabel 'face position from the middle of the half (mm)'\nset ylabel 'roll length (mm)'\n"
             "set cblabel 'line load (N/mm)'\nset palette defined (0 '#fff7bc', 1 '#fec44f', 2 '#d95f0e', 3 '#7f0000')\n"
             "set key off\nset grid\nset xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\nset cbrange [0:*]\n",
-            fmt[fi][0], dir, fmt[fi][1], r->halves, r->npos, r->torque_nm, zl * 1e3 - 1, zh * 1e3 + 1, rl * 1e3 - 1,
+            fmt[fi][0], fmt[fi][1], r->halves, r->npos, r->torque_nm, zl * 1e3 - 1, zh * 1e3 + 1, rl * 1e3 - 1,
             rh * 1e3 + 1);
         for (int h = 0; h < r->halves; h++)
             n += snprintf(script + n, sizeof script - n,
                 "set title '%s half: load share %.3f, max pressure %.0f MPa%s'\n"
-                "plot '%s/load_distribution.csv' every ::1 using (strcol(3) eq '%s' && $9 > 0 ? $6 : 1/0):7:10 "
+                "plot 'load_distribution.csv' every ::1 using (strcol(3) eq '%s' && $9 > 0 ? $6 : 1/0):7:10 "
                 "with points pt 7 ps 0.6 lc palette\n",
                 half_name[h], r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_kinds[h] ? ", edge loading" : "",
-                dir, half_name[h]);
+                half_name[h]);
         n += snprintf(script + n, sizeof script - n, "unset multiplot\nunset output\nset autoscale\n");
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.lte%s.tmp'\n"
+            "set terminal %s\nset output '.lte%s.tmp'\n"
             "set multiplot layout 1,2 title 'Loaded transmission error (Eq. 12) and mesh stiffness (Eq. 14)'\n"
             "set xlabel 'pinion angle (deg)'\nset ylabel 'arc-seconds of the gear, about the mean'\n"
             "set key on bottom right\nset title 'LTE %.4f arcsec p-p (mean %.4f)'\n"
-            "plot '%s/lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 title 'LTE'",
-            fmt[fi][0], dir, fmt[fi][1], r->lte_pp_arcsec, r->lte_mean_arcsec, dir, r->lte_mean_arcsec);
+            "plot 'lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 title 'LTE'",
+            fmt[fi][0], fmt[fi][1], r->lte_pp_arcsec, r->lte_mean_arcsec, r->lte_mean_arcsec);
         for (int h = 0; h < r->halves; h++) {
             double gm = 0;
             for (int k = 0; k < r->npos; k++)
                 gm += r->gte_arcsec[h][k] / r->npos;
-            n += snprintf(script + n, sizeof script - n, ", '%s/lte.csv' every ::1 using 1:($%d - %.10g) with lines "
-                          "lw 1.5 dt %d title 'GTE %s (TCA)'", dir, 4 + 8 * h, gm, 2 + h, half_name[h]);
+            n += snprintf(script + n, sizeof script - n, ", 'lte.csv' every ::1 using 1:($%d - %.10g) with lines "
+                          "lw 1.5 dt %d title 'GTE %s (TCA)'", 4 + 8 * h, gm, 2 + h, half_name[h]);
         }
         n += snprintf(script + n, sizeof script - n,
             "\nset ylabel 'mesh stiffness (N/um)'\nset title 'mesh stiffness of each half'\nplot ");
         for (int h = 0; h < r->halves; h++)
-            n += snprintf(script + n, sizeof script - n, "%s'%s/lte.csv' every ::1 using 1:($%d*1e-6) with "
-                          "linespoints pt 7 ps 0.5 title '%s half'", h ? ", " : "", dir, 8 + 8 * h, half_name[h]);
+            n += snprintf(script + n, sizeof script - n, "%s'lte.csv' every ::1 using 1:($%d*1e-6) with "
+                          "linespoints pt 7 ps 0.5 title '%s half'", h ? ", " : "", 8 + 8 * h, half_name[h]);
         n += snprintf(script + n, sizeof script - n, "\nunset multiplot\nunset output\n");
     }
     if (n >= (int)sizeof script)

@@ -29,33 +29,33 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
     n += snprintf(script + n, sizeof script - n, "set datafile separator ','\n");
     for (int fi = 0; fi < 2; fi++) {
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.convergence%s.tmp'\n"
+            "set terminal %s\nset output '.convergence%s.tmp'\n"
             "set title '%s on %s (%d variables): %d run%s of %ld evaluations, best %.6g%s' noenhanced\n"
             "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\nset grid\nset key top right\n"
-            "plot '%s/convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):4 with points pt 7 ps 0.25 lc rgb '#b0b0b0' "
+            "plot 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):4 with points pt 7 ps 0.25 lc rgb '#b0b0b0' "
             "title 'every evaluation (best run)'",
-            fmt[fi][0], dir, fmt[fi][1], gd_opt_algorithm_name(c->opt_algorithm), gd_opt_objective_name(o->objective),
+            fmt[fi][0], fmt[fi][1], gd_opt_algorithm_name(c->opt_algorithm), gd_opt_objective_name(o->objective),
             o->dim, o->runs, o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " arcsec" : "",
-            o->gear ? "LTE peak-to-peak (arcsec)" : "objective", dir, o->best + 1);
+            o->gear ? "LTE peak-to-peak (arcsec)" : "objective", o->best + 1);
         for (int r = 0; r < o->runs && r < 20; r++)
-            n += snprintf(script + n, sizeof script - n, ", '%s/convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):5 "
-                          "with lines lw %d title 'best so far, run %d'", dir, r + 1, r == o->best ? 3 : 1, r + 1);
+            n += snprintf(script + n, sizeof script - n, ", 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):5 "
+                          "with lines lw %d title 'best so far, run %d'", r + 1, r == o->best ? 3 : 1, r + 1);
         n += snprintf(script + n, sizeof script - n, "\nunset output\nunset logscale y\n");
         if (o->gear) {
             double m[3];
             for (int j = 0; j < 3; j++)
                 m[j] = o->lte[j].lte_mean_arcsec;
             n += snprintf(script + n, sizeof script - n,
-                "set terminal %s\nset output '%s/.lte%s.tmp'\n"
+                "set terminal %s\nset output '.lte%s.tmp'\n"
                 "set title 'Loaded transmission error over one mesh cycle, %.0f N m (about each mean)'\n"
                 "set xlabel 'pinion angle (deg)'\nset ylabel 'LTE (arcsec of the gear)'\nset key bottom right\n"
-                "plot '%s/lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 "
+                "plot 'lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 "
                 "title sprintf('unmodified: %.4f arcsec p-p'), "
                 "'' every ::1 using 1:($3 - %.10g) with linespoints pt 5 ps 0.5 lw 2 dt 2 "
                 "title sprintf('paper Table 2: %.4f arcsec p-p'), "
                 "'' every ::1 using 1:($4 - %.10g) with linespoints pt 9 ps 0.6 lw 3 "
                 "title sprintf('optimum: %.4f arcsec p-p')\nunset output\n",
-                fmt[fi][0], dir, fmt[fi][1], c->torque_nm, dir, m[0], o->lte[0].lte_pp_arcsec, m[1],
+                fmt[fi][0], fmt[fi][1], c->torque_nm, m[0], o->lte[0].lte_pp_arcsec, m[1],
                 o->lte[1].lte_pp_arcsec, m[2], o->lte[2].lte_pp_arcsec);
         }
     }

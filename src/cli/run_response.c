@@ -46,24 +46,24 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_model *m, cons
         char right[600] = "";
         if (two)
             snprintf(right, sizeof right,
-                     ", '%s/time_history.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $8 : 1/0) with lines lw 1.5 "
-                     "dt 2 title 'right half'", dir, t_from);
+                     ", 'time_history.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $8 : 1/0) with lines lw 1.5 "
+                     "dt 2 title 'right half'", t_from);
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.time_history%s.tmp'\n"
+            "set terminal %s\nset output '.time_history%s.tmp'\n"
             "set title 'Relative mesh displacement, last %d mesh periods (%s, %s)'\n"
             "set xlabel 't (ms)'\nset ylabel 'mesh deflection {/Symbol l} (um)'\n"
-            "plot '%s/time_history.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $3 : 1/0) with lines lw 1.5 title '%s'%s\n"
+            "plot 'time_history.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $3 : 1/0) with lines lw 1.5 title '%s'%s\n"
             "unset output\n",
-            fmt[f][0], dir, fmt[f][2], shown, r->motion, gd_impact_regime_name(r->impact_regime[2]), dir, t_from,
+            fmt[f][0], fmt[f][2], shown, r->motion, gd_impact_regime_name(r->impact_regime[2]), t_from,
             two ? "left half" : "mesh", right);
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.phase%s.tmp'\n"
+            "set terminal %s\nset output '.phase%s.tmp'\n"
             "set title 'Phase portrait and Poincare section (%s, %d distinct points)'\n"
             "set xlabel 'mesh deflection {/Symbol l}_L (um)'\nset ylabel 'd{/Symbol l}_L/dt (m/s)'\n"
-            "plot '%s/time_history.csv' every ::1 using 3:4 with lines lw 0.8 lc rgb '#7799cc' title 'trajectory', "
-            "'%s/poincare.csv' every ::1 using ($3*%.12g):($4*%.12g) with points pt 7 ps 1.2 lc rgb '#cc2222' title 'Poincare'\n"
+            "plot 'time_history.csv' every ::1 using 3:4 with lines lw 0.8 lc rgb '#7799cc' title 'trajectory', "
+            "'poincare.csv' every ::1 using ($3*%.12g):($4*%.12g) with points pt 7 ps 1.2 lc rgb '#cc2222' title 'Poincare'\n"
             "unset output\n",
-            fmt[f][0], dir, fmt[f][2], r->motion, r->poincare_distinct, dir, dir, m->bc_m * 1e6,
+            fmt[f][0], fmt[f][2], r->motion, r->poincare_distinct, m->bc_m * 1e6,
             m->bc_m * m->omega_n);
     }
     static const char *names[] = {"time_history", "phase"};

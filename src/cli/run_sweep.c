@@ -283,7 +283,7 @@ static const char *branch_line[] = {"pt 6 ps 0.6 lw 2.5", "pt 7 ps 0.35 lw 1", "
 
 /* Fig. 15 of the paper: the bifurcation diagram, the largest Lyapunov exponent and the RMS
  * acceleration, stacked on one parameter axis; up and down in two colours. */
-static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_case *c, const gd_sweep_plan *p,
+static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_sweep_plan *p,
                                const int *has, int mle, const char *term, const char *ext)
 {
     double x0 = fmin(p->values[0][0], p->values[0][p->npoints[0] - 1]);
@@ -296,7 +296,7 @@ static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_c
     char model[32]; /* the schema's name of scene.model */
     gd_case_format_value(c, (size_t)(gd_case_find_key("scene", "model") - gd_case_schema(&nkeys)), model, sizeof model);
     int panels = mle ? 3 : 2;
-    gd_gnuplot_printf(b, "set terminal %s\nset output '%s/.bifurcation%s.tmp'\n", term, dir, ext);
+    gd_gnuplot_printf(b, "set terminal %s\nset output '.bifurcation%s.tmp'\n", term, ext);
     gd_gnuplot_printf(b, "set multiplot layout %d,1 margins 0.1,0.96,0.07,0.93 spacing 0,0.025 title 'Sweep of %s (%s model, %s)'\n",
         panels, p->parameter[0], model,
         p->mode == GD_SWEEP_CONTINUATION ? "continuation" : "independent points");
@@ -307,9 +307,9 @@ static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_c
     int first = 1;
     for (int br = 0; br < 3; br++)
         if (has[br]) {
-            gd_gnuplot_printf(b, "%s'%s/bifurcation.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(3) : 1/0) with points %s "
+            gd_gnuplot_printf(b, "%s'bifurcation.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(3) : 1/0) with points %s "
                    "lc rgb '%s' title '%s'",
-                first ? "" : ", ", dir, gd_sweep_branch_name(br), branch_point[br], branch_colour[br],
+                first ? "" : ", ", gd_sweep_branch_name(br), branch_point[br], branch_colour[br],
                 gd_sweep_branch_name(br));
             first = 0;
         }
@@ -327,9 +327,9 @@ static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_c
         first = 1;
         for (int br = 0; br < 3; br++)
             if (has[br]) {
-                gd_gnuplot_printf(b, "%s'%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(%d) : 1/0) with linespoints "
+                gd_gnuplot_printf(b, "%s'sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? column(%d) : 1/0) with linespoints "
                        "%s lc rgb '%s' notitle",
-                    first ? "" : ", ", dir, gd_sweep_branch_name(br), col[q], branch_line[br], branch_colour[br]);
+                    first ? "" : ", ", gd_sweep_branch_name(br), col[q], branch_line[br], branch_colour[br]);
                 first = 0;
             }
         gd_gnuplot_printf(b, "\n");
@@ -339,7 +339,7 @@ static void script_bifurcation(gd_gnuplot_script *b, const char *dir, const gd_c
 
 /* The regime map: motion class and largest Lyapunov exponent over the two parameters, one
  * row of panels per branch. */
-static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_plan *p, const int *has, double mle_abs,
+static void script_map(gd_gnuplot_script *b, const gd_sweep_plan *p, const int *has, double mle_abs,
                        const char *term, const char *ext)
 {
     int rows = has[0] + has[1] + has[2];
@@ -360,7 +360,7 @@ static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_pla
         snprintf(yl, sizeof yl, "($7/%.12g)", fac[1]), snprintf(yh, sizeof yh, "($7*%.12g)", fac[1]);
     else
         snprintf(yl, sizeof yl, "($7-%.12g)", half[1]), snprintf(yh, sizeof yh, "($7+%.12g)", half[1]);
-    gd_gnuplot_printf(b, "set terminal %s\nset output '%s/.regime_map%s.tmp'\n", term, dir, ext);
+    gd_gnuplot_printf(b, "set terminal %s\nset output '.regime_map%s.tmp'\n", term, ext);
     gd_gnuplot_printf(b, "set multiplot layout %d,2 title 'Regime map: %s x %s'\n", rows, p->parameter[0], p->parameter[1]);
     gd_gnuplot_printf(b, "cls(s) = s eq 'chaotic' ? 12 : s eq 'quasi-periodic' ? 11 : s eq 'not-periodic' ? 10 : "
            "s eq 'failed' ? 0 : (strlen(s) > 7 && s[1:7] eq 'period-') ? (int(s[8:]) > 8 ? 9 : int(s[8:])) : 10\n");
@@ -377,15 +377,15 @@ static void script_map(gd_gnuplot_script *b, const char *dir, const gd_sweep_pla
                "'P7' 7, 'P8' 8, 'P9+' 9, 'not periodic' 10, 'quasi-periodic' 11, 'chaotic' 12)\n",
             gd_sweep_branch_name(br));
         /* (the branch filter goes on y: gnuplot leaves the boxes unfilled when it is on the colour) */
-        gd_gnuplot_printf(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(cls(strcol(5))) "
+        gd_gnuplot_printf(b, "plot 'sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(cls(strcol(5))) "
                "with boxxyerror fs solid 1.0 noborder lc palette\n",
-            dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
+            gd_sweep_branch_name(br), xl, xh, yl, yh);
         gd_gnuplot_printf(b, "set title 'largest Lyapunov exponent per mesh period (%s)'\nset palette maxcolors 0\n"
                "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\nset cbrange [%.6g:%.6g]\nset cbtics auto\n",
             gd_sweep_branch_name(br), -mle_abs, mle_abs);
-        gd_gnuplot_printf(b, "plot '%s/sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(column(4)) "
+        gd_gnuplot_printf(b, "plot 'sweep.csv' every ::1 using 1:(strcol(2) eq '%s' ? $7 : 1/0):%s:%s:%s:%s:(column(4)) "
                "with boxxyerror fs solid 1.0 noborder lc palette\n",
-            dir, gd_sweep_branch_name(br), xl, xh, yl, yh);
+            gd_sweep_branch_name(br), xl, xh, yl, yh);
     }
     gd_gnuplot_printf(b, "unset multiplot\nunset output\n");
 }
@@ -413,9 +413,9 @@ static gd_status draw(gd_run_dir *out, const gd_case *c, const gd_sweep_plan *p,
     const char *stem = p->naxes > 1 ? "regime_map" : "bifurcation";
     for (int f = 0; f < 2; f++) {
         if (p->naxes > 1)
-            script_map(&b, dir, p, has, mle_abs, fmt[f][0], fmt[f][1]);
+            script_map(&b, p, has, mle_abs, fmt[f][0], fmt[f][1]);
         else
-            script_bifurcation(&b, dir, c, p, has, mle, fmt[f][0], fmt[f][1]);
+            script_bifurcation(&b, c, p, has, mle, fmt[f][0], fmt[f][1]);
     }
     if (b.bad) {
         free(b.p);

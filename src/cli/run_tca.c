@@ -22,31 +22,30 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_tca_result *r,
     n += snprintf(script + n, sizeof script - n, "set datafile separator ','\nset datafile missing 'NaN'\n");
     for (int fi = 0; fi < 2; fi++) {
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.contact_pattern%s.tmp'\n"
+            "set terminal %s\nset output '.contact_pattern%s.tmp'\n"
             "set multiplot layout 1,%d title 'Contact pattern on the unrolled pinion flank (paint thickness %.3g um; "
             "black: path of the first contact)'\n"
             "set xlabel 'face position from the middle of the half (mm)'\nset ylabel 'roll length (mm)'\n"
             "set cbrange [0:%.6g]\nset cblabel 'least separation (um)'\n"
             "set palette defined (0 '#7f0000', %.6g '#d7301f', %.6g '#fdd49e', %.6g '#f7f7f7')\n"
             "set key off\nset grid front\n",
-            fmt[fi][0], dir, fmt[fi][1], r->halves, p, 8 * p, p, p * 1.0001, 8 * p);
+            fmt[fi][0], fmt[fi][1], r->halves, p, 8 * p, p, p * 1.0001, 8 * p);
         for (int h = 0; h < r->halves; h++)
             n += snprintf(script + n, sizeof script - n,
                 "set title '%s half (GTE %.4g arcsec p-p%s)'\n"
-                "plot '%s/separation_%s.csv' every ::1 using 1:2:($3 > %.6g ? %.6g : $3) with image, "
-                "'%s/contact_path.csv' every ::1 using (strcol(1) eq '%s' ? $5 : 1/0):4 with points pt 7 ps 0.5 lc rgb 'black'\n",
-                half_name[h], r->gte_pp_arcsec[h], r->edge_kinds[h] ? ", edge contact" : "", dir, half_name[h], 8 * p,
-                8 * p, dir, half_name[h]);
+                "plot 'separation_%s.csv' every ::1 using 1:2:($3 > %.6g ? %.6g : $3) with image, "
+                "'contact_path.csv' every ::1 using (strcol(1) eq '%s' ? $5 : 1/0):4 with points pt 7 ps 0.5 lc rgb 'black'\n",
+                half_name[h], r->gte_pp_arcsec[h], r->edge_kinds[h] ? ", edge contact" : "", half_name[h], 8 * p,
+                8 * p, half_name[h]);
         n += snprintf(script + n, sizeof script - n, "unset multiplot\nunset output\n");
         n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '%s/.gte%s.tmp'\nset title 'Geometric transmission error (Eq. 10)'\n"
+            "set terminal %s\nset output '.gte%s.tmp'\nset title 'Geometric transmission error (Eq. 10)'\n"
             "set xlabel 'pinion angle (deg)'\nset ylabel 'GTE (arc-seconds of the gear)'\nset key on top right\n"
-            "unset colorbox\nplot '%s/gte.csv' every ::1 using 1:2 with linespoints pt 7 ps 0.5 lw 1.5 title 'left half'",
-            fmt[fi][0], dir, fmt[fi][1], dir);
+            "unset colorbox\nplot 'gte.csv' every ::1 using 1:2 with linespoints pt 7 ps 0.5 lw 1.5 title 'left half'",
+            fmt[fi][0], fmt[fi][1]);
         if (r->halves > 1)
             n += snprintf(script + n, sizeof script - n,
-                          ", '%s/gte.csv' every ::1 using 1:6 with linespoints pt 6 ps 0.5 lw 1.5 dt 2 title 'right half'",
-                          dir);
+                          ", 'gte.csv' every ::1 using 1:6 with linespoints pt 6 ps 0.5 lw 1.5 dt 2 title 'right half'");
         n += snprintf(script + n, sizeof script - n, "\nunset output\nset colorbox\n");
     }
     if (n >= (int)sizeof script)

@@ -238,8 +238,7 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
     else
         snprintf(primary, sizeof primary, "Poincare points error, %ld periods", res->window_periods);
     for (int fm = 0; fm < 2; fm++) {
-        gd_gnuplot_printf(&b, "set terminal %s\nset output '%s/.work_precision%s.tmp'\n", fmt[fm][0], dir,
-                          fmt[fm][2]);
+        gd_gnuplot_printf(&b, "set terminal %s\nset output '.work_precision%s.tmp'\n", fmt[fm][0], fmt[fm][2]);
         gd_gnuplot_printf(&b, "set datafile missing '?'\nset grid\nset logscale xy\nset format y '10^{%%L}'\n"
                               "set key outside right top vertical font ',8'\n"
                               "set multiplot layout 3,2 title '%s: %s (%s), reference %s, floor %.1e'\n",

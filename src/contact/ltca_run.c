@@ -340,13 +340,16 @@ static gd_status result_alloc(gd_ltca_result *r, int H, int npos, gd_error *err)
 }
 
 /* Solve the contact at every position of the cycle, keeping its results and its points. */
-static gd_status sweep_positions(gd_ltca *w, double torque_nm, gd_ltca_result *r, gd_error *err)
+static gd_status sweep_positions(gd_ltca *w, double torque_nm, const gd_stop_hook *stop, gd_ltca_result *r,
+                                 gd_error *err)
 {
     const int H = r->halves, npos = r->npos;
     int cap = 0, np = 0;
     const double tau = w->t->tau1;
     r->min_load = INFINITY;
     for (int k = 0; k < npos; k++) {
+        if (gd_stop_asked(stop))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped at position %d of %d", k + 1, npos);
         double phi1 = tau * k / npos;
         gd_ltca_position pos;
         gd_status st = gd_ltca_solve_at(w, phi1, torque_nm, &pos, err);
@@ -470,13 +473,14 @@ GD_API gd_status gd_ltca_run_opts(const gd_pair *pair, const gd_ltca_settings *s
     r->cache_key = gd_ltca_cache_key(pair, set, npos);
     st = result_alloc(r, H, npos, err);
     if (st == GD_OK)
-        st = sweep_positions(w, set->torque_nm, r, err);
+        st = sweep_positions(w, set->torque_nm, &set->stop, r, err);
     if (st != GD_OK)
         goto fail;
     cycle_statistics(r);
     if (with_impact)
         for (int h = 0; h < H; h++) {
-            st = mesh_in(w, r, h, set->torque_nm, &r->impact[h], err);
+            st = gd_stop_asked(&set->stop) ? gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped before the mesh-in")
+                                           : mesh_in(w, r, h, set->torque_nm, &r->impact[h], err);
             if (st != GD_OK)
                 goto fail;
         }

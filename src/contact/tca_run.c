@@ -337,6 +337,8 @@ static gd_status run_half(gd_tca *t, const gd_tca_settings *set, int h, int npos
     r->pairs_min[h] = 1 << 30;
     double psum = 0;
     for (int k = 0; k < npos; k++) {
+        if (gd_stop_asked(&set->stop))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "TCA: stopped at position %d of %d", k + 1, npos);
         gd_status st = contact_at_position(t, set, h, k, r, err);
         if (st != GD_OK)
             return st;

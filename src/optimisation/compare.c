@@ -124,6 +124,7 @@ static gd_status compare_runs(const gd_opt_problem *const *problems, const gd_op
         if (s->local_step > 0)
             os.local_step = s->local_step;
         os.keep_history = 1;
+        os.stop = s->stop;
         gd_opt_result res;
         gd_error e = {0};
         gd_status st = gd_opt_run(problems[u->run], &os, &res, &e);

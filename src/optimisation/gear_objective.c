@@ -92,7 +92,8 @@ GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings 
     for (int k = 0; k < npos && st == GD_OK; k++) {
         double phi1 = tau * k / npos;
         gd_ltca_position pos;
-        st = gd_ltca_solve_at(w, phi1, set->torque_nm, &pos, err);
+        st = gd_stop_asked(&set->stop) ? gd_error_set(err, GD_ERR_INTERRUPTED, "gear-lte: stopped")
+                                       : gd_ltca_solve_at(w, phi1, set->torque_nm, &pos, err);
         if (st == GD_OK) {
             double v = pos.lte * ARCSEC;
             lo = fmin(lo, v);

@@ -9,7 +9,9 @@
  * ROUNDOFF_LIMITED) until the budget is used; the stochastic global methods likewise, with a new
  * nlopt_srand seed; DIRECT_L is deterministic and is not restarted. nlopt_srand(seed of the start)
  * before every start (NLopt's generator is thread-local in Debian's build). Every return code is
- * checked: our forced stop and ROUNDOFF_LIMITED end a start; other negative codes are errors. */
+ * checked: our forced stop and ROUNDOFF_LIMITED end a start; other negative codes are errors. An
+ * evaluation that fails, or is refused because the caller asked to stop (GD_ERR_INTERRUPTED from
+ * the wrapper's stop hook), forces NLopt to stop too and ends the run with that error. */
 #include "opt_internal.h"
 
 #include <gsl/gsl_rng.h>

@@ -24,6 +24,7 @@ typedef struct opt_ctx {
     double *ybuf;                   /* nstates x dim scratch */
     gd_status st;                   /* first failure of the objective */
     gd_error err;
+    gd_stop_hook stop;              /* asked before each evaluation (gd_opt_settings.stop) */
 } opt_ctx;
 
 gd_status opt_ctx_init(opt_ctx *c, const gd_opt_problem *p, long budget, int nstates, int keep, gd_error *err);
@@ -32,7 +33,8 @@ void opt_ctx_free(opt_ctx *c);
 void opt_to_physical(const opt_ctx *c, const double *x, double *y);
 /* Evaluate the n normalised points X (n x dim) with `threads` threads, as many as the budget
  * allows (*m of them, in index order); f[i] = +inf for the rest. Records every evaluation in
- * index order, so the history does not depend on the thread count. */
+ * index order, so the history does not depend on the thread count. Both evaluators ask c->stop
+ * before each evaluation: stopped, GD_ERR_INTERRUPTED. */
 gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int threads, int *m, gd_error *err);
 /* Evaluate one normalised point on state 0 (serial callers: NLopt). Returns 1 in *done when the
  * budget was already used (nothing evaluated). */

@@ -298,7 +298,8 @@ gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int thre
         double *y = c->ybuf + (size_t)tid * (size_t)d;
         opt_to_physical(c, X + (size_t)i * (size_t)d, y);
         gd_error e = {0};
-        gd_status st = p->eval(c->states[tid], y, &f[i], &e);
+        gd_status st = gd_stop_asked(&c->stop) ? gd_error_set(&e, GD_ERR_INTERRUPTED, "stopped")
+                                               : p->eval(c->states[tid], y, &f[i], &e);
         if (st != GD_OK)
             opt_first_failure_note(&bad, i, st, &e);
     }
@@ -328,7 +329,8 @@ gd_status opt_eval_one(opt_ctx *c, const double *x, double *f, int *done, gd_err
     }
     double *y = c->ybuf;
     opt_to_physical(c, x, y);
-    gd_status st = c->p->eval(c->states[0], y, f, err);
+    gd_status st = gd_stop_asked(&c->stop) ? gd_error_set(err, GD_ERR_INTERRUPTED, "stopped")
+                                           : c->p->eval(c->states[0], y, f, err);
     if (st != GD_OK)
         return gd_error_prefix(err, "optimisation, evaluation %ld", c->count + 1);
     return record(c, x, *f, err);
@@ -375,6 +377,7 @@ GD_API gd_status gd_opt_run(const gd_opt_problem *p, const gd_opt_settings *s, g
     if (st != GD_OK)
         return st;
     st_.threads = threads;
+    c.stop = st_.stop;
     r->dim = p->dim;
     r->algorithm = st_.algorithm;
     double t0 = gd_clock_wall_s();

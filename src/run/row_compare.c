@@ -47,7 +47,7 @@ static int make_grid(long budget, long **out)
 
 /* The problem instances of one (objective, dimension): the gear problem, the same for every run,
  * or one test-function instance per run (shifted minimisers drawn from the run's instance seed). */
-static gd_status build(const gd_case *c, gd_compare_entry *q, int runs, gd_error *err)
+static gd_status build(const gd_case *c, gd_stop_hook stop, gd_compare_entry *q, int runs, gd_error *err)
 {
     q->pb = calloc((size_t)runs, sizeof *q->pb);
     q->pp = calloc((size_t)runs, sizeof *q->pp);
@@ -55,7 +55,8 @@ static gd_status build(const gd_case *c, gd_compare_entry *q, int runs, gd_error
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     if (q->objective == GD_OBJ_GEAR_LTE) {
         const gd_pair pair = gd_pair_from_case(c);
-        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        set.stop = stop; /* every evaluation's LTCA */
         double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
         gd_opt_gear_bounds(c, lower, upper);
         gd_status st = gd_opt_gear_create(&pair, &set, lower, upper, &q->gear, err);
@@ -118,7 +119,7 @@ static gd_status compare_all(const gd_case *c, const gd_run_env *env, gd_compare
     gd_opt_compare_settings *s = &C->settings;
     for (int j = 0; j < C->n; j++) {
         gd_compare_entry *q = &C->p[j];
-        gd_status st = build(c, q, C->runs, err);
+        gd_status st = build(c, s->stop, q, C->runs, err);
         if (st == GD_OK) {
             s->f_ref = q->objective == GD_OBJ_GEAR_LTE ? NAN : 0.0;
             st = gd_opt_compare(q->pp, s, &q->res, err);
@@ -155,6 +156,7 @@ gd_status gd_row_compare_run(const gd_case *cp, const gd_run_env *env, gd_run_di
     int threads = env ? env->threads : 0;
     list_problems(&c, C);
     compare_settings(&c, threads, &C->settings);
+    C->settings.stop = gd_row_stop(env);
     C->threads = opt_threads(threads);
     gd_status st = compare_all(&c, env, C, err);
     if (st == GD_OK) {

@@ -6,10 +6,13 @@
 
 #include <stdlib.h>
 
-/* The run's progress, after each branch, through the caller's hook. */
+/* The run's progress, after each branch, through the caller's hook; the run's should_stop is
+ * asked there too (a stop between branches). */
 static int on_branch(void *user, int done, int planned)
 {
     const gd_run_env *env = user;
+    if (env && env->should_stop && env->should_stop(env->user))
+        return 1;
     return env && env->continuation_branch ? env->continuation_branch(env->user, done, planned) : 0;
 }
 

@@ -52,8 +52,8 @@ void gd_row_optimize_free(void *result)
 
 /* The problem of the case's first objective (the gear's modification or a test function), its
  * variables' names and bounds. */
-static gd_status setup_problem(const gd_case *c, gd_optimize_outcome *o, gd_opt_gear **gear, gd_opt_testfn *tf,
-                               gd_opt_problem *p, gd_error *err)
+static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_outcome *o, gd_opt_gear **gear,
+                               gd_opt_testfn *tf, gd_opt_problem *p, gd_error *err)
 {
     int objs[GD_OBJ_NOBJECTIVES];
     gd_opt_case_objectives(c, objs, GD_OBJ_NOBJECTIVES);
@@ -64,7 +64,8 @@ static gd_status setup_problem(const gd_case *c, gd_optimize_outcome *o, gd_opt_
     gd_status st;
     if (o->gear) {
         const gd_pair pair = gd_pair_from_case(c);
-        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        set.stop = stop; /* every evaluation's LTCA */
         double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
         gd_opt_gear_bounds(c, lower, upper);
         st = gd_opt_gear_create(&pair, &set, lower, upper, gear, err);
@@ -116,14 +117,15 @@ static gd_status run_all(const gd_run_env *env, const gd_case *c, const gd_opt_p
 }
 
 /* The gear: LTE of the unmodified pair, Table 2 and the optimum (the same LTCA as the objective). */
-static gd_status compute_lte(const gd_case *c, gd_optimize_outcome *o, gd_error *err)
+static gd_status compute_lte(const gd_case *c, gd_stop_hook stop, gd_optimize_outcome *o, gd_error *err)
 {
     const double zero[GD_OPT_GEAR_DIM] = {0};
     const double *xs[3] = {zero, o->table2, o->res[o->best].y};
     gd_status st = GD_OK;
     for (int j = 0; j < 3 && st == GD_OK; j++) {
         gd_pair t = gd_pair_from_case(c);
-        const gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        gd_ltca_settings set = gd_ltca_settings_from_case(c);
+        set.stop = stop;
         gd_opt_gear_apply(&t, xs[j]);
         st = gd_ltca_run_opts(&t, &set, 0, 0, &o->lte[j], err);
     }
@@ -144,6 +146,7 @@ static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const 
         quiet.user = env->user;
         quiet.threads = env->threads;
         quiet.pictures = env->pictures;
+        quiet.should_stop = env->should_stop;
     }
     char sdir[GD_PATH_MAX + 64], name[64];
     st = gd_run_dir_make(out, err); /* the sub-directory is made in out's stage */
@@ -164,7 +167,8 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     if (!o)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     gd_opt_problem p;
-    gd_status st = setup_problem(&c, o, &o->gear_problem, &o->tf, &p, err);
+    const gd_stop_hook stop = gd_row_stop(env);
+    gd_status st = setup_problem(&c, stop, o, &o->gear_problem, &o->tf, &p, err);
     if (st == GD_OK) {
         o->res = calloc((size_t)o->runs, sizeof *o->res);
         o->run_f = calloc((size_t)o->runs, sizeof(double));
@@ -179,11 +183,12 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     s->population = c.opt_population;
     s->threads = threads;
     s->keep_history = 1;
+    s->stop = stop;
     o->threads = opt_threads(c.opt_algorithm == GD_OPT_ALO || c.opt_algorithm == GD_OPT_RANDOM ? threads : 1);
     if (st == GD_OK)
         st = run_all(env, &c, &p, s, o, o->run_f, &o->wall_s, err);
     if (st == GD_OK && o->gear)
-        st = compute_lte(&c, o, err);
+        st = compute_lte(&c, stop, o, err);
     if (st == GD_OK && o->gear)
         st = optimum_outputs(&c, env, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
     if (st == GD_OK && o->gear)

@@ -10,14 +10,15 @@
 
 gd_status gd_row_tca_run(const gd_case *cp, const gd_run_env *env, gd_run_dir *out, void **result, gd_error *err)
 {
-    (void)env, (void)out;
+    (void)out;
     *result = NULL;
     gd_case c = *cp;
     gd_tca_result *r = malloc(sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     const gd_pair pair = gd_pair_from_case(&c);
-    const gd_tca_settings set = gd_tca_settings_from_case(&c);
+    gd_tca_settings set = gd_tca_settings_from_case(&c);
+    set.stop = gd_row_stop(env);
     gd_status st = gd_tca_run(&pair, &set, r, err);
     if (st != GD_OK) {
         free(r);

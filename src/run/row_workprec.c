@@ -15,9 +15,15 @@ gd_status gd_row_workprec_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     gd_workprec_outcome *r = calloc(1, sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    gd_wp_hooks hooks = {0};
+    if (env) {
+        hooks = env->workprec;
+        if (!hooks.should_stop)
+            hooks.should_stop = env->should_stop;
+    }
     gd_status st = gd_model_build(&c, &r->model, err);
     if (st == GD_OK)
-        st = gd_workprec_run(&c, &r->model, env ? &env->workprec : NULL, env ? env->user : NULL, &r->res, err);
+        st = gd_workprec_run(&c, &r->model, &hooks, env ? env->user : NULL, &r->res, err);
     if (st != GD_OK) {
         free(r);
         return st;

@@ -1,7 +1,10 @@
 #!/usr/bin/env python3
 """Fault injection without privileges: a full disk (RLIMIT_FSIZE, SIGXFSZ ignored) at several
 sizes and SIGINT / SIGTERM / SIGHUP at several moments of a response run, a sweep and an
-optimisation, and SIGKILL then --resume for the sweep. Each trial runs into a directory that holds
+optimisation, and SIGKILL then --resume for the sweep. Early signals in the long computations that
+are not integrations (an optimisation, a large LTCA and TCA, an optimiser comparison, a
+work-precision study): each ends the process with 128 + the signal within half the run's own
+length, measured in the same test, leaving nothing in a new directory or the previous result. Each trial runs into a directory that holds
 a previous result and proves that afterwards it holds either that result unchanged (sha256 of
 every file) or a whole new set (exactly the files its summary.json lists, every picture whole),
 and no temporaries (but the sweep's journal after an interrupted sweep). Also: a second run into
@@ -141,9 +144,15 @@ def run(args, pre=None, sig=None, at=0.0, second=False):
     if sig:
         time.sleep(at)
         try:
-            p.send_signal(sig)
             if second:
-                time.sleep(0.005)
+                # SIGINT and sig pending together (the process stopped meanwhile), so that the
+                # second reaches the handler before the run has acted on the first, which it
+                # would within a millisecond; two of one signal would merge into one
+                p.send_signal(signal.SIGSTOP)
+                p.send_signal(signal.SIGINT)
+                p.send_signal(sig)
+                p.send_signal(signal.SIGCONT)
+            else:
                 p.send_signal(sig)
         except ProcessLookupError:
             pass
@@ -195,6 +204,34 @@ def series(kind, d, args, sizes, moments, journal_ok=False):
     return dur
 
 
+def early_stops(kind, tmp, case, sets, frac=0.2):
+    """The run's own length D (uninterrupted, its result the previous one), then a signal at frac D:
+    SIGINT into a new directory, SIGTERM and SIGHUP into the previous result. Each must end the
+    process with 128 + the signal before D / 2 (an analysis that asks for signals only at its end
+    runs the whole D) and leave nothing, or the previous result unchanged."""
+    def args(out):
+        a = [os.path.join(SRC, case), '--out', out, '--quiet', '--set', 'output.plots=off']
+        for x in sets:
+            a += ['--set', x]
+        return a
+    d = os.path.join(tmp, kind + '-early')
+    rc, dur, err = timed(args(d))
+    ok(rc == 0 and whole_set(d), '%s: the uninterrupted run takes %.2f s %s' % (kind, dur, err.strip()[-200:]))
+    before, _ = state(d)
+    for sig, out in ((signal.SIGINT, d + '-new'), (signal.SIGTERM, d), (signal.SIGHUP, d)):
+        t0 = time.monotonic()
+        rc, err = run(args(out), sig=sig, at=frac * dur)
+        took = time.monotonic() - t0
+        files, dots = state(out)
+        kept = files == before if out == d else not os.path.exists(out) or (files == {} and dots == [])
+        good = rc == 128 + sig and took < 0.5 * dur and kept and dots == [] and 'interrupted' in err
+        outcomes.setdefault(kind, {}).setdefault('stopped early', 0)
+        outcomes[kind]['stopped early'] += good
+        ok(good, '%s, %s at %.0f%% of its %.2f s: exit %d after %.2f s (%.0f%%), %s, left %s' %
+           (kind, sig.name, 100 * frac, dur, rc, took, 100 * took / dur,
+            'previous result unchanged' if out == d and kept else 'nothing left' if kept else 'FILES CHANGED', dots))
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix='geardyn-faults-')
     quick = os.path.join(SRC, 'cases', 'quickstart.ini')
@@ -227,6 +264,19 @@ def main():
              'optimize.iterations=2', '--set', 'optimize.population=4', '--set', 'solver.ltca_positions_per_cycle=8']
     series('optimize', o, oargs, [500, 5000, 60000], [0.2, 0.6, 0.95])
 
+    # early signals in the computations that poll a stop hook per position, evaluation or period
+    early_stops('optimize', tmp, 'cases/paper/optimize-alo.ini',
+                ['optimize.iterations=14', 'optimize.population=6', 'solver.ltca_positions_per_cycle=8'])
+    early_stops('ltca', tmp, 'cases/paper/ltca-modified.ini', ['solver.ltca_positions_per_cycle=1500'])
+    early_stops('tca', tmp, 'cases/paper/tca-modified.ini', ['solver.tca_positions_per_cycle=2500'])
+    early_stops('compare-optimizers', tmp, 'cases/paper/compare-optimizers.ini',
+                ['optimize.runs=2', 'optimize.budget_evals=40', 'optimize.population=10',
+                 'solver.ltca_positions_per_cycle=8'])
+    early_stops('work-precision', tmp, 'cases/accuracy/period1-7000rpm.ini',
+                ['workprecision.families=rk4,erk4,erk8', 'workprecision.rtol_tightest=1e-7',
+                 'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64', 'workprecision.repeats=1',
+                 'workprecision.horizon_periods=5', 'run.transient_periods=100', 'run.record_periods=200'])
+
     # a second run into a directory being written is refused, the first one ends well
     p = subprocess.Popen([G, 'run'] + rargs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     time.sleep(0.3)
@@ -234,12 +284,13 @@ def main():
     p.wait()
     ok(rc == 1 and 'another geardyn run is writing into this directory' in err and p.returncode == 0
        and whole_set(r), 'a second run into a locked directory: exit %d, %s' % (rc, err.strip()))
-    # a second signal ends the run at once (the optimisation asks for signals only between its
-    # stages); what it left is removed by the next run
+    # a second signal ends the run at once (exit 128 + the one handled last: either); what it left
+    # is removed by the next run. One thread, so that the two handlers run one after the other.
     before, _ = state(o)
-    rc, err = run(oargs, sig=signal.SIGTERM, at=0.3, second=True)
-    ok(rc == 143 and 'second signal' in err and state(o)[0] == before,
-       'a second SIGTERM: exit %d, previous result unchanged: %s' % (rc, err.strip().splitlines()[-1:]))
+    rc, err = run(oargs + ['--threads', '1'], sig=signal.SIGTERM, at=0.3, second=True)
+    ok(rc in (130, 143) and 'second signal' in err and state(o)[0] == before,
+       'SIGINT and a second signal, SIGTERM: exit %d, previous result unchanged: %s' %
+       (rc, err.strip().splitlines()[-1:]))
     rc, err = run(oargs)
     ok(rc == 0 and state(o)[1] == [] and beside(o) == [] and whole_set(o),
        'the next run removes what it left (left %s)' % (state(o)[1] + beside(o)))
