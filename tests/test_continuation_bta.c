@@ -62,10 +62,11 @@ int main(void)
                q->events[2], q->events[3], q->events[4], q->events[5]);
     }
     for (int i = 0; i < br.nbif; i++)
-        printf("#   %s%s%s at %.4f rpm (bracket %.4f .. %.4f), multiplier %.6f%+.6fi\n",
+        printf("#   %s%s%s at %.4f rpm (bracket %.4f .. %.4f), multiplier %.6f%+.6fi, %d corrections\n",
                gd_bif_kind_name(br.bif[i].kind), br.bif[i].clearance >= 0 ? " of " : "",
                br.bif[i].clearance >= 0 ? m.clear[br.bif[i].clearance].name : "", br.bif[i].p * cp.scale,
-               br.bif[i].p_lo * cp.scale, br.bif[i].p_hi * cp.scale, br.bif[i].mu_re, br.bif[i].mu_im);
+               br.bif[i].p_lo * cp.scale, br.bif[i].p_hi * cp.scale, br.bif[i].mu_re, br.bif[i].mu_im,
+               br.bif[i].corrections);
     double last = br.pt[br.npoints - 1].orbit.p * cp.scale;
     tap_ok(br.end == GD_END_BOUND && fabs(last - 5500.0) < 1e-6 && rmax < co.po.tol,
            "from 3000 rpm to the bound 5500 rpm (last point %.6f rpm, %s), largest residual %.3g", last,

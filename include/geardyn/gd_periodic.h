@@ -6,9 +6,11 @@
  * (gd_sim_period_map: variational equations with a saltation matrix at every located contact
  * event). Its stability comes from the Floquet multipliers, the eigenvalues of the monodromy
  * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
- * follows an orbit in a numeric parameter p, with an adaptive step, and locates by bisection the
- * folds (the tangent's parameter component changes sign), period doublings (a real multiplier
- * passes -1), Neimark-Sacker points (a complex pair crosses the unit circle) and changes of the contact sequence (grazing) between its points. */
+ * follows an orbit in a numeric parameter p, with an adaptive step, and locates between its points,
+ * by GSL's Brent solver in the arclength, the folds (the tangent's parameter component changes
+ * sign), period doublings (a real multiplier passes -1), Neimark-Sacker points (a complex pair
+ * crosses the unit circle) and changes of the contact sequence (grazing: an extremum of a
+ * clearance coordinate crosses its boundary). */
 #ifndef GD_PERIODIC_H
 #define GD_PERIODIC_H
 
@@ -106,6 +108,7 @@ typedef struct gd_bifurcation {
                               * positive imaginary part nearest the unit circle; else nearest 1) */
     double y[GD_MAX_STATE];  /* Poincare point at the middle */
     int after;               /* index of the branch point before which it lies */
+    int corrections;         /* corrected points its location took (0 when not located by gd_continue) */
 } gd_bifurcation;
 
 typedef enum gd_branch_end {
