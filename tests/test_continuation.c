@@ -6,13 +6,14 @@
  * 1. The branch from Omega 0.5 upwards ends on the bound 1.5 with the bifurcations expected of a
  *    softening impact oscillator: the grazing where the non-impacting orbit first touches the
  *    boundary (a contact change; for alpha 0 at Omega = 1/sqrt(1.99), where the linear amplitude
- *    F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| reaches F_m, located to 3e-7: the event
- *    detection misses penetrations shallower than the integration tolerance resolves), a fold
- *    above it where the branch turns back (the jump of an up sweep), a fold below it where the
- *    unstable branch turns into the stable impacting one (the jump of a down sweep), and for
- *    alpha 0 a period doubling; each located to an arclength bracket of 1e-8.
+ *    F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| reaches F_m, located to 1e-9 on the distance of
+ *    the orbit's smallest mesh deflection to the boundary), a fold above it where the branch turns
+ *    back (the jump of an up sweep), a fold below it where the unstable branch turns into the
+ *    stable impacting one (the jump of a down sweep), and for alpha 0 a period doubling; each
+ *    located to an arclength bracket of 1e-8 in at most 10 corrected points (Brent's method; a
+ *    bisection would take 22 or more).
  * 2. Both directions: from the attractor at Omega 1.0 continued down and up, the same bifurcations
- *    to 2e-7 in the parameter.
+ *    to 1e-8 in the parameter.
  * 3. Every stable branch point whose largest multiplier is below 0.9 is the attractor of plain
  *    simulation: from the orbit's Poincare point moved by 1e-3 in every component, integrated
  *    until |mu_max|^N < 1e-10, the state at mesh phase 0 agrees with the branch point to 1e-6.
@@ -64,9 +65,9 @@ static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o,
            "correction), end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
            (double)it / (double)br->corrections, br->end_reason);
     for (int i = 0; i < br->nbif; i++)
-        printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi\n",
+        printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi, %d corrections\n",
                gd_bif_kind_name(br->bif[i].kind), br->bif[i].p, br->bif[i].p_lo, br->bif[i].p_hi, br->bif[i].mu_re,
-               br->bif[i].mu_im);
+               br->bif[i].mu_im, br->bif[i].corrections);
 }
 
 /* check 3: stable points against settled simulation */
@@ -270,11 +271,15 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
            "%s: from 0.5 to the bound 1.5 (%s): grazing of the mesh, fold above it, fold below it%s (%d "
            "bifurcations)", name, up.end_reason, expect_pd ? ", period doubling" : "", up.nbif);
     double bw = 0;
-    for (int i = 0; i < up.nbif; i++)
+    int corr = 0;
+    for (int i = 0; i < up.nbif; i++) {
         bw = fmax(bw, fabs(up.bif[i].p_hi - up.bif[i].p_lo));
+        corr = up.bif[i].corrections > corr ? up.bif[i].corrections : corr;
+    }
     TAP_CLOSE(bw, 0.0, 1e-7, "largest parameter bracket of a located bifurcation");
+    tap_ok(corr > 0 && corr <= 10, "%s: at most 10 corrected points per bifurcation located (%d)", name, corr);
     if (grazing > 0 && ncc == 1)
-        TAP_CLOSE(cc[0]->p, grazing, 3e-7, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
+        TAP_CLOSE(cc[0]->p, grazing, 1e-9, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
     /* 2. both directions from the attractor at Omega 1 */
     gd_case c1;
     gd_model m1;
@@ -292,7 +297,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     for (int i = 0; i < up1.nbif && joined.nbif < 16; i++)
         all[joined.nbif++] = up1.bif[i];
     double dp = same_bifurcations(&up, &joined, 0);
-    tap_ok(dp >= 0 && dp < 2e-7, "%s: from Omega 1 down (%s) and up (%s): the same bifurcations (max |dp| %.3g)",
+    tap_ok(dp >= 0 && dp < 1e-8, "%s: from Omega 1 down (%s) and up (%s): the same bifurcations (max |dp| %.3g)",
            name, down.end_reason, up1.end_reason, dp);
     /* 3. and 4. */
     stable_points(name, &m, &o, &up);

@@ -8,7 +8,10 @@
  *    moved by 1e-4 in every component, integrated until |mu_max|^N < 1e-9, the state at mesh phase
  *    0 agrees with the branch point to 1e-6.
  * 3. Every bifurcation located lies between the two branch points that bracket it, its kind's test
- *    function having changed sign there; a period doubling has its multiplier within 1e-4 of -1. */
+ *    function having changed sign there; a period doubling has its multiplier within 1e-4 of -1;
+ *    each took at most 10 corrected points (Brent's method on a continuous test function, the
+ *    contact changes too: a bisection to locate_tol 1e-6 from steps of up to 20 would take 20 or
+ *    more). */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -102,9 +105,10 @@ int main(void)
     TAP_CLOSE(dmax, 0.0, 1e-6, label);
 
     /* 3. the bifurcations lie where their test functions changed sign */
-    int bad = 0;
+    int bad = 0, corr = 0;
     for (int i = 0; i < br.nbif; i++) {
         const gd_bifurcation *b = &br.bif[i];
+        corr = b->corrections > corr ? b->corrections : corr;
         const gd_po *a = &br.pt[b->after - 1].orbit, *z = &br.pt[b->after].orbit;
         int inside = (b->p - a->p) * (b->p - z->p) <= 0;
         int sign = 1;
@@ -117,6 +121,7 @@ int main(void)
     }
     tap_ok(br.nbif > 0 && bad == 0, "%d bifurcations, each between the branch points around it with its test "
            "function changed (%d not)", br.nbif, bad);
+    tap_ok(corr > 0 && corr <= 10, "at most 10 corrected points per bifurcation located (%d)", corr);
     gd_branch_free(&br);
     gd_case_free(&c);
     return tap_done();

@@ -562,6 +562,8 @@ static gd_status end_on_bound(cont *c, const double *u, const double *t, double 
     return push_point(c->br, &po, t1[N], s, err);
 }
 
+#define DP_MARGIN 0.98 /* steps aim at this fraction of dp_max */
+
 static gd_status run(cont *c, const gd_po *start, gd_error *err)
 {
     const gd_cont_opts *co = c->co;
@@ -574,11 +576,15 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
     if (st != GD_OK)
         return st;
     double ds = co->ds;
+    /* the corrected change of p over the predicted one, ds t_p, at the last step (at least 1): the
+     * corrector moves p further than the tangent where the branch curves, and a step that then
+     * exceeds dp_max is a correction lost */
+    double gain = 1.0;
     while (c->br->npoints < co->max_points) {
         int iters = 0;
         gd_error e1 = {0};
-        if (co->dp_max > 0 && fabs(ds * t[N]) > co->dp_max)
-            ds = fmax(co->dp_max / fabs(t[N]), co->ds_min);
+        if (co->dp_max > 0 && fabs(ds * t[N]) * gain > DP_MARGIN * co->dp_max)
+            ds = fmax(DP_MARGIN * co->dp_max / (fabs(t[N]) * gain), co->ds_min);
         st = step_from(c, u, t, ds, NULL, u1, t1, &po1, &iters, &e1);
         double turn = 0;
         for (int i = 0; i <= N && st == GD_OK; i++)
@@ -594,9 +600,14 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
                          : "the tangent turns too sharply");
                 return GD_OK;
             }
-            ds = fmax(0.5 * ds, co->ds_min);
+            /* p moved too far: shorter in proportion; else half the step */
+            ds = fmax(st == GD_OK && turn >= 0.5 ? ds * DP_MARGIN * co->dp_max / fabs(u1[N] - u[N]) : 0.5 * ds,
+                      co->ds_min);
             continue;
         }
+        gain = fmax(1.0, fabs(u1[N] - u[N]) / fabs(ds * t[N]));
+        if (!isfinite(gain))
+            gain = 1.0;
         if (u1[N] < co->p_min || u1[N] > co->p_max)
             return end_on_bound(c, u, t, u1[N] < co->p_min ? co->p_min : co->p_max, err);
         st = detect(c, u, t, &po, u1, t1, &po1, ds, err);
