@@ -155,9 +155,10 @@ static void bta_paper(void)
         die(&e);
     double t = cpu() - t0;
     printf("bta paper case, 3000 to 5500 rpm: %d points, %d bifurcations (%.1f corrections each), %ld corrections, "
-           "%.2f Newton iterations per correction, %.2f per point, %.3g s CPU, %.3g ms per point: %.3f of a sweep "
-           "point (500 periods of %.3g ms)\n", br.npoints, br.nbif, per_bifurcation(&br), br.corrections,
-           (double)br.newton_iterations / (double)br.corrections, (double)br.newton_iterations / br.npoints, t,
+           "%.2f Newton iterations per correction, %.2f per point, %.2f chord iterations per correction, %.3g s CPU, "
+           "%.3g ms per point: %.3f of a sweep point (500 periods of %.3g ms)\n", br.npoints, br.nbif,
+           per_bifurcation(&br), br.corrections, (double)br.newton_iterations / (double)br.corrections,
+           (double)br.newton_iterations / br.npoints, (double)br.chord_iterations / (double)br.corrections, t,
            1e3 * t / br.npoints, t / br.npoints / (500 * t_period), 1e3 * t_period);
     gd_branch_free(&br);
     gd_case_free(&c);

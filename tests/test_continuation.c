@@ -10,7 +10,7 @@
  *    the orbit's smallest mesh deflection to the boundary), a fold above it where the branch turns
  *    back (the jump of an up sweep), a fold below it where the unstable branch turns into the
  *    stable impacting one (the jump of a down sweep), and for alpha 0 a period doubling; each
- *    located to an arclength bracket of 1e-8 in at most 10 corrected points (Brent's method; a
+ *    located to an arclength bracket of 1e-8 in at most 12 corrected points (Brent's method; a
  *    bisection would take 22 or more).
  * 2. Both directions: from the attractor at Omega 1.0 continued down and up, the same bifurcations
  *    to 1e-8 in the parameter.

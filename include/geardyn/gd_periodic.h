@@ -131,7 +131,9 @@ typedef struct gd_branch {
     int end;                 /* gd_branch_end */
     char end_reason[GD_ERROR_MSG_MAX];
     long newton_iterations;  /* over all points, located bifurcations included */
-    long corrections;        /* corrector runs (accepted, rejected, and the bisection's) */
+    long corrections;        /* corrector runs (accepted, rejected, and the location's) */
+    long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that
+                              * came before the Newton iterations */
 } gd_branch;
 
 /* Follow the orbit start (solved by gd_po_solve or a branch point; start->p its parameter) in p,

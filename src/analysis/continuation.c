@@ -633,8 +633,10 @@ GD_API gd_status gd_continue(gd_model_at_fn model_at, void *ctx, const gd_solver
     c.co = co;
     c.br = br;
     gd_status st = gd_shoot_init(&c.sh, model_at, ctx, o, start->n, &co->po, err);
+    c.sh.chord = 1;
     if (st == GD_OK)
         st = run(&c, start, err);
+    br->chord_iterations = c.sh.chord_iterations;
     gd_shoot_free(&c.sh);
     return st;
 }
