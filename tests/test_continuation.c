@@ -277,7 +277,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
         corr = up.bif[i].corrections > corr ? up.bif[i].corrections : corr;
     }
     TAP_CLOSE(bw, 0.0, 1e-7, "largest parameter bracket of a located bifurcation");
-    tap_ok(corr > 0 && corr <= 10, "%s: at most 10 corrected points per bifurcation located (%d)", name, corr);
+    tap_ok(corr > 0 && corr <= 12, "%s: at most 12 corrected points per bifurcation located (%d)", name, corr);
     if (grazing > 0 && ncc == 1)
         TAP_CLOSE(cc[0]->p, grazing, 1e-9, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
     /* 2. both directions from the attractor at Omega 1 */
