@@ -26,7 +26,11 @@
  *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6.
  * 6. A brute-force sweep up and down in steps of 0.005 jumps once each way, in the grid interval
  *    that contains the upper fold (up) and the lower fold (down): the hysteresis interval of the
- *    sweep is bounded by the two folds. */
+ *    sweep is bounded by the two folds.
+ * 7. The located values converge as the integration tolerance tightens (alpha 0, rtol 1e-6, 1e-8,
+ *    1e-10, 1e-12, atol 100 times smaller): the grazing within 1e-9 of 1/sqrt(1.99) at every
+ *    tolerance, the folds within 1e-8 and the period doubling within 5e-8 of their values at
+ *    rtol 1e-12. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -317,9 +321,65 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     gd_case_free(&c1);
 }
 
+/* check 7: the located values against the integration tolerance */
+static void tolerances(void)
+{
+    const double rtol[] = {1e-6, 1e-8, 1e-10, 1e-12}, graze = 1.0 / sqrt(1.99);
+    double ref[4] = {0}, got[4][4];
+    int nb[4];
+    for (int k = 3; k >= 0; k--) {
+        char r[64], a[64];
+        snprintf(r, sizeof r, "solver.rtol=%g", rtol[k]);
+        snprintf(a, sizeof a, "solver.atol=%g", rtol[k] / 100);
+        const char *sets[] = {"excitation.ste_phase_deg=90", r, a, NULL};
+        gd_case c;
+        gd_model m;
+        gd_solver_opts o;
+        gd_error e = {0};
+        au_ks_case(&c, &m, 0.0, 0.05, 0.1, 0.1, 0.5, sets);
+        gd_solver_opts_from_case(&c, &o);
+        double y[GD_MAX_STATE];
+        gd_modes md;
+        if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        gd_cont_opts co;
+        gd_cont_opts_default(&co);
+        co.p_min = 0.5;
+        co.p_max = 1.5;
+        co.ds_max = 0.05;
+        co.po.tol = fmax(1e-9, 0.1 * rtol[k]);
+        gd_po start;
+        gd_branch br;
+        if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
+            gd_continue(gd_model_at_mesh_frequency, (void *)&m, &o, &co, &start, &br, &e) != GD_OK)
+            au_die(&e);
+        nb[k] = br.nbif;
+        for (int i = 0; i < 4; i++)
+            got[k][i] = i < br.nbif ? br.bif[i].p : NAN;
+        if (k == 3)
+            memcpy(ref, got[3], sizeof ref);
+        printf("# rtol %-6g: grazing %.10f, folds %.10f %.10f, period doubling %.10f\n", rtol[k], got[k][0],
+               got[k][1], got[k][2], got[k][3]);
+        gd_branch_free(&br);
+        gd_case_free(&c);
+    }
+    double dg = 0, df = 0, dpd = 0;
+    int n_ok = 1;
+    for (int k = 0; k < 4; k++) {
+        n_ok &= nb[k] == 4;
+        dg = fmax(dg, fabs(got[k][0] - graze));
+        df = fmax(df, fmax(fabs(got[k][1] - ref[1]), fabs(got[k][2] - ref[2])));
+        dpd = fmax(dpd, fabs(got[k][3] - ref[3]));
+    }
+    tap_ok(n_ok && dg < 1e-9 && df < 1e-8 && dpd < 5e-8, "K&S alpha 0 at rtol 1e-6 to 1e-12: 4 bifurcations each; "
+           "the grazing within %.2g of 1/sqrt(1.99), the folds within %.2g and the period doubling within %.2g of "
+           "rtol 1e-12's", dg, df, dpd);
+}
+
 int main(void)
 {
     ks(0.0, "K&S alpha 0", 1, 1.0 / sqrt(1.99));
     ks(0.2, "K&S alpha 0.2", 0, 0.0);
+    tolerances();
     return tap_done();
 }
