@@ -66,8 +66,8 @@ static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o,
         au_die(&e);
     long it = br->newton_iterations;
     printf("# from Omega %.3g, direction %+d: %d points, %ld corrections, %ld Newton iterations (%.2f per "
-           "correction), end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
-           (double)it / (double)br->corrections, br->end_reason);
+           "correction), %ld chord iterations, end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
+           (double)it / (double)br->corrections, br->chord_iterations, br->end_reason);
     for (int i = 0; i < br->nbif; i++)
         printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi, %d corrections\n",
                gd_bif_kind_name(br->bif[i].kind), br->bif[i].p, br->bif[i].p_lo, br->bif[i].p_hi, br->bif[i].mu_re,

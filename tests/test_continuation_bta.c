@@ -52,8 +52,9 @@ int main(void)
     if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
         gd_continue(gd_model_at_case_key, &cp, &o, &co, &start, &br, &e) != GD_OK)
         au_die(&e);
-    printf("# %d points, %ld corrections, %ld Newton iterations (%.2f per correction), end: %s\n", br.npoints,
-           br.corrections, br.newton_iterations, (double)br.newton_iterations / (double)br.corrections, br.end_reason);
+    printf("# %d points, %ld corrections, %ld Newton iterations (%.2f per correction), %ld chord iterations, end: %s\n",
+           br.npoints, br.corrections, br.newton_iterations, (double)br.newton_iterations / (double)br.corrections,
+           br.chord_iterations, br.end_reason);
     double rmax = 0, dpmax = 0;
     for (int i = 0; i < br.npoints; i++) {
         const gd_po *q = &br.pt[i].orbit;
