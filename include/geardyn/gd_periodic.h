@@ -101,12 +101,13 @@ GD_API const char *gd_bif_kind_name(int kind);
 typedef struct gd_bifurcation {
     int kind;                /* gd_bif_kind */
     int clearance;           /* the clearance of a contact change (index into model->clear), else -1 */
-    double p;                /* parameter at the middle of the final bracket */
+    double p;                /* parameter of the reported point: the end of the final bracket with the smaller
+                              * test function (after a bisection of the event count: its middle) */
     double p_lo, p_hi;       /* parameter at the ends of the final bracket (p_lo: the end towards the branch
                               * point before it, so p_lo > p_hi on a branch running to lower p) */
-    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; NS: the complex one with
+    double mu_re, mu_im;     /* the critical multiplier at that point (PD: nearest -1; NS: the complex one with
                               * positive imaginary part nearest the unit circle; else nearest 1) */
-    double y[GD_MAX_STATE];  /* Poincare point at the middle */
+    double y[GD_MAX_STATE];  /* Poincare point at that point */
     int after;               /* index of the branch point before which it lies */
     int corrections;         /* corrected points its location took (0 when not located by gd_continue) */
 } gd_bifurcation;
