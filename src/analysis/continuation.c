@@ -432,6 +432,15 @@ static gd_status locate(cont *c, int kind, int clr, const double *u0, const doub
     const long corr0 = c->br->corrections;
     double lo = 0.0, hi = ds1;
     st = kind == GD_BIF_CONTACT_CHANGE && !use_gap ? bisect_locate(&L, f0, &lo, &hi) : brent_locate(&L, &lo, &hi, err);
+    if (st == GD_ERR_GSL && use_gap && L.st == GD_OK) { /* the extremum vanished inside: the event count */
+        use_gap = 0;
+        L.gap = NULL;
+        L.nc = L.no = 0;
+        loc_keep(&L, 0.0, 1.0, u0[N]);
+        loc_keep(&L, ds1, -1.0, po1->p);
+        lo = 0.0, hi = ds1;
+        st = bisect_locate(&L, 1.0, &lo, &hi);
+    }
     if (st != GD_OK)
         return st;
     int ilo = loc_find(&L, lo), ihi = loc_find(&L, hi);
