@@ -30,7 +30,11 @@
  * 7. The located values converge as the integration tolerance tightens (alpha 0, rtol 1e-6, 1e-8,
  *    1e-10, 1e-12, atol 100 times smaller): the grazing within 1e-9 of 1/sqrt(1.99) at every
  *    tolerance, the folds within 1e-8 and the period doubling within 5e-8 of their values at
- *    rtol 1e-12. */
+ *    rtol 1e-12.
+ * 8. The extrema the grazing is located on (gd_sim_orbit_gaps): on the non-impacting orbit at
+ *    Omega 0.6 (alpha 0) the mesh coordinate has one maximum and one minimum per period, at
+ *    1 + F_m +- F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| (the closed form of
+ *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -376,10 +380,49 @@ static void tolerances(void)
            "rtol 1e-12's", dg, df, dpd);
 }
 
+/* check 8: the gap watch's extrema against the closed-form linear orbit */
+static void gap_extrema(void)
+{
+    const double Om = 0.6, zeta = 0.05, Fm = 0.1, Fa = 0.1;
+    const char *sets[] = {"excitation.ste_phase_deg=90", "solver.rtol=1e-10", "solver.atol=1e-12", NULL};
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    gd_error e = {0};
+    au_ks_case(&c, &m, 0.0, zeta, Fm, Fa, Om, sets);
+    gd_solver_opts_from_case(&c, &o);
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po orbit;
+    gd_gap_extrema g;
+    if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK ||
+        gd_po_solve(&m, &o, &po, y, &orbit, &e) != GD_OK || gd_sim_orbit_gaps(&m, &o, orbit.y[0], 1, &g, &e) != GD_OK)
+        au_die(&e);
+    double A = Fa * Om * Om / hypot(1.0 - Om * Om, 2.0 * zeta * Om), xmax = NAN, xmin = NAN, tmax = 0, tmin = 0;
+    for (int i = 0; i < g.n[0]; i++) {
+        if (g.kind[0][i] > 0)
+            xmax = g.x[0][i], tmax = g.t[0][i];
+        else
+            xmin = g.x[0][i], tmin = g.t[0][i];
+    }
+    double dt = fabs(fabs(tmax - tmin) - 0.5 * m.period);
+    printf("# gap extrema at Omega 0.6: %d, max %.12f, min %.12f, h %.3g; closed form %.12f, %.12f\n", g.n[0], xmax,
+           xmin, g.h[0], 1.0 + Fm + A, 1.0 + Fm - A);
+    tap_ok(g.n[0] == 2 && g.dropped == 0 && fabs(xmax - (1.0 + Fm + A)) < 1e-9 && fabs(xmin - (1.0 + Fm - A)) < 1e-9 &&
+               dt < 1e-6 * m.period && fabs(g.h[0] - 1.0) < 1e-12,
+           "gap watch on the linear orbit at Omega 0.6: %d extrema, max and min to %.2g and %.2g of 1 + F_m +- A, "
+           "half a period apart to %.2g periods", g.n[0], fabs(xmax - (1.0 + Fm + A)), fabs(xmin - (1.0 + Fm - A)),
+           dt / m.period);
+    gd_case_free(&c);
+}
+
 int main(void)
 {
     ks(0.0, "K&S alpha 0", 1, 1.0 / sqrt(1.99));
     ks(0.2, "K&S alpha 0.2", 0, 0.0);
     tolerances();
+    gap_extrema();
     return tap_done();
 }
