@@ -6,7 +6,8 @@
  *      of it in the mesh frequency (points, Newton iterations per correction, CPU per point)
  *      against a brute-force sweep point (300 transient and 200 recorded periods).
  *   3. The paper's bta model (cases/paper/sweep-speed.ini) continued in the speed from 3000 to
- *      5500 rpm: points, bifurcations, CPU per point against a sweep point.
+ *      5500 rpm: points, bifurcations and the corrected points their location took, Newton
+ *      iterations, CPU per point against a sweep point.
  *   4. The Kahraman & Singh curve, alpha 0, Omega 0.5 to 1.5 (tests/test_continuation.c): CPU.
  * Usage: bench_periodic [repeats] (best of the repeats). CPU time (getrusage) is the figure to quote
  * on a shared machine; instruction counts under valgrind --tool=callgrind are steadier still. */
@@ -111,6 +112,15 @@ static void bta(int repeats)
     gd_case_free(&c);
 }
 
+/* corrected points per located bifurcation */
+static double per_bifurcation(const gd_branch *br)
+{
+    long n = 0;
+    for (int i = 0; i < br->nbif; i++)
+        n += br->bif[i].corrections;
+    return br->nbif ? (double)n / br->nbif : 0.0;
+}
+
 /* the paper's bta model in the speed, 3000 to 5500 rpm (tests/test_continuation_bta.c) */
 static void bta_paper(void)
 {
@@ -144,10 +154,12 @@ static void bta_paper(void)
         gd_continue(gd_model_at_case_key, &cp, &o, &co, &start, &br, &e) != GD_OK)
         die(&e);
     double t = cpu() - t0;
-    printf("bta paper case, 3000 to 5500 rpm: %d points, %d bifurcations, %ld corrections, %.2f Newton iterations per "
-           "correction, %.3g s CPU, %.3g ms per point: %.3f of a sweep point (500 periods of %.3g ms)\n", br.npoints,
-           br.nbif, br.corrections, (double)br.newton_iterations / (double)br.corrections, t, 1e3 * t / br.npoints,
-           t / br.npoints / (500 * t_period), 1e3 * t_period);
+    printf("bta paper case, 3000 to 5500 rpm: %d points, %d bifurcations (%.1f corrections each), %ld corrections, "
+           "%.2f Newton iterations per correction, %.2f per point, %.2f chord iterations per correction, %.3g s CPU, "
+           "%.3g ms per point: %.3f of a sweep point (500 periods of %.3g ms)\n", br.npoints, br.nbif,
+           per_bifurcation(&br), br.corrections, (double)br.newton_iterations / (double)br.corrections,
+           (double)br.newton_iterations / br.npoints, (double)br.chord_iterations / (double)br.corrections, t,
+           1e3 * t / br.npoints, t / br.npoints / (500 * t_period), 1e3 * t_period);
     gd_branch_free(&br);
     gd_case_free(&c);
 }
@@ -181,9 +193,10 @@ static void ks(int repeats)
             die(&e);
         best = fmin(best, cpu() - t0);
     }
-    printf("K&S alpha 0, Omega %.3g to 1.5 (rtol %g): %d points, %d bifurcations, %ld corrections, %.2f Newton "
-           "iterations per correction, %.3g s CPU (300 transient periods included)\n", m.Omega, o.rtol, br.npoints,
-           br.nbif, br.corrections, (double)br.newton_iterations / (double)br.corrections, best);
+    printf("K&S alpha 0, Omega %.3g to 1.5 (rtol %g): %d points, %d bifurcations (%.1f corrections each), %ld "
+           "corrections, %.2f Newton iterations per correction, %.3g s CPU (300 transient periods included)\n",
+           m.Omega, o.rtol, br.npoints, br.nbif, per_bifurcation(&br), br.corrections,
+           (double)br.newton_iterations / (double)br.corrections, best);
     gd_branch_free(&br);
     gd_case_free(&c);
 }

@@ -6,13 +6,14 @@
  * 1. The branch from Omega 0.5 upwards ends on the bound 1.5 with the bifurcations expected of a
  *    softening impact oscillator: the grazing where the non-impacting orbit first touches the
  *    boundary (a contact change; for alpha 0 at Omega = 1/sqrt(1.99), where the linear amplitude
- *    F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| reaches F_m, located to 3e-7: the event
- *    detection misses penetrations shallower than the integration tolerance resolves), a fold
- *    above it where the branch turns back (the jump of an up sweep), a fold below it where the
- *    unstable branch turns into the stable impacting one (the jump of a down sweep), and for
- *    alpha 0 a period doubling; each located to an arclength bracket of 1e-8.
+ *    F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| reaches F_m, located to 1e-9 on the distance of
+ *    the orbit's smallest mesh deflection to the boundary), a fold above it where the branch turns
+ *    back (the jump of an up sweep), a fold below it where the unstable branch turns into the
+ *    stable impacting one (the jump of a down sweep), and for alpha 0 a period doubling; each
+ *    located to an arclength bracket of 1e-8 in at most 12 corrected points (Brent's method; a
+ *    bisection would take 22 or more).
  * 2. Both directions: from the attractor at Omega 1.0 continued down and up, the same bifurcations
- *    to 2e-7 in the parameter.
+ *    to 1e-8 in the parameter.
  * 3. Every stable branch point whose largest multiplier is below 0.9 is the attractor of plain
  *    simulation: from the orbit's Poincare point moved by 1e-3 in every component, integrated
  *    until |mu_max|^N < 1e-10, the state at mesh phase 0 agrees with the branch point to 1e-6.
@@ -25,7 +26,15 @@
  *    every stable point with |mu_max| < 0.9 against settled simulation to 1e-6.
  * 6. A brute-force sweep up and down in steps of 0.005 jumps once each way, in the grid interval
  *    that contains the upper fold (up) and the lower fold (down): the hysteresis interval of the
- *    sweep is bounded by the two folds. */
+ *    sweep is bounded by the two folds.
+ * 7. The located values converge as the integration tolerance tightens (alpha 0, rtol 1e-6, 1e-8,
+ *    1e-10, 1e-12, atol 100 times smaller): the grazing within 1e-9 of 1/sqrt(1.99) at every
+ *    tolerance, the folds within 1e-8 and the period doubling within 5e-8 of their values at
+ *    rtol 1e-12.
+ * 8. The extrema the grazing is located on (gd_sim_orbit_gaps): on the non-impacting orbit at
+ *    Omega 0.6 (alpha 0) the mesh coordinate has one maximum and one minimum per period, at
+ *    1 + F_m +- F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| (the closed form of
+ *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -61,12 +70,12 @@ static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o,
         au_die(&e);
     long it = br->newton_iterations;
     printf("# from Omega %.3g, direction %+d: %d points, %ld corrections, %ld Newton iterations (%.2f per "
-           "correction), end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
-           (double)it / (double)br->corrections, br->end_reason);
+           "correction), %ld chord iterations, end: %s\n", m->Omega, direction, br->npoints, br->corrections, it,
+           (double)it / (double)br->corrections, br->chord_iterations, br->end_reason);
     for (int i = 0; i < br->nbif; i++)
-        printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi\n",
+        printf("#   %s at Omega %.10f (bracket %.10f .. %.10f), multiplier %.6f%+.6fi, %d corrections\n",
                gd_bif_kind_name(br->bif[i].kind), br->bif[i].p, br->bif[i].p_lo, br->bif[i].p_hi, br->bif[i].mu_re,
-               br->bif[i].mu_im);
+               br->bif[i].mu_im, br->bif[i].corrections);
 }
 
 /* check 3: stable points against settled simulation */
@@ -270,11 +279,15 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
            "%s: from 0.5 to the bound 1.5 (%s): grazing of the mesh, fold above it, fold below it%s (%d "
            "bifurcations)", name, up.end_reason, expect_pd ? ", period doubling" : "", up.nbif);
     double bw = 0;
-    for (int i = 0; i < up.nbif; i++)
+    int corr = 0;
+    for (int i = 0; i < up.nbif; i++) {
         bw = fmax(bw, fabs(up.bif[i].p_hi - up.bif[i].p_lo));
+        corr = up.bif[i].corrections > corr ? up.bif[i].corrections : corr;
+    }
     TAP_CLOSE(bw, 0.0, 1e-7, "largest parameter bracket of a located bifurcation");
+    tap_ok(corr > 0 && corr <= 12, "%s: at most 12 corrected points per bifurcation located (%d)", name, corr);
     if (grazing > 0 && ncc == 1)
-        TAP_CLOSE(cc[0]->p, grazing, 3e-7, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
+        TAP_CLOSE(cc[0]->p, grazing, 1e-9, "the grazing of the non-impacting orbit at Omega = 1/sqrt(1.99)");
     /* 2. both directions from the attractor at Omega 1 */
     gd_case c1;
     gd_model m1;
@@ -292,7 +305,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     for (int i = 0; i < up1.nbif && joined.nbif < 16; i++)
         all[joined.nbif++] = up1.bif[i];
     double dp = same_bifurcations(&up, &joined, 0);
-    tap_ok(dp >= 0 && dp < 2e-7, "%s: from Omega 1 down (%s) and up (%s): the same bifurcations (max |dp| %.3g)",
+    tap_ok(dp >= 0 && dp < 1e-8, "%s: from Omega 1 down (%s) and up (%s): the same bifurcations (max |dp| %.3g)",
            name, down.end_reason, up1.end_reason, dp);
     /* 3. and 4. */
     stable_points(name, &m, &o, &up);
@@ -312,9 +325,104 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     gd_case_free(&c1);
 }
 
+/* check 7: the located values against the integration tolerance */
+static void tolerances(void)
+{
+    const double rtol[] = {1e-6, 1e-8, 1e-10, 1e-12}, graze = 1.0 / sqrt(1.99);
+    double ref[4] = {0}, got[4][4];
+    int nb[4];
+    for (int k = 3; k >= 0; k--) {
+        char r[64], a[64];
+        snprintf(r, sizeof r, "solver.rtol=%g", rtol[k]);
+        snprintf(a, sizeof a, "solver.atol=%g", rtol[k] / 100);
+        const char *sets[] = {"excitation.ste_phase_deg=90", r, a, NULL};
+        gd_case c;
+        gd_model m;
+        gd_solver_opts o;
+        gd_error e = {0};
+        au_ks_case(&c, &m, 0.0, 0.05, 0.1, 0.1, 0.5, sets);
+        gd_solver_opts_from_case(&c, &o);
+        double y[GD_MAX_STATE];
+        gd_modes md;
+        if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        gd_cont_opts co;
+        gd_cont_opts_default(&co);
+        co.p_min = 0.5;
+        co.p_max = 1.5;
+        co.ds_max = 0.05;
+        co.po.tol = fmax(1e-9, 0.1 * rtol[k]);
+        gd_po start;
+        gd_branch br;
+        if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
+            gd_continue(gd_model_at_mesh_frequency, (void *)&m, &o, &co, &start, &br, &e) != GD_OK)
+            au_die(&e);
+        nb[k] = br.nbif;
+        for (int i = 0; i < 4; i++)
+            got[k][i] = i < br.nbif ? br.bif[i].p : NAN;
+        if (k == 3)
+            memcpy(ref, got[3], sizeof ref);
+        printf("# rtol %-6g: grazing %.10f, folds %.10f %.10f, period doubling %.10f\n", rtol[k], got[k][0],
+               got[k][1], got[k][2], got[k][3]);
+        gd_branch_free(&br);
+        gd_case_free(&c);
+    }
+    double dg = 0, df = 0, dpd = 0;
+    int n_ok = 1;
+    for (int k = 0; k < 4; k++) {
+        n_ok &= nb[k] == 4;
+        dg = fmax(dg, fabs(got[k][0] - graze));
+        df = fmax(df, fmax(fabs(got[k][1] - ref[1]), fabs(got[k][2] - ref[2])));
+        dpd = fmax(dpd, fabs(got[k][3] - ref[3]));
+    }
+    tap_ok(n_ok && dg < 1e-9 && df < 1e-8 && dpd < 5e-8, "K&S alpha 0 at rtol 1e-6 to 1e-12: 4 bifurcations each; "
+           "the grazing within %.2g of 1/sqrt(1.99), the folds within %.2g and the period doubling within %.2g of "
+           "rtol 1e-12's", dg, df, dpd);
+}
+
+/* check 8: the gap watch's extrema against the closed-form linear orbit */
+static void gap_extrema(void)
+{
+    const double Om = 0.6, zeta = 0.05, Fm = 0.1, Fa = 0.1;
+    const char *sets[] = {"excitation.ste_phase_deg=90", "solver.rtol=1e-10", "solver.atol=1e-12", NULL};
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    gd_error e = {0};
+    au_ks_case(&c, &m, 0.0, zeta, Fm, Fa, Om, sets);
+    gd_solver_opts_from_case(&c, &o);
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po orbit;
+    gd_gap_extrema g;
+    if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK ||
+        gd_po_solve(&m, &o, &po, y, &orbit, &e) != GD_OK || gd_sim_orbit_gaps(&m, &o, orbit.y[0], 1, &g, &e) != GD_OK)
+        au_die(&e);
+    double A = Fa * Om * Om / hypot(1.0 - Om * Om, 2.0 * zeta * Om), xmax = NAN, xmin = NAN, tmax = 0, tmin = 0;
+    for (int i = 0; i < g.n[0]; i++) {
+        if (g.kind[0][i] > 0)
+            xmax = g.x[0][i], tmax = g.t[0][i];
+        else
+            xmin = g.x[0][i], tmin = g.t[0][i];
+    }
+    double dt = fabs(fabs(tmax - tmin) - 0.5 * m.period);
+    printf("# gap extrema at Omega 0.6: %d, max %.12f, min %.12f, h %.3g; closed form %.12f, %.12f\n", g.n[0], xmax,
+           xmin, g.h[0], 1.0 + Fm + A, 1.0 + Fm - A);
+    tap_ok(g.n[0] == 2 && g.dropped == 0 && fabs(xmax - (1.0 + Fm + A)) < 1e-9 && fabs(xmin - (1.0 + Fm - A)) < 1e-9 &&
+               dt < 1e-6 * m.period && fabs(g.h[0] - 1.0) < 1e-12,
+           "gap watch on the linear orbit at Omega 0.6: %d extrema, max and min to %.2g and %.2g of 1 + F_m +- A, "
+           "half a period apart to %.2g periods", g.n[0], fabs(xmax - (1.0 + Fm + A)), fabs(xmin - (1.0 + Fm - A)),
+           dt / m.period);
+    gd_case_free(&c);
+}
+
 int main(void)
 {
     ks(0.0, "K&S alpha 0", 1, 1.0 / sqrt(1.99));
     ks(0.2, "K&S alpha 0.2", 0, 0.0);
+    tolerances();
+    gap_extrema();
     return tap_done();
 }

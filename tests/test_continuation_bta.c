@@ -8,7 +8,10 @@
  *    moved by 1e-4 in every component, integrated until |mu_max|^N < 1e-9, the state at mesh phase
  *    0 agrees with the branch point to 1e-6.
  * 3. Every bifurcation located lies between the two branch points that bracket it, its kind's test
- *    function having changed sign there; a period doubling has its multiplier within 1e-4 of -1. */
+ *    function having changed sign there; a period doubling has its multiplier within 1e-4 of -1;
+ *    each took at most 12 corrected points (Brent's method on a continuous test function, the
+ *    contact changes too: a bisection to locate_tol 1e-6 from steps of up to 20 would take 20 or
+ *    more). */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -49,8 +52,9 @@ int main(void)
     if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
         gd_continue(gd_model_at_case_key, &cp, &o, &co, &start, &br, &e) != GD_OK)
         au_die(&e);
-    printf("# %d points, %ld corrections, %ld Newton iterations (%.2f per correction), end: %s\n", br.npoints,
-           br.corrections, br.newton_iterations, (double)br.newton_iterations / (double)br.corrections, br.end_reason);
+    printf("# %d points, %ld corrections, %ld Newton iterations (%.2f per correction), %ld chord iterations, end: %s\n",
+           br.npoints, br.corrections, br.newton_iterations, (double)br.newton_iterations / (double)br.corrections,
+           br.chord_iterations, br.end_reason);
     double rmax = 0, dpmax = 0;
     for (int i = 0; i < br.npoints; i++) {
         const gd_po *q = &br.pt[i].orbit;
@@ -62,10 +66,11 @@ int main(void)
                q->events[2], q->events[3], q->events[4], q->events[5]);
     }
     for (int i = 0; i < br.nbif; i++)
-        printf("#   %s%s%s at %.4f rpm (bracket %.4f .. %.4f), multiplier %.6f%+.6fi\n",
+        printf("#   %s%s%s at %.4f rpm (bracket %.4f .. %.4f), multiplier %.6f%+.6fi, %d corrections\n",
                gd_bif_kind_name(br.bif[i].kind), br.bif[i].clearance >= 0 ? " of " : "",
                br.bif[i].clearance >= 0 ? m.clear[br.bif[i].clearance].name : "", br.bif[i].p * cp.scale,
-               br.bif[i].p_lo * cp.scale, br.bif[i].p_hi * cp.scale, br.bif[i].mu_re, br.bif[i].mu_im);
+               br.bif[i].p_lo * cp.scale, br.bif[i].p_hi * cp.scale, br.bif[i].mu_re, br.bif[i].mu_im,
+               br.bif[i].corrections);
     double last = br.pt[br.npoints - 1].orbit.p * cp.scale;
     tap_ok(br.end == GD_END_BOUND && fabs(last - 5500.0) < 1e-6 && rmax < co.po.tol,
            "from 3000 rpm to the bound 5500 rpm (last point %.6f rpm, %s), largest residual %.3g", last,
@@ -101,9 +106,10 @@ int main(void)
     TAP_CLOSE(dmax, 0.0, 1e-6, label);
 
     /* 3. the bifurcations lie where their test functions changed sign */
-    int bad = 0;
+    int bad = 0, corr = 0;
     for (int i = 0; i < br.nbif; i++) {
         const gd_bifurcation *b = &br.bif[i];
+        corr = b->corrections > corr ? b->corrections : corr;
         const gd_po *a = &br.pt[b->after - 1].orbit, *z = &br.pt[b->after].orbit;
         int inside = (b->p - a->p) * (b->p - z->p) <= 0;
         int sign = 1;
@@ -116,6 +122,7 @@ int main(void)
     }
     tap_ok(br.nbif > 0 && bad == 0, "%d bifurcations, each between the branch points around it with its test "
            "function changed (%d not)", br.nbif, bad);
+    tap_ok(corr > 0 && corr <= 12, "at most 12 corrected points per bifurcation located (%d)", corr);
     gd_branch_free(&br);
     gd_case_free(&c);
     return tap_done();

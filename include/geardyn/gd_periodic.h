@@ -6,9 +6,11 @@
  * (gd_sim_period_map: variational equations with a saltation matrix at every located contact
  * event). Its stability comes from the Floquet multipliers, the eigenvalues of the monodromy
  * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
- * follows an orbit in a numeric parameter p, with an adaptive step, and locates by bisection the
- * folds (the tangent's parameter component changes sign), period doublings (a real multiplier
- * passes -1), Neimark-Sacker points (a complex pair crosses the unit circle) and changes of the contact sequence (grazing) between its points. */
+ * follows an orbit in a numeric parameter p, with an adaptive step, and locates between its points,
+ * by GSL's Brent solver in the arclength, the folds (the tangent's parameter component changes
+ * sign), period doublings (a real multiplier passes -1), Neimark-Sacker points (a complex pair
+ * crosses the unit circle) and changes of the contact sequence (grazing: an extremum of a
+ * clearance coordinate crosses its boundary). */
 #ifndef GD_PERIODIC_H
 #define GD_PERIODIC_H
 
@@ -99,13 +101,15 @@ GD_API const char *gd_bif_kind_name(int kind);
 typedef struct gd_bifurcation {
     int kind;                /* gd_bif_kind */
     int clearance;           /* the clearance of a contact change (index into model->clear), else -1 */
-    double p;                /* parameter at the middle of the final bracket */
+    double p;                /* parameter of the reported point: the end of the final bracket with the smaller
+                              * test function (after a bisection of the event count: its middle) */
     double p_lo, p_hi;       /* parameter at the ends of the final bracket (p_lo: the end towards the branch
                               * point before it, so p_lo > p_hi on a branch running to lower p) */
-    double mu_re, mu_im;     /* the critical multiplier at the middle (PD: nearest -1; NS: the complex one with
+    double mu_re, mu_im;     /* the critical multiplier at that point (PD: nearest -1; NS: the complex one with
                               * positive imaginary part nearest the unit circle; else nearest 1) */
-    double y[GD_MAX_STATE];  /* Poincare point at the middle */
+    double y[GD_MAX_STATE];  /* Poincare point at that point */
     int after;               /* index of the branch point before which it lies */
+    int corrections;         /* corrected points its location took (0 when not located by gd_continue) */
 } gd_bifurcation;
 
 typedef enum gd_branch_end {
@@ -130,7 +134,9 @@ typedef struct gd_branch {
     char end_detail[GD_ERROR_MSG_MAX]; /* why the corrector failed (no orbit at the bound, or at the smallest
                                         * step): the solver's message, "" otherwise */
     long newton_iterations;  /* over all points, located bifurcations included */
-    long corrections;        /* corrector runs (accepted, rejected, and the bisection's) */
+    long corrections;        /* corrector runs (accepted, rejected, and the location's) */
+    long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that
+                              * came before the Newton iterations */
 } gd_branch;
 
 /* Follow the orbit start (solved by gd_po_solve or a branch point; start->p its parameter) in p,

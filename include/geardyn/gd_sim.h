@@ -142,6 +142,27 @@ GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, c
                                    double *y1, double *M, gd_sim_stats *st, gd_error *err);
 GD_API const gd_model *gd_sim_model(const gd_sim *s);
 
+/* The local extrema of the clearance coordinates over a run: where the rate of a coordinate
+ * changes sign inside a step, the time at which it vanishes, found on the dense output
+ * (gd_sim_dense) by GSL's Brent solver, and the coordinate there. The distance of an extremum
+ * to a boundary, x - h or x + h, is signed: its zero is a grazing (docs/continuation.md). */
+#define GD_GAP_EXTREMA_MAX 64
+typedef struct gd_gap_extrema {
+    int n[GD_MAX_CLEAR];                        /* extrema recorded, by clearance */
+    long dropped;                               /* extrema beyond GD_GAP_EXTREMA_MAX, not recorded */
+    double h[GD_MAX_CLEAR];                     /* the clearance's half gap (boundaries at +-h) */
+    double t[GD_MAX_CLEAR][GD_GAP_EXTREMA_MAX]; /* time of the extremum, dimensionless, from the start */
+    double x[GD_MAX_CLEAR][GD_GAP_EXTREMA_MAX]; /* the clearance coordinate there */
+    signed char kind[GD_MAX_CLEAR][GD_GAP_EXTREMA_MAX]; /* +1 maximum, -1 minimum */
+} gd_gap_extrema;
+/* Record into g (cleared here) the extrema of every step from now on; NULL stops. */
+GD_API void gd_sim_watch_gaps(gd_sim *s, gd_gap_extrema *g);
+/* The extrema of the clearance coordinates over nper mesh periods from y0 at t = 0 (a plain
+ * integration, as gd_sim_period_map without M). */
+GD_API gd_status gd_sim_orbit_gaps(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
+                                   gd_gap_extrema *g, gd_error *err);
+
+
 #ifdef __cplusplus
 }
 #endif

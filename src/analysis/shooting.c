@@ -52,6 +52,7 @@ static gd_status maps_plain(gd_shoot *sh, const double *u, double p, double *y1,
 gd_status gd_shoot_eval(gd_shoot *sh, const double *u, int with_p, gd_error *err)
 {
     const int n = sh->n, N = sh->N;
+    sh->jac_ok = 0;
     double p = u[N];
     gd_model m;
     gd_status st = sh->model_at(p, &m, sh->ctx, err);
@@ -81,6 +82,7 @@ gd_status gd_shoot_eval(gd_shoot *sh, const double *u, int with_p, gd_error *err
         return gd_error_prefix(err, "the derivative in the parameter at p = %.9g +- %.3g", p, dp);
     for (int i = 0; i < N; i++)
         sh->rp[i] = (yp[i] - ym[i]) / (2.0 * dp);
+    sh->jac_ok = 1;
     return GD_OK;
 }
 
@@ -140,9 +142,55 @@ done:
     return st;
 }
 
+/* The chord iteration (gd_shoot_correct): the Jacobian of the last evaluation, the residual of
+ * plain maps, at most CHORD_MAX iterations, each to reduce the residual's max-norm by CHORD_RATE at
+ * least. GD_OK when the residual fell below tol; anything else leaves u as it came in. */
+#define CHORD_MAX 8
+#define CHORD_RATE 0.5
+static gd_status chord(gd_shoot *sh, double *u, const double *v, const double *u_pred, double tol, gd_error *err)
+{
+    const int N = sh->N, n = sh->n;
+    double u_in[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], b[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1];
+    double dx[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], y1[GD_PO_MAX_PERIODS * GD_MAX_STATE];
+    memcpy(u_in, u, sizeof(double) * (size_t)(N + 1));
+    double last = INFINITY;
+    gd_error e1 = {0};
+    for (int it = 0; it <= CHORD_MAX; it++) {
+        gd_status st = maps_plain(sh, u, u[N], y1, &e1);
+        if (st == GD_ERR_NOMEM)
+            return gd_error_set(err, st, "%s", e1.msg);
+        double rnorm = 0, g = 0;
+        for (int k = 0; k < sh->nseg && st == GD_OK; k++)
+            for (int i = 0; i < n; i++) {
+                b[k * n + i] = -(y1[k * n + i] - u[((k + 1) % sh->nseg) * n + i]);
+                rnorm = fmax(rnorm, fabs(b[k * n + i]));
+            }
+        for (int i = 0; i <= N; i++)
+            g += v[i] * (u[i] - u_pred[i]);
+        if (st == GD_OK && rnorm < tol && fabs(g) < tol)
+            return GD_OK;
+        if (st != GD_OK || !(rnorm < CHORD_RATE * last) || it == CHORD_MAX)
+            break;
+        last = rnorm;
+        b[N] = -g;
+        if (solve(sh, v, b, dx, &e1) != GD_OK)
+            break;
+        for (int i = 0; i <= N; i++)
+            u[i] += dx[i];
+        sh->chord_iterations++;
+    }
+    memcpy(u, u_in, sizeof(double) * (size_t)(N + 1));
+    return GD_ERR_SOLVER;
+}
+
 gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const double *u_pred, double tol, int max_iter,
                            int *iters, gd_error *err)
 {
+    if (sh->chord && sh->jac_ok && v) {
+        gd_status st = chord(sh, u, v, u_pred, tol, err);
+        if (st == GD_ERR_NOMEM)
+            return st;
+    }
     const int N = sh->N;
     double b[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], dx[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1];
     double rnorm = INFINITY;

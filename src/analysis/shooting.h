@@ -18,6 +18,9 @@ typedef struct gd_shoot {
     double rp[GD_PO_MAX_PERIODS * GD_MAX_STATE]; /* dr/dp (central difference) */
     double *Mk;                                  /* nseg monodromies of the segments, n x n each */
     long events[GD_MAX_CLEAR];                   /* events of the segments, by clearance */
+    int jac_ok;              /* Mk and rp hold the last evaluation's Jacobian (with dr/dp) */
+    int chord;               /* gd_shoot_correct (bordered) tries the chord iteration first */
+    long chord_iterations;   /* chord iterations, over all corrections */
 } gd_shoot;
 
 gd_status gd_shoot_init(gd_shoot *sh, gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o, int n,
@@ -27,7 +30,10 @@ void gd_shoot_free(gd_shoot *sh);
 gd_status gd_shoot_eval(gd_shoot *sh, const double *u, int with_p, gd_error *err);
 /* Newton from u (N + 1 values, in and out) until the max-norm of the residual is below tol: p
  * fixed (v NULL), or with the pseudo-arclength condition v . (u - u_pred) = 0. *iters: linear
- * solves. The last evaluation is at the returned u (with dr/dp when v is given). */
+ * solves with a new Jacobian. With sh->chord and the Jacobian of an earlier evaluation at hand
+ * (bordered only), the chord iteration comes first: that Jacobian kept, the residual from plain
+ * segment maps (no monodromy), while it contracts; Newton then starts where it ended. The last
+ * evaluation is at the returned u (with dr/dp when v is given). */
 gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const double *u_pred, double tol, int max_iter,
                            int *iters, gd_error *err);
 /* The unit tangent t of the solution curve at the last evaluation: [dr/dy dr/dp; v] t = [0; 1],

@@ -4,6 +4,8 @@
  * state has left. Called by the driver (simulate.c) after each step. */
 #include "sim_internal.h"
 
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
 #include <math.h>
 #include <string.h>
 
@@ -173,6 +175,92 @@ gd_status gd_sim_grazing_watch(gd_sim *s, double t0, double t1, double *tg, gd_e
     return GD_OK;
 }
 
+GD_API void gd_sim_watch_gaps(gd_sim *s, gd_gap_extrema *g)
+{
+    s->gaps = g;
+    if (!g)
+        return;
+    memset(g, 0, sizeof *g);
+    for (int c = 0; c < s->m.nclear; c++)
+        g->h[c] = s->m.clear[c].h;
+}
+
+typedef struct gap_rate {
+    gd_sim *s;
+    int c;
+    gd_status st;
+    gd_error *err;
+    double x; /* the coordinate at the last time evaluated */
+} gap_rate;
+
+/* the rate of clearance c on the dense output at absolute time t (GSL's gsl_function) */
+static double gap_rate_at(double t, void *params)
+{
+    gap_rate *r = params;
+    double y[GD_MAX_STATE], v = NAN;
+    r->st = gd_sim_dense(r->s, t, y, r->err);
+    if (r->st == GD_OK)
+        gd_model_clearance(&r->s->m, r->c, t - (double)r->s->shift * r->s->m.period, y, &r->s->md, &r->x, &v);
+    return v;
+}
+
+/* The gap watch over the step [t0, t1] (absolute): each clearance whose rate changes sign inside
+ * it has an extremum there, located by GSL's Brent solver on the rate of the dense output (the
+ * same values and rates at the step's ends as the grazing watch, with the septic interpolant in
+ * between). */
+static gd_status gap_watch(gd_sim *s, double t0, double t1, gd_error *err)
+{
+    gd_gap_extrema *g = s->gaps;
+    for (int c = 0; c < s->m.nclear; c++) {
+        gap_rate r = {s, c, GD_OK, err, 0.0};
+        double v0 = gap_rate_at(t0, &r), v1 = gap_rate_at(t1, &r);
+        if (r.st != GD_OK)
+            return r.st;
+        if ((v0 >= 0) == (v1 >= 0))
+            continue;
+        gsl_function F = {gap_rate_at, &r};
+        gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+        if (!rs)
+            return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gap watch");
+        int rc = gsl_root_fsolver_set(rs, &F, t0, t1), conv = GSL_CONTINUE;
+        for (int it = 0; it < 100 && rc == GSL_SUCCESS && conv == GSL_CONTINUE; it++) {
+            rc = gsl_root_fsolver_iterate(rs);
+            conv = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs),
+                                          1e-13 * s->m.period, 0.0);
+        }
+        double tr = gsl_root_fsolver_root(rs);
+        gsl_root_fsolver_free(rs);
+        if (r.st != GD_OK)
+            return r.st;
+        if (rc != GSL_SUCCESS) /* (after 100 iterations the estimate stands: the coordinate is flat there) */
+            return gd_error_set(err, GD_ERR_GSL, "the gap watch of %s: gsl_root_fsolver_brent: %s", s->m.clear[c].name,
+                                gsl_strerror(rc));
+        gap_rate_at(tr, &r);
+        if (r.st != GD_OK)
+            return r.st;
+        if (g->n[c] == GD_GAP_EXTREMA_MAX) {
+            g->dropped++;
+            continue;
+        }
+        g->t[c][g->n[c]] = tr;
+        g->x[c][g->n[c]] = r.x;
+        g->kind[c][g->n[c]++] = v0 >= 0 ? 1 : -1;
+    }
+    return GD_OK;
+}
+
+gd_status gd_sim_after_step(gd_sim *s, double t0, double t1, gd_error *err)
+{
+    if (s->gaps && t1 > t0) {
+        gd_status st = gap_watch(s, t0, t1, err);
+        if (st != GD_OK)
+            return st;
+    }
+    if (s->step_hook && s->step_hook(s, t0, t1, s->hook_user))
+        return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+    return GD_OK;
+}
+
 static int new_mode_for(int old, int r_hi, int r_lo)
 {
     /* r_hi: crossing of x - h; r_lo: crossing of x + h (+1 up, -1 down, 0 none) */
@@ -336,8 +424,9 @@ static gd_status refine_root_state(gd_sim *s, double t0, double tr, gd_error *er
         s->t_step0 = ta;
         s->t = t2;
         s->cx_ok = 0;
-        if (s->step_hook && s->step_hook(s, sim_abs_time(s, ta), sim_abs_time(s, t2), s->hook_user))
-            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+        gd_status hst = gd_sim_after_step(s, sim_abs_time(s, ta), sim_abs_time(s, t2), err);
+        if (hst != GD_OK)
+            return hst;
         if (flag == ARK_ROOT_RETURN) {
             flag = s->ops->get_root_info(s->mem, s->rootsfound);
             found = 1;

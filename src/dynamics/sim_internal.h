@@ -53,6 +53,7 @@ struct gd_sim {
      * only while it locates a crossing that the step-end check found, or redoes a step the
      * grazing watch suspects; every other step ends without its root machinery */
     int gate, armed;
+    gd_gap_extrema *gaps;    /* the gap watch's record (gd_sim_watch_gaps), or NULL */
     gd_step_hook step_hook;
     gd_event_hook event_hook;
     void *hook_user;
@@ -126,6 +127,9 @@ gd_status gd_sim_roots_setup(gd_sim *s, gd_error *err);
 gd_status gd_sim_arm_roots(gd_sim *s, int on, gd_error *err);
 void gd_sim_clearances_now(gd_sim *s);
 gd_status gd_sim_grazing_watch(gd_sim *s, double t0, double t1, double *tg, gd_error *err);
+/* After an accepted step (or redone piece) [t0, t1] (absolute): the gap watch when on, then the
+ * step hook */
+gd_status gd_sim_after_step(gd_sim *s, double t0, double t1, gd_error *err);
 double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1);
 gd_status gd_sim_roots_after_step(gd_sim *s, int flag, int refine, double t0, double tret, double tc, int *handled,
                                   gd_error *err);

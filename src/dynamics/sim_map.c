@@ -2,7 +2,8 @@
  * one fresh integrator from t = 0 (the excitation is periodic in the mesh period, so every
  * segment of a multiple-shooting orbit starts there), with the tangent vectors set to the
  * identity and carried without renormalisation through every event and its saltation matrix
- * (sim_events.c). docs/continuation.md derives it. */
+ * (sim_events.c). docs/continuation.md derives it. gd_sim_orbit_gaps runs the same orbit plain
+ * with the gap watch on (sim_events.c). */
 #include "sim_internal.h"
 
 #include <string.h>
@@ -37,6 +38,29 @@ GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, c
         if (st)
             gd_sim_get_stats(s, st);
     }
+    gd_sim_free(s);
+    return status;
+}
+
+GD_API gd_status gd_sim_orbit_gaps(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
+                                   gd_gap_extrema *g, gd_error *err)
+{
+    if (nper < 1)
+        return gd_error_set(err, GD_ERR_INPUT, "a run of %d mesh periods (valid: 1 or more)", nper);
+    gd_solver_opts oo = *o;
+    oo.n_tangent = 0;
+    gd_modes md;
+    memset(&md, 0, sizeof md);
+    md.from_state = !o->root_finding;
+    gd_status status = gd_model_consistent_modes(m, 0.0, y0, &md, err);
+    if (status != GD_OK)
+        return status;
+    gd_sim *s = NULL;
+    status = gd_sim_create(m, &oo, y0, &md, &s, err);
+    if (status == GD_OK)
+        gd_sim_watch_gaps(s, g);
+    for (int p = 0; p < nper && status == GD_OK; p++)
+        status = gd_sim_period(s, err);
     gd_sim_free(s);
     return status;
 }

@@ -441,8 +441,8 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
         /* gated root finding: a root function that changed sign over the step */
         double tc = s->nroots && !s->armed && !s->md.from_state ? gd_sim_crossing_in_step(s, t0, tret) : -1.0;
         int refine = (flag == ARK_ROOT_RETURN && s->o.refine_events) || tc > 0;
-        if (!refine && s->step_hook && s->step_hook(s, sim_abs_time(s, t0), sim_abs_time(s, tret), s->hook_user))
-            return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped by the step hook");
+        if (!refine && (st = gd_sim_after_step(s, sim_abs_time(s, t0), sim_abs_time(s, tret), err)) != GD_OK)
+            return st;
         /* phase 3: the roots of the step, located and handled (sim_events.c) */
         int handled = 0;
         st = gd_sim_roots_after_step(s, flag, refine, t0, tret, tc, &handled, err);

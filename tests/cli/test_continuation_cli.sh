@@ -3,11 +3,12 @@
 # (Kahraman & Singh, constant stiffness, Omega 0.5 to 1.5 through operating.speed_rpm) writes
 # branch.csv, bifurcations.csv, summary.json and the picture; the branch from Omega 0.5 has the
 # grazing, the two folds and the period doubling where tests/test_continuation.c finds them with the
-# library directly (to 1e-7 in Omega: the locate tolerance 1e-8 in arclength, and the grazing's own
-# bias); its stable points have |mu_max| < 1; the period-2 branch switched to at the period doubling
-# starts there, period-doubles again where the library test finds it, and the period-4 branch born
-# there runs to the bound; each switched branch is followed back to its doubling; max_branches
-# bounds their number; end_reason says the bound in rpm. Bad [continuation] settings are refused with exit 2 naming file, line and key, and
+# library directly (to 1e-8 in Omega: the locate tolerance is 1e-8 in arclength; the grazing against
+# its closed form 1/sqrt(1.99)); its stable points have |mu_max| < 1; the period-2 branch switched to at
+# the period doubling starts there, period-doubles again where the library test finds it, and the
+# period-4 branch born there runs to the bound; each switched branch is followed back to its doubling;
+# max_branches bounds their number; end_reason says the bound in rpm. Bad [continuation] settings are
+# refused with exit 2 naming file, line and key, and
 # nothing is written. TAP output.
 set -u
 G=${GEARDYN:?}
@@ -38,14 +39,14 @@ s = json.load(open(d + "/summary.json"))
 def ok(c, msg):
     print(("PASS " if c else "FAIL ") + msg)
 # the values tests/test_continuation.c prints for alpha 0 (docs/continuation.md section 4)
-expect = [("contact-change", 0.7088813139), ("fold", 0.7313611271), ("fold", 0.5853315696),
-          ("period-doubling", 1.2267006331)]
+expect = [("contact-change", 1.99 ** -0.5), ("fold", 0.7313611271), ("fold", 0.5853315696),
+          ("period-doubling", 1.2267006347)]
 b0 = [b for b in bf if b["branch"] == "0"]
 ok([b["kind"] for b in b0] == [k for k, _ in expect], "branch 0: grazing, fold, fold, period doubling in this "
    "order (%s)" % [b["kind"] for b in b0])
 for (k, om), b in zip(expect, b0):
     got = float(b["speed_rpm"]) / scale
-    ok(abs(got - om) < 1e-7, "%s at Omega %.10f (library test %.10f, |d| %.2g)" % (k, got, om, abs(got - om)))
+    ok(abs(got - om) < 1e-8, "%s at Omega %.10f (library test %.10f, |d| %.2g)" % (k, got, om, abs(got - om)))
     ok(abs(float(b["continuation_p"]) - got) < 1e-9, "%s: continuation_p is Omega" % k)
 pd = [b for b in b0 if b["kind"] == "period-doubling"]
 ok(pd and abs(float(pd[0]["mu_re"]) + 1) < 1e-4, "the period doubling's multiplier is -1")
