@@ -115,7 +115,11 @@ typedef struct gd_bifurcation {
 typedef enum gd_branch_end {
     GD_END_BOUND = 0,        /* p left [p_min, p_max] */
     GD_END_BUDGET = 1,       /* max_points reached */
-    GD_END_STEP = 2          /* no convergence at the smallest step */
+    GD_END_STEP = 2,         /* no convergence at the smallest step */
+    GD_END_CLOSED = 3,       /* back at its first orbit (or that orbit shifted by whole segments): a closed
+                              * curve, followed once round */
+    GD_END_HALF = 4          /* its orbit became one of half the period repeated: the branch crossed a period
+                              * doubling of that orbit onto the branch it was born from (multiple shooting) */
 } gd_branch_end;
 
 typedef struct gd_cont_point {
@@ -133,6 +137,10 @@ typedef struct gd_branch {
     char end_reason[GD_ERROR_MSG_MAX];
     char end_detail[GD_ERROR_MSG_MAX]; /* why the corrector failed (no orbit at the bound, or at the smallest
                                         * step): the solver's message, "" otherwise */
+    int closed_shift;        /* GD_END_CLOSED: the mesh periods by which the orbit it came back to is its first
+                              * one shifted (0: the first orbit itself) */
+    int closed_reversed;     /* GD_END_CLOSED: that shifted orbit passed the other way (the curve is symmetric
+                              * under the shift: what follows mirrors the branch's other direction) */
     long newton_iterations;  /* over all points, located bifurcations included */
     long corrections;        /* corrector runs (accepted, rejected, and the location's) */
     long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that

@@ -441,8 +441,13 @@ static gd_status locate(cont *c, int kind, int clr, const double *u0, const doub
         lo = 0.0, hi = ds1;
         st = bisect_locate(&L, 1.0, &lo, &hi);
     }
-    if (st != GD_OK)
+    /* a trial point without an orbit (the corrector failed between two points of the branch): the
+     * bifurcation keeps the bracket reached so far, wider than locate_tol, and the branch goes on */
+    const int soft = st != GD_OK && st != GD_ERR_NOMEM && st != GD_ERR_INTERNAL && st != GD_ERR_INTERRUPTED;
+    if (st != GD_OK && !soft)
         return st;
+    if (soft)
+        gd_error_clear(err);
     int ilo = loc_find(&L, lo), ihi = loc_find(&L, hi);
     double p_lo = ilo >= 0 ? L.p[ilo] : NAN, p_hi = ihi >= 0 ? L.p[ihi] : NAN;
     /* the point reported: the bracket's end nearer the root (the smaller test function), or, after
@@ -453,6 +458,11 @@ static gd_status locate(cont *c, int kind, int clr, const double *u0, const doub
         if (L.os[i] == s_best)
             po = &L.orbit[i];
     gd_po mid;
+    if (!po && soft) { /* the branch's own point at an end of the bracket */
+        po = s_best == ds1 ? po1 : po0;
+        if (s_best != 0.0 && s_best != ds1)
+            p_lo = u0[N], p_hi = po1->p;
+    }
     if (!po) {
         double u[UMAX], t[UMAX], g[UMAX];
         int iters;
@@ -574,6 +584,70 @@ static gd_status end_on_bound(cont *c, const double *u, const double *t, double 
 
 #define DP_MARGIN 0.98 /* steps aim at this fraction of dp_max */
 
+/* The branch's first point u0 with its tangent t0, and whether the branch has left it (been farther
+ * from it, and from its shifts, than twice the step that got there). */
+typedef struct first_point {
+    double u[UMAX], t[UMAX];
+    int left;
+} first_point;
+
+/* x shifted by k segments: the same orbit started k segments later (the parameter kept) */
+static void shifted(const gd_shoot *sh, const double *x, int k, double *out)
+{
+    for (int j = 0; j < sh->nseg; j++)
+        memcpy(out + j * sh->n, x + ((j + k) % sh->nseg) * sh->n, sizeof(double) * (size_t)sh->n);
+    out[sh->N] = x[sh->N];
+}
+
+/* Whether the chord from a to b passes the first point (or a shift of it by whole segments) within a
+ * quarter of its length with the tangent tb along the first point's: the branch is a closed curve,
+ * followed once round (docs/continuation.md section 3). A shifted first point may be passed the other
+ * way (*reversed): the curve is symmetric under the shift, and what follows is the mirror image of
+ * the branch's other direction from its start. *kshift: the shift, in segments. */
+static int closes(const gd_shoot *sh, first_point *f, const double *a, const double *b, const double *tb,
+                  int *kshift, int *reversed)
+{
+    const int M = sh->N + 1;
+    double d2 = 0, nearest = INFINITY;
+    for (int i = 0; i < M; i++)
+        d2 += (b[i] - a[i]) * (b[i] - a[i]);
+    int hit = 0;
+    for (int k = 0; k < sh->nseg && !hit; k++) {
+        double s[UMAX], ts[UMAX], w_d = 0, align = 0, dist2 = 0, db2 = 0;
+        shifted(sh, f->u, k, s);
+        shifted(sh, f->t, k, ts);
+        for (int i = 0; i < M; i++) {
+            w_d += (s[i] - a[i]) * (b[i] - a[i]);
+            align += tb[i] * ts[i];
+            db2 += (b[i] - s[i]) * (b[i] - s[i]);
+        }
+        double lam = d2 > 0 ? fmin(fmax(w_d / d2, 0.0), 1.0) : 0.0;
+        for (int i = 0; i < M; i++) {
+            double r = a[i] + lam * (b[i] - a[i]) - s[i];
+            dist2 += r * r;
+        }
+        nearest = fmin(nearest, db2);
+        if (f->left && dist2 < 0.0625 * d2 && (align > 0.5 || (k > 0 && align < -0.5)))
+            hit = 1, *kshift = k, *reversed = align < 0;
+    }
+    if (nearest > 4.0 * d2)
+        f->left = 1;
+    return hit;
+}
+
+/* Whether the orbit at u is one of half its period repeated (the states of segment j and j + nseg/2
+ * the same to the corrector's tolerance): the branch has crossed onto the orbit it doubled from. */
+static int half_period(const gd_shoot *sh, const double *u, double tol)
+{
+    if (sh->nseg < 2 || sh->nseg % 2)
+        return 0;
+    const int h = sh->nseg / 2 * sh->n;
+    double d = 0;
+    for (int i = 0; i < h; i++)
+        d = fmax(d, fabs(u[i] - u[i + h]));
+    return d < 1e3 * tol;
+}
+
 static gd_status run(cont *c, const gd_po *start, gd_error *err)
 {
     const gd_cont_opts *co = c->co;
@@ -585,6 +659,9 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
         st = push_point(c->br, &po, t[N], 0.0, err);
     if (st != GD_OK)
         return st;
+    first_point first = {.left = 0};
+    memcpy(first.u, u, sizeof first.u);
+    memcpy(first.t, t, sizeof first.t);
     double ds = co->ds;
     /* the corrected change of p over the predicted one, ds t_p, at the last step (at least 1): the
      * corrector moves p further than the tangent where the branch curves, and a step that then
@@ -627,6 +704,21 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
             st = push_point(c->br, &po1, t1[N], ds, err);
         if (st != GD_OK)
             return st;
+        if (half_period(&c->sh, u1, co->po.tol)) {
+            c->br->end = GD_END_HALF;
+            snprintf(c->br->end_reason, sizeof c->br->end_reason, "the orbit of half the period reached at p = %.9g",
+                     u1[N]);
+            return GD_OK;
+        }
+        int k = 0, rev = 0;
+        if (closes(&c->sh, &first, u, u1, t1, &k, &rev)) {
+            c->br->end = GD_END_CLOSED;
+            c->br->closed_shift = k * c->sh.per_seg;
+            c->br->closed_reversed = rev;
+            snprintf(c->br->end_reason, sizeof c->br->end_reason, "closed: back at its first orbit%s%s at p = %.9g",
+                     k ? " shifted by whole mesh periods" : "", rev ? ", the other way" : "", u1[N]);
+            return GD_OK;
+        }
         memcpy(u, u1, sizeof u);
         memcpy(t, t1, sizeof t);
         po = po1;

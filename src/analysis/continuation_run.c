@@ -330,6 +330,18 @@ static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_c
         snprintf(o, n, "no orbit at the bound %s = %.10g%s%s (p = %.9g): the branch ends at %.10g%s%s (p = %.9g): "
                  "%s", k, gd_contin_value(res, bound), sp, res->unit, bound, gd_contin_value(res, p), sp, res->unit,
                  p, br->end_detail);
+    else if (br->end == GD_END_CLOSED && br->closed_shift)
+        snprintf(o, n, "closed: back at its first orbit shifted by %d mesh period%s (the same orbit)%s at %s = "
+                 "%.10g%s%s (p = %.9g)", br->closed_shift, br->closed_shift > 1 ? "s" : "", br->closed_reversed ?
+                 ", passed the other way: the rest mirrors the branch's other direction" : "", k,
+                 gd_contin_value(res, p), sp, res->unit, p);
+    else if (br->end == GD_END_CLOSED)
+        snprintf(o, n, "closed: back at its first orbit at %s = %.10g%s%s (p = %.9g)", k, gd_contin_value(res, p), sp,
+                 res->unit, p);
+    else if (br->end == GD_END_HALF)
+        snprintf(o, n, "its orbit became the orbit of half the period repeated at %s = %.10g%s%s (p = %.9g): the branch "
+                 "crossed a period doubling of that orbit onto the branch it was born from", k, gd_contin_value(res, p),
+                 sp, res->unit, p);
     else if (br->end == GD_END_BUDGET)
         snprintf(o, n, "%d points reached at %s = %.10g%s%s (p = %.9g)", br->npoints, k, gd_contin_value(res, p),
                  sp, res->unit, p);

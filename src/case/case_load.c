@@ -254,6 +254,9 @@ static gd_status bad_value(const char *where, const gd_keyspec *k, const char *v
 {
     char range[512];
     describe_range(k, range, sizeof range);
+    if (!where)
+        return gd_error_set(err, GD_ERR_INPUT, "%s.%s: %s '%s' (valid: %s)", k->section, k->key, problem, value,
+                            range);
     return gd_error_set(err, GD_ERR_INPUT, "%s: %s.%s: %s '%s' (valid: %s)", where, k->section, k->key, problem,
                         value, range);
 }
@@ -543,11 +546,11 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
     if (k->type != GD_KEY_DOUBLE && k->type != GD_KEY_INT)
         return gd_error_set(err, GD_ERR_INPUT, "%s: not a numeric key", name);
     if (k->type == GD_KEY_INT && value != floor(value))
-        return bad_value("sweep", k, "fractional", "not a whole number:", err);
+        return bad_value(NULL, k, "fractional", "not a whole number:", err);
     if (!gd_case_key_in_range(k, value)) {
         char txt[64];
         snprintf(txt, sizeof txt, "%.17g", value);
-        return bad_value("sweep", k, txt, "out of range:", err);
+        return bad_value(NULL, k, txt, "out of range:", err);
     }
     if (k->type == GD_KEY_DOUBLE)
         *(double *)field(c, k) = value;

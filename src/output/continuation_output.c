@@ -114,8 +114,8 @@ gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_
 
 static const char *end_name(int end)
 {
-    static const char *names[] = {"bound", "budget", "step"};
-    return end >= 0 && end <= GD_END_STEP ? names[end] : "?";
+    static const char *names[] = {"bound", "budget", "step", "closed", "half-period"};
+    return end >= 0 && end <= GD_END_HALF ? names[end] : "?";
 }
 
 static json_t *branch_json(const gd_contin_result *res, int b)

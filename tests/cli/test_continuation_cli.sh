@@ -135,6 +135,25 @@ assert len(s["branches"]) == 3, len(s["branches"])
 assert any("max_branches" in n for n in s["notes"]), s["notes"]
 ' "$work/mb"
 ok $? "max_branches = 3: three branches, a note for the doubling not switched"
+# to Omega 2: the period-2 branch is a closed curve between the period doublings at Omega 1.2267 and
+# 1.9527 (it comes back to its first orbit shifted by one mesh period, passed the other way), and the
+# period-4 branch from its doubling runs back onto the doubled period-2 orbit: every branch ends by
+# its geometry or a bound, none by the point budget
+"$G" run "$KS" --out "$work/o2" --quiet --set continuation.to=6366.1977236758 --set continuation.max_points=400 \
+    --set continuation.max_branches=7 --set output.plots=off > "$work/o2.txt" 2>&1
+ok $? "continuation to Omega 2 runs"
+python3 -c '
+import json, sys
+b = json.load(open(sys.argv[1] + "/summary.json"))["results"]["branches"]
+ends = [x["end"] for x in b]
+assert "budget" not in ends, ends
+c = [x for x in b if x["end"] == "closed"]
+assert len(c) >= 1 and c[0]["period_n"] == 2 and "shifted by 1 mesh period" in c[0]["end_reason"], c[:1]
+h = [x for x in b if x["end"] == "half-period"]
+assert len(h) == 1 and h[0]["period_n"] == 4, ends
+print("# ends:", ends)
+' "$work/o2"
+ok $? "to Omega 2: the period-2 branch closes (shifted by one period), the period-4 one reaches the doubled period-2 orbit, no branch ends on the budget"
 # in the file: the message names its line
 sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
 line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)
