@@ -41,7 +41,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
     gd_gnuplot_printf(s, "set title \"%s%scontinuation in %s: solid stable, dashed unstable\" noenhanced\n",
                       c->title, c->title[0] ? "\\n" : "", res->parameter);
     gd_gnuplot_printf(s, "set xlabel '%s' noenhanced\nset ylabel '%s'\nset grid\nset key outside right top "
-                         "noenhanced\nset xrange [%.12g:%.12g]\n", key, rc.label, c->cont_from, c->cont_to);
+                         "noenhanced\nset xrange [%.12g:%.12g]\nset offsets 0, 0, graph 0.06, graph 0.02\n", key, rc.label, c->cont_from, c->cont_to);
     gd_gnuplot_printf(s, "plot ");
     const char *sep = "";
     /* a segment joins consecutive points of branch b: solid when both ends are stable, dashed otherwise */
