@@ -40,40 +40,8 @@ def ok(cond, msg):
     sys.stdout.flush()
 
 
-SWEEP = """[scene]
-analysis = sweep
-model = torsional
-error_excitation = on
-[gear]
-helix_angle_deg = 0
-equivalent_mass_kg = 1
-[operating]
-torque_nm = 14.095389311789
-[clearance]
-backlash_um = 20
-[excitation]
-stiffness = harmonic
-mesh_stiffness_n_per_m = 1e8
-stiffness_harmonics = 0.2
-ste_amplitude_um = 1
-ste_phase_deg = 90
-[damping]
-mesh_damping_ratio = 0.05
-[solver]
-characteristic_length_um = 10
-[run]
-transient_periods = 200
-record_periods = 30
-[output]
-plots = on
-[sweep]
-parameter = operating.speed_rpm
-from = 1591.5
-to = 4774.6
-points = 80
-mode = continuation
-direction = both
-"""
+with open(os.path.join(SRC, "tests", "cli", "ks-sweep.ini")) as _f:
+    SWEEP = _f.read()  # record_periods 30, plots on, 80 points each way
 
 
 def state(d):

@@ -20,42 +20,8 @@ ok() { # status message (one line: TAP)
 POINTS=160
 REC=30
 ks_case() { # the oscillator, Omega from 0.5 to 1.5 (jump between about 0.68 and 0.78)
-    cat <<EOF
-; Kahraman & Singh oscillator, speed sweep across the primary resonance
-[scene]
-analysis = sweep
-model = torsional
-error_excitation = on
-[gear]
-helix_angle_deg = 0
-equivalent_mass_kg = 1
-[operating]
-torque_nm = 14.095389311789
-[clearance]
-backlash_um = 20
-[excitation]
-stiffness = harmonic
-mesh_stiffness_n_per_m = 1e8
-stiffness_harmonics = 0.2
-ste_amplitude_um = 1
-ste_phase_deg = 90
-[damping]
-mesh_damping_ratio = 0.05
-[solver]
-characteristic_length_um = 10
-[run]
-transient_periods = 200
-record_periods = $REC
-[output]
-plots = off
-[sweep]
-parameter = operating.speed_rpm
-from = 1591.5
-to = 4774.6
-points = $POINTS
-mode = continuation
-direction = both
-EOF
+    sed -e "s/^record_periods = .*/record_periods = $REC/" -e "s/^plots = .*/plots = off/" \
+        -e "s/^points = .*/points = $POINTS/" "${GEARDYN_SOURCE:?}/tests/cli/ks-sweep.ini"
 }
 case="$work/ks.ini"
 ks_case > "$case"

@@ -19,39 +19,8 @@ MPI=(mpirun --oversubscribe -n 2)
 # containers: no ssh launcher, no cross-memory attach
 export OMPI_MCA_plm=isolated OMPI_MCA_btl_vader_single_copy_mechanism=none OMPI_MCA_rmaps_base_oversubscribe=1
 
-cat > "$work/ks.ini" <<'EOF'
-[scene]
-analysis = sweep
-model = torsional
-error_excitation = on
-[gear]
-helix_angle_deg = 0
-equivalent_mass_kg = 1
-[operating]
-torque_nm = 14.095389311789
-[clearance]
-backlash_um = 20
-[excitation]
-stiffness = harmonic
-mesh_stiffness_n_per_m = 1e8
-stiffness_harmonics = 0.2
-ste_amplitude_um = 1
-ste_phase_deg = 90
-[damping]
-mesh_damping_ratio = 0.05
-[solver]
-characteristic_length_um = 10
-[run]
-transient_periods = 200
-record_periods = 20
-[output]
-plots = off
-[sweep]
-parameter = operating.speed_rpm
-from = 1591.5
-to = 4774.6
-points = 40
-EOF
+sed -e "s/^record_periods = .*/record_periods = 20/" -e "s/^plots = .*/plots = off/" -e "s/^points = .*/points = 40/" \
+    "${GEARDYN_SOURCE:?}/tests/cli/ks-sweep.ini" > "$work/ks.ini"
 files=(sweep.csv bifurcation.csv states.csv summary.json)
 same_files() {
     local f
