@@ -89,12 +89,13 @@ struct gd_sim {
 /* sin(Omega t) and cos(Omega t), from the cache when t was one of the last four times */
 static inline void sim_phase_at(gd_sim *s, double t, double *sn, double *cs)
 {
-    for (int i = 0; i < 4; i++)
-        if (s->sc_t[i] == t) {
-            *sn = s->sc_s[i];
-            *cs = s->sc_c[i];
-            return;
-        }
+    /* asked at every stage and most stages miss: the four compares written out, no loop */
+    int i = s->sc_t[0] == t ? 0 : s->sc_t[1] == t ? 1 : s->sc_t[2] == t ? 2 : s->sc_t[3] == t ? 3 : -1;
+    if (i >= 0) {
+        *sn = s->sc_s[i];
+        *cs = s->sc_c[i];
+        return;
+    }
     *sn = 0.0, *cs = 1.0;
     if (s->m.nmesh > 0)
         sincos(s->m.Omega * t, sn, cs);

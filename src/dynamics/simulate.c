@@ -50,7 +50,7 @@ static int rhs_fn(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     double sn, cs;
     sim_phase_at(s, t, &sn, &cs);
     s->nrhs++;
-    if (s->use_plan && gd_rhs_plan_applies(&s->m, &s->md)) {
+    if (s->use_plan && !s->md.from_state) { /* use_plan: a gear model (gd_rhs_plan_applies) */
         const gd_rhs_plan *p = plan_for(s);
         gd_rhs_plan_rhs(p, &s->m, t, sn, cs, yy, yd, &s->md);
         for (int v = 1; v <= s->k; v++)
@@ -60,6 +60,25 @@ static int rhs_fn(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     gd_model_rhs_sc(&s->m, t, sn, cs, yy, yd, &s->md);
     for (int v = 1; v <= s->k; v++)
         gd_model_tangent_sc(&s->m, t, sn, cs, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
+    return 0;
+}
+
+/* The error weights w_i = 1 / (rtol |y_i| + atol) that ARKODE asks for after every step, in one
+ * pass: its own (arkEwtSetSS) makes four passes through the vector table (abs, scale, add a
+ * constant, invert) with the same operations in the same order, so the weights are the same bits.
+ * A zero weight's inverse is refused as ARKODE refuses it (only possible with atol 0). */
+static int ewt_fn(N_Vector y, N_Vector w, void *user)
+{
+    const gd_sim *s = user;
+    const double *yy = NV_DATA_S(y);
+    double *ww = NV_DATA_S(w);
+    const double rtol = s->o.rtol, atol = s->o.atol;
+    for (int i = 0; i < s->N; i++) {
+        double d = rtol * fabs(yy[i]) + atol;
+        if (atol == 0.0 && d <= 0.0)
+            return -1;
+        ww[i] = 1.0 / d;
+    }
     return 0;
 }
 
@@ -134,6 +153,8 @@ static gd_status create_integrator(gd_sim *s, gd_error *err)
     CHECK(s->ops->set_interpolant_degree(s->mem, o->interp_degree > 0 ? o->interp_degree : 3));
     CHECK(s->ops->set_user_data(s->mem, s));
     CHECK(s->ops->ss_tolerances(s->mem, o->rtol, o->atol));
+    if (!s->implicit) /* the same weights in one pass (ewt_fn); ARKStep's solvers keep ARKODE's own */
+        CHECK(s->ops->wf_tolerances(s->mem, ewt_fn));
     CHECK(s->ops->set_max_num_steps(s->mem, 1000000));
     CHECK(s->ops->set_max_step(s->mem, o->max_step_fraction * m->period));
     /* SUNDIALS >= 7.3: 6.x's step-size adaptivity, as geardyn was measured with (no-op before) */
@@ -211,7 +232,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     s->o = *o;
     s->md = *md0;
     s->md.from_state = !o->root_finding;
-    s->use_plan = !o->generic_rhs;
+    s->use_plan = !o->generic_rhs && !m->custom;
     gd_plan_excitation_build(s->plan_ex, m);
     if (gd_sun_context_create(&s->ctx, s->sunmsg) != 0) {
         free(s);
