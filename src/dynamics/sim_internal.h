@@ -17,6 +17,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#define SIM_PLANS 8        /* compiled RHS kept, one per recent set of contact modes */
 #define SHIFT_PERIODS 32 /* keep the integrator's time below this many periods (root tolerance grows with |t|) */
 
 struct gd_sim {
@@ -80,8 +81,9 @@ struct gd_sim {
     double sc_t[4], sc_s[4], sc_c[4];
     int sc_next;
     /* the RHS compiled for the held modes (rhs_plan.h): the last few sets of modes (a mesh that
-     * opens and closes goes back and forth between two) */
-    gd_rhs_plan plan[4];
+     * opens and closes goes back and forth between two; bta's six clearances at an impacting
+     * speed cycle through more than four, and a plan costs about 3 000 instructions to build) */
+    gd_rhs_plan plan[SIM_PLANS];
     gd_plan_excitation plan_ex[GD_MAX_MESH];
     int plan_cur, plan_next, use_plan;
 };

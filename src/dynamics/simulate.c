@@ -29,13 +29,13 @@ static const gd_rhs_plan *plan_for(gd_sim *s)
 {
     if (gd_rhs_plan_current(&s->plan[s->plan_cur], &s->md))
         return &s->plan[s->plan_cur];
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < SIM_PLANS; i++)
         if (gd_rhs_plan_current(&s->plan[i], &s->md)) {
             s->plan_cur = i;
             return &s->plan[i];
         }
     s->plan_cur = s->plan_next;
-    s->plan_next = (s->plan_next + 1) % 4;
+    s->plan_next = (s->plan_next + 1) % SIM_PLANS;
     gd_rhs_plan_build(&s->plan[s->plan_cur], &s->m, &s->md, s->plan_ex);
     return &s->plan[s->plan_cur];
 }
