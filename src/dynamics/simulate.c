@@ -63,23 +63,13 @@ static int rhs_fn(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     return 0;
 }
 
-/* The error weights w_i = 1 / (rtol |y_i| + atol) that ARKODE asks for after every step, in one
- * pass: its own (arkEwtSetSS) makes four passes through the vector table (abs, scale, add a
- * constant, invert) with the same operations in the same order, so the weights are the same bits.
- * A zero weight's inverse is refused as ARKODE refuses it (only possible with atol 0). */
+/* The error weights that ARKODE asks for after every step, in one pass (its own, arkEwtSetSS, makes
+ * four through the vector table): the same operations in the same order, the same bits
+ * (compat/vector_kernels.c). */
 static int ewt_fn(N_Vector y, N_Vector w, void *user)
 {
     const gd_sim *s = user;
-    const double *yy = NV_DATA_S(y);
-    double *ww = NV_DATA_S(w);
-    const double rtol = s->o.rtol, atol = s->o.atol;
-    for (int i = 0; i < s->N; i++) {
-        double d = rtol * fabs(yy[i]) + atol;
-        if (atol == 0.0 && d <= 0.0)
-            return -1;
-        ww[i] = 1.0 / d;
-    }
-    return 0;
+    return gd_vector_error_weights(y, w, s->o.rtol, s->o.atol);
 }
 
 static int jac_fn(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *user, N_Vector t1, N_Vector t2,
