@@ -290,7 +290,12 @@ double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1)
     gd_sim_clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
         int mode = s->md.mode[c];
-        double h = s->m.clear[c].h;
+        double h = s->m.clear[c].h, x0 = s->cx0[c], x1 = s->cx[c];
+        /* a sign change of x - h or x + h needs the two ends on different sides of h or -h (the
+         * rounded sums keep the signs of the exact ones): with both strictly in one of the three
+         * regions a half gap h >= 0 makes, neither side can report one (most steps) */
+        if (h >= 0.0 && ((x0 > h && x1 > h) || (x0 < -h && x1 < -h) || (x0 > -h && x0 < h && x1 > -h && x1 < h)))
+            continue;
         for (int side = 0; side < 2; side++) { /* g = x - h (side 0), x + h (side 1) */
             double off = side ? h : -h;
             double held = side == 0 ? (mode > 0 ? 1.0 : -1.0) : (mode >= 0 ? 1.0 : -1.0);
