@@ -281,6 +281,40 @@ static void whole_runs(void)
     }
 }
 
+/* The error weights in one pass (gd_vector_error_weights, what the explicit methods give ARKODE)
+ * against ARKODE's own sequence on the library's kernels (arkEwtSetSS: abs, scale, add a constant,
+ * the N_VMin test when atol is 0, invert): the same bits, and the same refusal. */
+static void error_weights(SUNContext ctx)
+{
+    const int lens[] = {1, 2, 3, 7, 20, 57};
+    const double tols[][2] = {{1e-8, 1e-10}, {1e-3, 1e-16}, {1e-12, 1.0}, {1e-6, 0.0}, {0.0, 0.0}};
+    int bad = 0, count = 0, refusals = 0;
+    for (int li = 0; li < (int)(sizeof lens / sizeof lens[0]); li++) {
+        N_Vector y = N_VNew_Serial(lens[li], ctx), t = N_VNew_Serial(lens[li], ctx);
+        N_Vector w1 = N_VNew_Serial(lens[li], ctx), w2 = N_VNew_Serial(lens[li], ctx);
+        for (int rep = 0; rep < 40; rep++)
+            for (int k = 0; k < (int)(sizeof tols / sizeof tols[0]); k++) {
+                fill(y, rep % 2);
+                double rtol = tols[k][0], atol = tols[k][1];
+                N_VAbs(y, t);
+                N_VScale(rtol, t, t);
+                N_VAddConst(t, atol, t);
+                int lib = atol == 0.0 && N_VMin(t) <= 0.0 ? -1 : 0;
+                if (lib == 0)
+                    N_VInv(t, w1);
+                int gd = gd_vector_error_weights(y, w2, rtol, atol);
+                refusals += lib != 0;
+                bad += gd != lib || (lib == 0 && memcmp(N_VGetArrayPointer(w1), N_VGetArrayPointer(w2),
+                                                        sizeof(double) * (size_t)lens[li]));
+                count++;
+            }
+        N_VDestroy(y), N_VDestroy(t), N_VDestroy(w1), N_VDestroy(w2);
+    }
+    tap_ok(bad == 0 && refusals > 0 && refusals < count,
+           "error weights in one pass: %d of %d cases bit-identical to ARKODE's sequence of library kernels "
+           "(%d refused by both, atol 0 with a zero component)", count - bad, count, refusals);
+}
+
 int main(void)
 {
     rng = gsl_rng_alloc(gsl_rng_mt19937);
@@ -296,6 +330,7 @@ int main(void)
     op_by_op(ctx, "two lanes");
     if (gd_vector_kernels_wide(1))
         op_by_op(ctx, "four lanes, AVX");
+    error_weights(ctx);
     SUNContext_Free(&ctx);
     gsl_rng_free(rng);
     whole_runs();

@@ -68,6 +68,8 @@ static void mesh_quantities(const gd_model *m, double t, double s0, double c0, c
     *lam = x - e;
     *lamd = v - ed;
     *acc = a - edd;
+    if (!force) /* the tooth force only for the sample hook (a sweep does not ask for it) */
+        return;
     int mode = md->from_state ? gd_model_mode_of(m, c, *lam) : md->mode[c];
     double kf = gd_model_stiffness(m, j, t, md);
     double f = mode > 0 ? cl->k * kf * (*lam - cl->h) : mode < 0 ? cl->k * kf * (*lam + cl->h) : 0.0;
@@ -80,6 +82,7 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
 {
     run_ctx *r = user;
     const gd_model *m = r->m;
+    const int want_force = r->hooks && r->hooks->sample;
     while (r->next_sample < r->nsamples) {
         double ts = r->t_record + (double)r->next_sample * r->dt_sample;
         if (ts > t1)
@@ -107,7 +110,7 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
         for (int j = 0; j < 2; j++) {
             int jj = j < m->nmesh ? j : 0;
             if (j == 0 || jj != 0) /* one mesh (torsional): its quantities serve both columns */
-                mesh_quantities(m, ts, s0, c0, y, yd, md, jj, &lam, &lamd, &acc, &force);
+                mesh_quantities(m, ts, s0, c0, y, yd, md, jj, &lam, &lamd, &acc, want_force ? &force : NULL);
             int qidx = m->q_dof[jj];
             smp.lambda_um[j] = lam * r->len_um;
             smp.lambda_dot_mps[j] = lamd * r->len_um * 1e-6 / r->sec;

@@ -591,14 +591,14 @@ GD_API int gd_model_jerk(const gd_model *m, double t, const double *y, const dou
     double yd[GD_MAX_STATE], out[GD_MAX_STATE];
     memcpy(yd, y + nd, sizeof(double) * (size_t)nd);
     memcpy(yd + nd, acc, sizeof(double) * (size_t)nd);
-    gd_model_tangent(m, t, y, yd, out, md);
+    double s0, c0; /* one sine and cosine of Omega t for the tangent map and the excitation */
+    phase_sc(m, t, &s0, &c0);
+    gd_model_tangent_sc(m, t, s0, c0, y, yd, out, md);
     /* along the time: the mesh clearances' stiffness factor and error move with t (x_c = w.q - e,
      * so dx/dt = -e', dxdot/dt = -e''); F0 and the impact pulses are constant between the stops
      * at their edges */
     double da[GD_MAX_DOF] = {0};
     double kf[GD_MAX_MESH], e[GD_MAX_MESH], ed[GD_MAX_MESH], edd[GD_MAX_MESH];
-    double s0, c0;
-    phase_sc(m, t, &s0, &c0);
     for (int j = 0; j < m->nmesh; j++)
         mesh_eval_sc(m, j, t, s0, c0, md, &kf[j], &e[j], &ed[j], &edd[j]);
     for (int c = 0; c < m->nclear; c++) {

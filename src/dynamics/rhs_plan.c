@@ -7,6 +7,8 @@
 
 #include <string.h>
 
+static gd_rhs_plan_fn plan_fn(void); /* the evaluation for this processor (below) */
+
 void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m)
 {
     for (int j = 0; j < m->nmesh; j++) {
@@ -107,6 +109,7 @@ void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, co
         }
     }
     p->ex = ex;
+    p->fn = plan_fn();
     p->valid = 1;
 }
 
@@ -249,27 +252,19 @@ __attribute__((target("avx"))) static void both_avx(const gd_rhs_plan *p, const 
 }
 #endif
 
-/* four lanes in one AVX register where the processor has it, else two SSE2 registers */
-static void run(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0, const double *y,
-                double *out, const gd_modes *md, int tangent)
+static void both_sse2(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0, const double *y,
+                      double *out, const gd_modes *md, int tangent)
 {
-#ifdef GD_PLAN_AVX
-    if (__builtin_cpu_supports("avx")) {
-        both_avx(p, m, t, s0, c0, y, out, md, tangent);
-        return;
-    }
-#endif
     both(p, m, t, s0, c0, y, out, md, tangent);
 }
 
-void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
-                     const double *restrict y, double *restrict ydot, const gd_modes *md)
+/* four lanes in one AVX register where the processor has it, else two SSE2 registers (asked once
+ * per plan, not at every evaluation) */
+static gd_rhs_plan_fn plan_fn(void)
 {
-    run(p, m, t, s0, c0, y, ydot, md, 0);
-}
-
-void gd_rhs_plan_tangent(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
-                         const double *restrict v, double *restrict out, const gd_modes *md)
-{
-    run(p, m, t, s0, c0, v, out, md, 1);
+#ifdef GD_PLAN_AVX
+    if (__builtin_cpu_supports("avx"))
+        return both_avx;
+#endif
+    return both_sse2;
 }

@@ -13,6 +13,7 @@
 
 #include "geardyn/gd_model.h"
 
+#include <stdint.h>
 #include <string.h>
 
 typedef struct gd_plan_coef {
@@ -43,8 +44,14 @@ typedef struct gd_plan_mesh {
     double imp_force;         /* the mesh-in impact pulse's force while it acts (0: no pulse) */
 } gd_plan_mesh;
 
-typedef struct gd_rhs_plan {
+typedef struct gd_rhs_plan gd_rhs_plan;
+/* the evaluation compiled for the processor (tangent: J v instead of f), chosen when the plan is built */
+typedef void (*gd_rhs_plan_fn)(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
+                               const double *y, double *out, const gd_modes *md, int tangent);
+
+struct gd_rhs_plan {
     int valid;
+    gd_rhs_plan_fn fn;
     int mode[GD_MAX_CLEAR];   /* the modes it was built for */
     int nd, noff, nmesh;
     double b[GD_PLAN_W];      /* constant accelerations (static load, bearing contacts' offsets) */
@@ -52,7 +59,7 @@ typedef struct gd_rhs_plan {
     gd_plan_coef off[2 * GD_MAX_DOF * GD_MAX_DOF]; /* the rest of the constant linear part */
     gd_plan_mesh mesh[GD_MAX_MESH];
     const gd_plan_excitation *ex; /* the model's, one per mesh (gd_plan_excitation_build) */
-} gd_rhs_plan;
+};
 
 /* 1 when the plan applies: a gear model (not a custom system) with modes held between events. */
 static inline int gd_rhs_plan_applies(const gd_model *m, const gd_modes *md)
@@ -60,19 +67,30 @@ static inline int gd_rhs_plan_applies(const gd_model *m, const gd_modes *md)
     return !m->custom && !md->from_state;
 }
 
-/* 1 when p was built for the modes of md. */
+/* 1 when p was built for the modes of md. Asked at every stage: the modes compared as whole
+ * 64-bit words (three loads each) rather than by a call of memcmp or a loop over the clearances. */
+_Static_assert(sizeof(((gd_modes *)0)->mode) == 3 * sizeof(uint64_t), "the modes are three words");
 static inline int gd_rhs_plan_current(const gd_rhs_plan *p, const gd_modes *md)
 {
-    return p->valid && memcmp(p->mode, md->mode, sizeof p->mode) == 0;
+    uint64_t a[3], b[3];
+    memcpy(a, p->mode, sizeof a);
+    memcpy(b, md->mode, sizeof b);
+    return p->valid && ((a[0] ^ b[0]) | (a[1] ^ b[1]) | (a[2] ^ b[2])) == 0;
 }
 
 /* ex: gd_plan_excitation_build of m, one per mesh; it must outlive the plan */
 void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, const gd_plan_excitation *ex);
 /* ydot = f(t, y), with the sine and cosine (s0, c0) of Omega t (model_internal.h) */
-void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
-                     const double *restrict y, double *restrict ydot, const gd_modes *md);
+static inline void gd_rhs_plan_rhs(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
+                                   const double *restrict y, double *restrict ydot, const gd_modes *md)
+{
+    p->fn(p, m, t, s0, c0, y, ydot, md, 0);
+}
 /* out = J(t, y) v */
-void gd_rhs_plan_tangent(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
-                         const double *restrict v, double *restrict out, const gd_modes *md);
+static inline void gd_rhs_plan_tangent(const gd_rhs_plan *p, const gd_model *m, double t, double s0, double c0,
+                                       const double *restrict v, double *restrict out, const gd_modes *md)
+{
+    p->fn(p, m, t, s0, c0, v, out, md, 1);
+}
 
 #endif

@@ -17,6 +17,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
+#define SIM_PLANS 8        /* compiled RHS kept, one per recent set of contact modes */
 #define SHIFT_PERIODS 32 /* keep the integrator's time below this many periods (root tolerance grows with |t|) */
 
 struct gd_sim {
@@ -81,8 +82,9 @@ struct gd_sim {
     double sc_t[4], sc_s[4], sc_c[4];
     int sc_next;
     /* the RHS compiled for the held modes (rhs_plan.h): the last few sets of modes (a mesh that
-     * opens and closes goes back and forth between two) */
-    gd_rhs_plan plan[4];
+     * opens and closes goes back and forth between two; bta's six clearances at an impacting
+     * speed cycle through more than four, and a plan costs about 3 000 instructions to build) */
+    gd_rhs_plan plan[SIM_PLANS];
     gd_plan_excitation plan_ex[GD_MAX_MESH];
     int plan_cur, plan_next, use_plan;
 };
@@ -90,12 +92,13 @@ struct gd_sim {
 /* sin(Omega t) and cos(Omega t), from the cache when t was one of the last four times */
 static inline void sim_phase_at(gd_sim *s, double t, double *sn, double *cs)
 {
-    for (int i = 0; i < 4; i++)
-        if (s->sc_t[i] == t) {
-            *sn = s->sc_s[i];
-            *cs = s->sc_c[i];
-            return;
-        }
+    /* asked at every stage and most stages miss: the four compares written out, no loop */
+    int i = s->sc_t[0] == t ? 0 : s->sc_t[1] == t ? 1 : s->sc_t[2] == t ? 2 : s->sc_t[3] == t ? 3 : -1;
+    if (i >= 0) {
+        *sn = s->sc_s[i];
+        *cs = s->sc_c[i];
+        return;
+    }
     *sn = 0.0, *cs = 1.0;
     if (s->m.nmesh > 0)
         sincos(s->m.Omega * t, sn, cs);

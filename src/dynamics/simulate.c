@@ -29,13 +29,13 @@ static const gd_rhs_plan *plan_for(gd_sim *s)
 {
     if (gd_rhs_plan_current(&s->plan[s->plan_cur], &s->md))
         return &s->plan[s->plan_cur];
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < SIM_PLANS; i++)
         if (gd_rhs_plan_current(&s->plan[i], &s->md)) {
             s->plan_cur = i;
             return &s->plan[i];
         }
     s->plan_cur = s->plan_next;
-    s->plan_next = (s->plan_next + 1) % 4;
+    s->plan_next = (s->plan_next + 1) % SIM_PLANS;
     gd_rhs_plan_build(&s->plan[s->plan_cur], &s->m, &s->md, s->plan_ex);
     return &s->plan[s->plan_cur];
 }
@@ -50,7 +50,7 @@ static int rhs_fn(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     double sn, cs;
     sim_phase_at(s, t, &sn, &cs);
     s->nrhs++;
-    if (s->use_plan && gd_rhs_plan_applies(&s->m, &s->md)) {
+    if (s->use_plan && !s->md.from_state) { /* use_plan: a gear model (gd_rhs_plan_applies) */
         const gd_rhs_plan *p = plan_for(s);
         gd_rhs_plan_rhs(p, &s->m, t, sn, cs, yy, yd, &s->md);
         for (int v = 1; v <= s->k; v++)
@@ -61,6 +61,15 @@ static int rhs_fn(sunrealtype t, N_Vector y, N_Vector ydot, void *user)
     for (int v = 1; v <= s->k; v++)
         gd_model_tangent_sc(&s->m, t, sn, cs, yy, yy + v * s->m.n, yd + v * s->m.n, &s->md);
     return 0;
+}
+
+/* The error weights that ARKODE asks for after every step, in one pass (its own, arkEwtSetSS, makes
+ * four through the vector table): the same operations in the same order, the same bits
+ * (compat/vector_kernels.c). */
+static int ewt_fn(N_Vector y, N_Vector w, void *user)
+{
+    const gd_sim *s = user;
+    return gd_vector_error_weights(y, w, s->o.rtol, s->o.atol);
 }
 
 static int jac_fn(sunrealtype t, N_Vector y, N_Vector fy, SUNMatrix J, void *user, N_Vector t1, N_Vector t2,
@@ -134,6 +143,8 @@ static gd_status create_integrator(gd_sim *s, gd_error *err)
     CHECK(s->ops->set_interpolant_degree(s->mem, o->interp_degree > 0 ? o->interp_degree : 3));
     CHECK(s->ops->set_user_data(s->mem, s));
     CHECK(s->ops->ss_tolerances(s->mem, o->rtol, o->atol));
+    if (!s->implicit) /* the same weights in one pass (ewt_fn); ARKStep's solvers keep ARKODE's own */
+        CHECK(s->ops->wf_tolerances(s->mem, ewt_fn));
     CHECK(s->ops->set_max_num_steps(s->mem, 1000000));
     CHECK(s->ops->set_max_step(s->mem, o->max_step_fraction * m->period));
     /* SUNDIALS >= 7.3: 6.x's step-size adaptivity, as geardyn was measured with (no-op before) */
@@ -211,7 +222,7 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     s->o = *o;
     s->md = *md0;
     s->md.from_state = !o->root_finding;
-    s->use_plan = !o->generic_rhs;
+    s->use_plan = !o->generic_rhs && !m->custom;
     gd_plan_excitation_build(s->plan_ex, m);
     if (gd_sun_context_create(&s->ctx, s->sunmsg) != 0) {
         free(s);

@@ -26,7 +26,8 @@ static int capture_in_context(void *mem, char *msg) { return 0; }
     .get_num_steps = ARKodeGetNumSteps, .get_num_step_attempts = ARKodeGetNumStepAttempts,                        \
     .get_num_g_evals = ARKodeGetNumGEvals, .get_last_step = ARKodeGetLastStep,                                     \
     .set_no_inactive_root_warn = ARKodeSetNoInactiveRootWarn, .set_interpolant_degree = ARKodeSetInterpolantDegree, \
-    .get_current_time = ARKodeGetCurrentTime, .flag_name = ARKodeGetReturnFlagName, .free_mem = ARKodeFree
+    .get_current_time = ARKodeGetCurrentTime, .flag_name = ARKodeGetReturnFlagName, .free_mem = ARKodeFree,     \
+    .wf_tolerances = ARKodeWFtolerances
 
 const gd_stepper_ops gd_stepper_erk = {.module = "ERKStep", GD_ARKODE_COMMON};
 
@@ -53,7 +54,7 @@ const gd_stepper_ops gd_stepper_erk = {
     ERKStepSStolerances, ERKStepSetUserData, erk_capture_errors, ERKStepSetOrder, ERKStepGetNumSteps,
     ERKStepGetNumStepAttempts, ERKStepGetNumGEvals, ERKStepGetLastStep, ERKStepSetNoInactiveRootWarn,
     ERKStepSetInterpolantDegree, ERKStepGetCurrentTime, ERKStepGetReturnFlagName, ERKStepFree,
-    NULL, NULL, NULL, NULL, NULL,
+    NULL, NULL, NULL, NULL, NULL, ERKStepWFtolerances,
 };
 
 const gd_stepper_ops gd_stepper_ark = {
@@ -63,7 +64,7 @@ const gd_stepper_ops gd_stepper_ark = {
     ARKStepGetNumStepAttempts, ARKStepGetNumGEvals, ARKStepGetLastStep, ARKStepSetNoInactiveRootWarn,
     ARKStepSetInterpolantDegree, ARKStepGetCurrentTime, ARKStepGetReturnFlagName, ARKStepFree,
     ARKStepSetLinearSolver, ARKStepSetJacFn, ARKStepSetLSetupFrequency, ARKStepSetJacEvalFrequency,
-    ARKStepGetNumLinIters,
+    ARKStepGetNumLinIters, ARKStepWFtolerances,
 };
 
 #endif

@@ -45,6 +45,8 @@ typedef struct gd_stepper_ops {
     int (*set_lsetup_frequency)(void *mem, int msbp);
     int (*set_jac_eval_frequency)(void *mem, long msbj);
     int (*get_num_lin_iters)(void *mem, long *n);
+    /* a user's error-weight function in place of the built-in one of ss_tolerances */
+    int (*wf_tolerances)(void *mem, ARKEwtFn efun);
 } gd_stepper_ops;
 
 extern const gd_stepper_ops gd_stepper_erk;

@@ -495,6 +495,26 @@ static int k_scaleaddmulti(int nvec, sunrealtype *a, N_Vector x, N_Vector *Y, N_
     return 0;
 }
 
+int gd_vector_error_weights(N_Vector y, N_Vector w, double rtol, double atol)
+{
+    typedef unsigned long long u2 __attribute__((vector_size(16)));
+    const sunrealtype *yd = DAT(y);
+    sunrealtype *wd = DAT(w);
+    const sunindextype n = LEN(y);
+    const v2 r = {rtol, rtol}, a = {atol, atol}, one = {1.0, 1.0};
+    const u2 magnitude = {0x7fffffffffffffffULL, 0x7fffffffffffffffULL}; /* fabs: the sign bit cleared */
+    if (atol == 0.0) /* ARKODE's N_VMin test of the sums, made only then */
+        for (sunindextype i = 0; i < n; i++)
+            if (rtol * fabs(yd[i]) + atol <= 0.0)
+                return -1;
+    sunindextype i = 0;
+    for (; i + 2 <= n; i += 2)
+        st2(wd + i, one / (r * (v2)((u2)ld2(yd + i) & magnitude) + a));
+    for (; i < n; i++)
+        wd[i] = 1.0 / (rtol * fabs(yd[i]) + atol);
+    return 0;
+}
+
 int gd_vector_kernels_wide(int on)
 {
     lc_narrow = !on;

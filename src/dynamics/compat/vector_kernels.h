@@ -14,4 +14,10 @@ int gd_vector_use_compiled_ops(N_Vector v);
  * for the tests, which check both. */
 int gd_vector_kernels_wide(int on);
 
+/* The error weights w_i = 1 / (rtol |y_i| + atol) of serial vectors y, w in one pass, two lanes at
+ * a time: the operations of ARKODE's scalar-tolerance weights (arkEwtSetSS: N_VAbs, N_VScale,
+ * N_VAddConst, N_VInv) in their order, so the same bits. Returns -1, as ARKODE does, when atol is
+ * 0 and a weight's inverse is not positive, else 0. */
+int gd_vector_error_weights(N_Vector y, N_Vector w, double rtol, double atol);
+
 #endif
