@@ -92,7 +92,7 @@ lam = sorted({round(float(r["lambda_L"]), 6) for r in csv.DictReader(open(w + "/
 casc = [r for r in csv.DictReader(open(w + "/cascade/branch.csv")) if r["period_n"] == "4"
         and abs(float(r["continuation_p"]) - 1.5) < 1e-12]
 near = lambda x: min(abs(float(x) - l) for l in lam)
-print("sweep's lambda_L at Omega 1.5:", lam, "start:", p4["lambda_L"], "cascade:", [r["lambda_L"] for r in casc])
+print("# sweep's lambda_L at Omega 1.5:", lam, "start:", p4["lambda_L"], "cascade:", [r["lambda_L"] for r in casc])
 ok = (s["start_period_n"] == 4 and s["start_period_found"] and p4["period_n"] == "4" and len(lam) == 4
       and near(p4["lambda_L"]) < 1e-6 and casc and all(near(r["lambda_L"]) < 1e-6 for r in casc))
 sys.exit(0 if ok else 1)

@@ -187,7 +187,22 @@ def alternate(tmp, sets):
     return d, ino
 
 
+def sanitized(lib_path):
+    """Whether the library links the address sanitizer, whose runtime must come first in a process:
+    python cannot load it (the ASan build of scripts/test.sh)."""
+    with open(lib_path, 'rb') as f:
+        return b'libasan.so' in f.read()
+
+
 def lock(lib_path, tmp):
+    global n_tap
+    if sanitized(lib_path):
+        for what in ('the library stages beside DIR and publishes in one step',
+                     'after the exchange DIR is another inode and a second run is still refused',
+                     'the swapped-out directory is removed; the next run locks the directory DIR is now'):
+            n_tap += 1
+            print('ok %d - %s # SKIP the library is built with ASan, which python cannot load' % (n_tap, what))
+        return
     lib = ctypes.CDLL(lib_path)
     libc = ctypes.CDLL(None)
     lib.gd_run_dir_stage.restype = ctypes.c_char_p
