@@ -8,21 +8,28 @@
 
 #include <string.h>
 
+/* A simulation from y0 at t = 0 with its modes consistent with y0 (from the state when events are not
+ * located) and n_tangent tangent vectors. */
+static gd_status sim_from(const gd_model *m, const gd_solver_opts *o, const double *y0, int n_tangent, gd_sim **s,
+                          gd_error *err)
+{
+    gd_solver_opts oo = *o;
+    oo.n_tangent = n_tangent;
+    gd_modes md;
+    memset(&md, 0, sizeof md);
+    md.from_state = !o->root_finding;
+    gd_status status = gd_model_consistent_modes(m, 0.0, y0, &md, err);
+    *s = NULL;
+    return status == GD_OK ? gd_sim_create(m, &oo, y0, &md, s, err) : status;
+}
+
 GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
                                    double *y1, double *M, gd_sim_stats *st, gd_error *err)
 {
     if (nper < 1)
         return gd_error_set(err, GD_ERR_INPUT, "a map of %d mesh periods (valid: 1 or more)", nper);
-    gd_solver_opts oo = *o;
-    oo.n_tangent = M ? m->n : 0;
-    gd_modes md;
-    memset(&md, 0, sizeof md);
-    md.from_state = !o->root_finding;
-    gd_status status = gd_model_consistent_modes(m, 0.0, y0, &md, err);
-    if (status != GD_OK)
-        return status;
     gd_sim *s = NULL;
-    status = gd_sim_create(m, &oo, y0, &md, &s, err);
+    gd_status status = sim_from(m, o, y0, M ? m->n : 0, &s, err);
     if (status == GD_OK && M) {
         double I[GD_MAX_STATE * GD_MAX_STATE] = {0};
         for (int i = 0; i < m->n; i++)
@@ -47,16 +54,8 @@ GD_API gd_status gd_sim_orbit_gaps(const gd_model *m, const gd_solver_opts *o, c
 {
     if (nper < 1)
         return gd_error_set(err, GD_ERR_INPUT, "a run of %d mesh periods (valid: 1 or more)", nper);
-    gd_solver_opts oo = *o;
-    oo.n_tangent = 0;
-    gd_modes md;
-    memset(&md, 0, sizeof md);
-    md.from_state = !o->root_finding;
-    gd_status status = gd_model_consistent_modes(m, 0.0, y0, &md, err);
-    if (status != GD_OK)
-        return status;
     gd_sim *s = NULL;
-    status = gd_sim_create(m, &oo, y0, &md, &s, err);
+    gd_status status = sim_from(m, o, y0, 0, &s, err);
     if (status == GD_OK)
         gd_sim_watch_gaps(s, g);
     for (int p = 0; p < nper && status == GD_OK; p++)
