@@ -103,13 +103,13 @@ int main(int argc, char **argv)
     const char *lr[] = {"scene.model=torsional-lr"};
     const char *tor[] = {"scene.model=torsional"};
     int rc = 0;
-    rc |= run("bta erk5 rtol 1e-8 events on", bta, 1, repeats);
-    rc |= run("bta erk5 rtol 1e-8 events off", bta_off, 2, repeats);
-    rc |= run("bta erk5 events on + MLE (tangent)", bta_mle, 2, repeats);
-    rc |= run("bta erk5 events on + MLE (two traj.)", bta_mle2, 3, repeats);
+    rc |= run("bta erk8 rtol 1e-8 events on", bta, 1, repeats);
+    rc |= run("bta erk8 rtol 1e-8 events off", bta_off, 2, repeats);
+    rc |= run("bta erk8 events on + MLE (tangent)", bta_mle, 2, repeats);
+    rc |= run("bta erk8 events on + MLE (two traj.)", bta_mle2, 3, repeats);
     rc |= run("bta rk4 512/period events on", bta_rk4, 3, repeats);
     rc |= run("bta dirk4 rtol 1e-8 events on", bta_dirk, 2, 1);
-    rc |= run("torsional-lr erk5 rtol 1e-8", lr, 1, repeats);
-    rc |= run("torsional erk5 rtol 1e-8", tor, 1, repeats);
+    rc |= run("torsional-lr erk8 rtol 1e-8", lr, 1, repeats);
+    rc |= run("torsional erk8 rtol 1e-8", tor, 1, repeats);
     return rc;
 }
