@@ -53,7 +53,11 @@ int cli_should_stop(void *user)
 int cli_interrupted(const char *dir)
 {
     int sig = g_caught;
-    fprintf(stderr, "\ngeardyn: interrupted by %s: nothing published, %s keeps its previous result\n",
-            cli_signal_name(sig), dir);
+    /* a published result ends with its summary.json (src/output/stage.c) */
+    char summary[4096];
+    int had = snprintf(summary, sizeof summary, "%s/summary.json", dir) < (int)sizeof summary &&
+              access(summary, F_OK) == 0;
+    fprintf(stderr, "\ngeardyn: interrupted by %s: nothing published, %s %s\n", cli_signal_name(sig), dir,
+            had ? "keeps its previous result" : "holds no result");
     return 128 + sig;
 }

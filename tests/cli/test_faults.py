@@ -192,12 +192,15 @@ def early_stops(kind, tmp, case, sets, frac=0.2):
         took = time.monotonic() - t0
         files, dots = state(out)
         kept = files == before if out == d else not os.path.exists(out) or (files == {} and dots == [])
-        good = rc == 128 + sig and took < 0.5 * dur and kept and dots == [] and 'interrupted' in err
+        # the line names what the directory holds: its previous result, or none
+        says = 'keeps its previous result' if out == d else 'holds no result'
+        good = rc == 128 + sig and took < 0.5 * dur and kept and dots == [] and 'interrupted' in err and says in err
         outcomes.setdefault(kind, {}).setdefault('stopped early', 0)
         outcomes[kind]['stopped early'] += good
-        ok(good, '%s, %s at %.0f%% of its %.2f s: exit %d after %.2f s (%.0f%%), %s, left %s' %
+        ok(good, '%s, %s at %.0f%% of its %.2f s: exit %d after %.2f s (%.0f%%), %s, left %s, says "%s"' %
            (kind, sig.name, 100 * frac, dur, rc, took, 100 * took / dur,
-            'previous result unchanged' if out == d and kept else 'nothing left' if kept else 'FILES CHANGED', dots))
+            'previous result unchanged' if out == d and kept else 'nothing left' if kept else 'FILES CHANGED', dots,
+            err.strip().splitlines()[-1] if err.strip() else ''))
 
 
 def main():
