@@ -492,7 +492,7 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
         if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1])
             continue;
         double x = s->cx[c], xd = s->cv[c];
-        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
         if (s->k > 0)
@@ -562,7 +562,7 @@ gd_status gd_sim_repair_held_modes(gd_sim *s, gd_error *err)
     gd_sim_clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
         double x = s->cx[c], h = s->m.clear[c].h;
-        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
         /* distance past the boundary of the region the held mode allows */
@@ -588,7 +588,7 @@ gd_status gd_sim_modes_from_state(gd_sim *s, gd_error *err)
     for (int c = 0; c < s->m.nclear; c++) {
         double x, v;
         gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &v);
-        int nw = gd_model_mode_of(&s->m, c, x), old = s->md.mode[c];
+        int nw = model_mode_of(&s->m, c, x), old = s->md.mode[c];
         if (nw == old)
             continue;
         s->md.mode[c] = nw;
