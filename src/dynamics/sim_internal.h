@@ -45,6 +45,7 @@ struct gd_sim {
     gsl_vector *tau;
     double t_step0;          /* start of the last step (local) */
     double samp_t0, samp_dt; /* sample grid (absolute time; samp_dt 0: none): steps end on it */
+    int no_edges;            /* 1: the excitation has no discontinuity (no stop time of its own) */
     double cx[GD_MAX_CLEAR], cv[GD_MAX_CLEAR];   /* clearance coordinates and rates at (t, y) when cx_ok */
     double cx0[GD_MAX_CLEAR], cv0[GD_MAX_CLEAR]; /* the same at the start of the last step */
     int cx_ok;

@@ -224,6 +224,9 @@ GD_API gd_status gd_sim_create(const gd_model *m, const gd_solver_opts *o, const
     s->md.from_state = !o->root_finding;
     s->use_plan = !o->generic_rhs && !m->custom;
     gd_plan_excitation_build(s->plan_ex, m);
+    /* no rectangular stiffness and no impact pulse: never an edge (+inf at every time), and the
+     * step loop need not ask for one at every step */
+    s->no_edges = isinf(gd_model_next_discontinuity(m, 0.0, &s->md));
     if (gd_sun_context_create(&s->ctx, s->sunmsg) != 0) {
         free(s);
         return gd_error_set(err, GD_ERR_SOLVER, "SUNContext_Create failed");
@@ -334,8 +337,7 @@ gd_status gd_sim_reset_at(gd_sim *s, double t, gd_error *err)
  * the grazing watch (rewound) stops at, whichever comes first. */
 static double next_stop_time(gd_sim *s, double t_end, int rewound, double t_graze_stop)
 {
-    double disc = gd_model_next_discontinuity(&s->m, s->t, &s->md);
-    double tstop = fmin(t_end, disc);
+    double tstop = s->no_edges ? t_end : fmin(t_end, gd_model_next_discontinuity(&s->m, s->t, &s->md));
     if (s->samp_dt > 0) {
         double ta = sim_abs_time(s, s->t), tiny = 1e-12 * (fabs(ta) + s->m.period);
         double k = ceil((ta + tiny - s->samp_t0) / s->samp_dt);
