@@ -468,7 +468,7 @@ GD_API gd_status gd_sim_advance_to(gd_sim *s, double t_end_abs, gd_error *err)
             if (st != GD_OK)
                 return st;
         }
-        if (!rewound) {
+        if (!rewound && s->armed && s->gate) { /* (a call that does nothing at most steps: not made) */
             st = gd_sim_arm_roots(s, 0, err);
             if (st != GD_OK)
                 return st;
