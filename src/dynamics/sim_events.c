@@ -134,6 +134,26 @@ void gd_sim_clearances_now(gd_sim *s)
     s->cx_ok = 1;
 }
 
+/* One side g = x + off of a clearance for the grazing watch (values g0, g1 at the step's ends, rates
+ * d0, d1 times the step dt): the earlier of best and the time of a touch hidden inside the step.
+ * The test of grazing_fraction with both rates counted towards zero (reach, shared by the two
+ * sides) comes first: where it holds, grazing_fraction's own (with a part of the rates, rounded
+ * monotonically) holds too and returns -1, so the skip changes no result. */
+static inline double graze_side(double g0, double g1, double d0, double d1, double reach, double t0, double dt,
+                                double best)
+{
+    double a0 = fabs(g0), a1 = fabs(g1);
+    if ((a0 < a1 ? a0 : a1) > reach)
+        return best;
+    double f = grazing_fraction(g0, g1, d0, d1);
+    if (f > 0) {
+        double tc = t0 + f * dt;
+        if (best < 0 || tc < best)
+            best = tc;
+    }
+    return best;
+}
+
 /* A touch hidden inside the step [t0, t1]? Returns the time to stop at, or -1. The clearances at
  * t0 are in cx0, cv0, those at t1 (the current state) in cx, cv. */
 static double grazing_check(gd_sim *s, double t0, double t1)
@@ -143,23 +163,9 @@ static double grazing_check(gd_sim *s, double t0, double t1)
     const double dt = t1 - t0;
     for (int c = 0; c < s->m.nclear; c++) {
         double x0 = s->cx0[c], x1 = s->cx[c], d0 = s->cv0[c] * dt, d1 = s->cv[c] * dt;
-        double h = s->m.clear[c].h;
-        /* the test of grazing_fraction with both rates counted towards zero, shared by the two
-         * sides: where it holds, grazing_fraction's own (with a part of the rates, rounded
-         * monotonically) holds too and returns -1, so the skip changes no result */
-        double reach = (4.0 / 27.0) * (fabs(d0) + fabs(d1));
-        for (int side = 0; side < 2; side++) {
-            double off = side ? h : -h;
-            double g0 = x0 + off, g1 = x1 + off, a0 = fabs(g0), a1 = fabs(g1);
-            if ((a0 < a1 ? a0 : a1) > reach)
-                continue;
-            double f = grazing_fraction(g0, g1, d0, d1);
-            if (f > 0) {
-                double tc = t0 + f * dt;
-                if (best < 0 || tc < best)
-                    best = tc;
-            }
-        }
+        double h = s->m.clear[c].h, reach = (4.0 / 27.0) * (fabs(d0) + fabs(d1));
+        best = graze_side(x0 + -h, x1 + -h, d0, d1, reach, t0, dt, best); /* g = x - h */
+        best = graze_side(x0 + h, x1 + h, d0, d1, reach, t0, dt, best);   /* g = x + h */
     }
     return best;
 }
