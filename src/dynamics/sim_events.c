@@ -122,15 +122,13 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
     return -1.0;
 }
 
-/* The clearance coordinates and rates at the current (t, y), computed once per state; the sine
- * and cosine of Omega t from the cache (the step's last stage was at its end). */
-void gd_sim_clearances_now(gd_sim *s)
+/* The clearance coordinates and rates at the current (t, y) (gd_sim_clearances_now); the sine and
+ * cosine of Omega t from the cache (the step's last stage was at its end). */
+void gd_sim_clearances_compute(gd_sim *s)
 {
-    if (!s->cx_ok) {
-        double sn, cs;
-        sim_phase_at(s, s->t, &sn, &cs);
-        gd_model_clearances_sc(&s->m, s->t, sn, cs, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
-    }
+    double sn, cs;
+    sim_phase_at(s, s->t, &sn, &cs);
+    gd_model_clearances_sc(&s->m, s->t, sn, cs, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
     s->cx_ok = 1;
 }
 

@@ -129,7 +129,14 @@ gd_status gd_sim_reset_at(gd_sim *s, double t, gd_error *err);
 /* sim_events.c: event location, grazing watch, saltation */
 gd_status gd_sim_roots_setup(gd_sim *s, gd_error *err);
 gd_status gd_sim_arm_roots(gd_sim *s, int on, gd_error *err);
-void gd_sim_clearances_now(gd_sim *s);
+void gd_sim_clearances_compute(gd_sim *s);
+/* The clearance coordinates and rates at the current (t, y) in cx, cv, computed once per state
+ * (cx_ok); asked four times a step, inline */
+static inline void gd_sim_clearances_now(gd_sim *s)
+{
+    if (!s->cx_ok)
+        gd_sim_clearances_compute(s);
+}
 gd_status gd_sim_grazing_watch(gd_sim *s, double t0, double t1, double *tg, gd_error *err);
 /* After an accepted step (or redone piece) [t0, t1] (absolute): the gap watch when on, then the
  * step hook */
