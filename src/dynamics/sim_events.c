@@ -385,7 +385,7 @@ gd_status gd_sim_arm_roots(gd_sim *s, int on, gd_error *err)
  * points the next halving may test are independent evaluations the processor overlaps, where one
  * halving at a time waits for each value before the next point is known. The points (the same
  * sums, halved) and the decisions are those of one halving at a time, and so is hi, to the bit. */
-static double bisect_crossing(double g0, double d0, double g1, double d1, double held)
+double gd_sim_bisect_crossing(double g0, double d0, double g1, double d1, double held)
 {
     double lo = 0.0, hi = 1.0;
     for (int it = 0; it < 48; it += 2) {
@@ -426,7 +426,7 @@ double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1)
             double g0 = s->cx0[c] + off, g1 = s->cx[c] + off;
             if (!(g1 * held < 0) || g0 * held < 0)
                 continue;
-            double hi = bisect_crossing(g0, s->cv0[c] * dt, g1, s->cv[c] * dt, held);
+            double hi = gd_sim_bisect_crossing(g0, s->cv0[c] * dt, g1, s->cv[c] * dt, held);
             /* a root in the step's first instant (a second clearance crossing just after one
              * handled at t0) still gets a piece of step for ARKODE to find it in (hi > 0: fmax
              * written out) */

@@ -142,6 +142,10 @@ gd_status gd_sim_grazing_watch(gd_sim *s, double t0, double t1, double *tg, gd_e
  * step hook */
 gd_status gd_sim_after_step(gd_sim *s, double t0, double t1, gd_error *err);
 double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1);
+/* The bisection of the cubic Hermite of a root function over [0, 1] for a sign change (values g0,
+ * g1, rates d0, d1 times the step; held = +1 or -1 the side of the held mode): the end past it of
+ * the last of 48 halvings (tests/test_bisect_crossing.c checks it against one halving at a time) */
+double gd_sim_bisect_crossing(double g0, double d0, double g1, double d1, double held);
 gd_status gd_sim_roots_after_step(gd_sim *s, int flag, int refine, double t0, double tret, double tc, int *handled,
                                   gd_error *err);
 gd_status gd_sim_repair_held_modes(gd_sim *s, gd_error *err);
