@@ -99,11 +99,7 @@ void gd_model_clearances_sc(const gd_model *m, double t, double s0, double c0, c
     }
 }
 
-GD_API int gd_model_mode_of(const gd_model *m, int c, double x)
-{
-    double h = m->clear[c].h;
-    return x > h ? 1 : (x < -h ? -1 : 0);
-}
+GD_API int gd_model_mode_of(const gd_model *m, int c, double x) { return model_mode_of(m, c, x); }
 
 /* Force of clearance c along -w (dimensionless) and the current stiffness factor. */
 static inline double clear_force(const gd_model *m, int c, double x, double v, double kfac, int mode)

@@ -14,6 +14,14 @@
 
 static inline double mesh_phase(const gd_model *m, int j, double t) { return m->Omega * t + m->mesh[j].phase; }
 
+/* The contact mode of clearance c at coordinate x (+1 past h, -1 past -h, else 0): gd_model_mode_of,
+ * inline for the checks made at every clearance after every step (sim_events.c). */
+static inline int model_mode_of(const gd_model *m, int c, double x)
+{
+    double h = m->clear[c].h;
+    return x > h ? 1 : (x < -h ? -1 : 0);
+}
+
 static inline int rect_level_at(const gd_mesh_excitation *x, double ph)
 {
     double f = ph / (2.0 * M_PI);

@@ -60,13 +60,21 @@ gd_status gd_sim_roots_setup(gd_sim *s, gd_error *err)
     return GD_OK;
 }
 
+typedef double v2 __attribute__((vector_size(16))); /* two lanes, each its own IEEE operations */
+
 /* The cubic Hermite through (0, g0) and (1, g1) with end rates d0, d1 (rates times the step), at
- * x in [0, 1]: g0 h00 + d0 h10 + g1 h01 + d1 h11. */
+ * two points x in [0, 1] at once: g0 h00 + d0 h10 + g1 h01 + d1 h11. */
+static inline v2 hermite3_2(double g0, double d0, double g1, double d1, v2 x)
+{
+    v2 h00 = (1.0 + 2.0 * x) * (1.0 - x) * (1.0 - x), h10 = x * (1.0 - x) * (1.0 - x);
+    v2 h01 = x * x * (3.0 - 2.0 * x), h11 = x * x * (x - 1.0);
+    return g0 * h00 + d0 * h10 + g1 * h01 + d1 * h11;
+}
+
+/* the same at one point */
 static inline double hermite3(double g0, double d0, double g1, double d1, double x)
 {
-    double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
-    double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
-    return g0 * h00 + d0 * h10 + g1 * h01 + d1 * h11;
+    return hermite3_2(g0, d0, g1, d1, (v2){x, x})[0];
 }
 
 /* Cubic Hermite of g over a step (values g0, g1, rates d0, d1 times h): does it cross
@@ -114,16 +122,34 @@ static double grazing_fraction(double g0, double g1, double d0, double d1)
     return -1.0;
 }
 
-/* The clearance coordinates and rates at the current (t, y), computed once per state; the sine
- * and cosine of Omega t from the cache (the step's last stage was at its end). */
-void gd_sim_clearances_now(gd_sim *s)
+/* The clearance coordinates and rates at the current (t, y) (gd_sim_clearances_now); the sine and
+ * cosine of Omega t from the cache (the step's last stage was at its end). */
+void gd_sim_clearances_compute(gd_sim *s)
 {
-    if (!s->cx_ok) {
-        double sn, cs;
-        sim_phase_at(s, s->t, &sn, &cs);
-        gd_model_clearances_sc(&s->m, s->t, sn, cs, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
-    }
+    double sn, cs;
+    sim_phase_at(s, s->t, &sn, &cs);
+    gd_model_clearances_sc(&s->m, s->t, sn, cs, NV_DATA_S(s->y), &s->md, s->cx, s->cv);
     s->cx_ok = 1;
+}
+
+/* One side g = x + off of a clearance for the grazing watch (values g0, g1 at the step's ends, rates
+ * d0, d1 times the step dt): the earlier of best and the time of a touch hidden inside the step.
+ * The test of grazing_fraction with both rates counted towards zero (reach, shared by the two
+ * sides) comes first: where it holds, grazing_fraction's own (with a part of the rates, rounded
+ * monotonically) holds too and returns -1, so the skip changes no result. */
+static inline double graze_side(double g0, double g1, double d0, double d1, double reach, double t0, double dt,
+                                double best)
+{
+    double a0 = fabs(g0), a1 = fabs(g1);
+    if ((a0 < a1 ? a0 : a1) > reach)
+        return best;
+    double f = grazing_fraction(g0, g1, d0, d1);
+    if (f > 0) {
+        double tc = t0 + f * dt;
+        if (best < 0 || tc < best)
+            best = tc;
+    }
+    return best;
 }
 
 /* A touch hidden inside the step [t0, t1]? Returns the time to stop at, or -1. The clearances at
@@ -135,23 +161,9 @@ static double grazing_check(gd_sim *s, double t0, double t1)
     const double dt = t1 - t0;
     for (int c = 0; c < s->m.nclear; c++) {
         double x0 = s->cx0[c], x1 = s->cx[c], d0 = s->cv0[c] * dt, d1 = s->cv[c] * dt;
-        double h = s->m.clear[c].h;
-        /* the test of grazing_fraction with both rates counted towards zero, shared by the two
-         * sides: where it holds, grazing_fraction's own (with a part of the rates, rounded
-         * monotonically) holds too and returns -1, so the skip changes no result */
-        double reach = (4.0 / 27.0) * (fabs(d0) + fabs(d1));
-        for (int side = 0; side < 2; side++) {
-            double off = side ? h : -h;
-            double g0 = x0 + off, g1 = x1 + off, a0 = fabs(g0), a1 = fabs(g1);
-            if ((a0 < a1 ? a0 : a1) > reach)
-                continue;
-            double f = grazing_fraction(g0, g1, d0, d1);
-            if (f > 0) {
-                double tc = t0 + f * dt;
-                if (best < 0 || tc < best)
-                    best = tc;
-            }
-        }
+        double h = s->m.clear[c].h, reach = (4.0 / 27.0) * (fabs(d0) + fabs(d1));
+        best = graze_side(x0 + -h, x1 + -h, d0, d1, reach, t0, dt, best); /* g = x - h */
+        best = graze_side(x0 + h, x1 + h, d0, d1, reach, t0, dt, best);   /* g = x + h */
     }
     return best;
 }
@@ -367,6 +379,30 @@ gd_status gd_sim_arm_roots(gd_sim *s, int on, gd_error *err)
     return GD_OK;
 }
 
+/* The bisection of the cubic Hermite p of a root function over the step's fraction [0, 1] (values
+ * g0, g1, rates d0, d1 times the step) for a sign change: p(lo) on the held side (held = +1 or -1),
+ * p(hi) past it, 48 halvings; returns hi. Two halvings a round: p at the midpoint and at the two
+ * points the next halving may test are independent evaluations the processor overlaps, where one
+ * halving at a time waits for each value before the next point is known. The points (the same
+ * sums, halved) and the decisions are those of one halving at a time, and so is hi, to the bit. */
+double gd_sim_bisect_crossing(double g0, double d0, double g1, double d1, double held)
+{
+    double lo = 0.0, hi = 1.0;
+    for (int it = 0; it < 48; it += 2) {
+        double m = 0.5 * (lo + hi), ql = 0.5 * (lo + m), qh = 0.5 * (m + hi);
+        double pm = hermite3(g0, d0, g1, d1, m);
+        v2 pq = hermite3_2(g0, d0, g1, d1, (v2){ql, qh});
+        /* p(m) past: hi = m, and the next point is 0.5 (lo + m) = ql; else lo = m, and it is
+         * 0.5 (m + hi) = qh. The quarter [b[k], b[k + 1]] kept, chosen without a branch. */
+        int past = pm * held < 0, past_l = pq[0] * held < 0, past_h = pq[1] * held < 0;
+        int k = 3 - 2 * past - ((past & past_l) | ((!past) & past_h));
+        double b[5] = {lo, ql, m, qh, hi};
+        lo = b[k];
+        hi = b[k + 1];
+    }
+    return hi;
+}
+
 /* Gated root finding, after a step [t0, t1] taken without the root functions: the time at which a
  * root function changed sign, by ARKODE's rule (a value exactly zero counts as the side of the held
  * mode, as in root_fn), estimated as the first zero of the cubic Hermite of g from the clearances
@@ -390,18 +426,11 @@ double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1)
             double g0 = s->cx0[c] + off, g1 = s->cx[c] + off;
             if (!(g1 * held < 0) || g0 * held < 0)
                 continue;
-            double d0 = s->cv0[c] * dt, d1 = s->cv[c] * dt, lo = 0.0, hi = 1.0;
-            for (int it = 0; it < 48; it++) { /* p(lo) on the held side, p(hi) past it */
-                double x = 0.5 * (lo + hi);
-                double p = hermite3(g0, d0, g1, d1, x);
-                if (p * held < 0)
-                    hi = x;
-                else
-                    lo = x;
-            }
+            double hi = gd_sim_bisect_crossing(g0, s->cv0[c] * dt, g1, s->cv[c] * dt, held);
             /* a root in the step's first instant (a second clearance crossing just after one
-             * handled at t0) still gets a piece of step for ARKODE to find it in */
-            double tc = t0 + fmax(hi, 1e-9) * dt;
+             * handled at t0) still gets a piece of step for ARKODE to find it in (hi > 0: fmax
+             * written out) */
+            double tc = t0 + (hi > 1e-9 ? hi : 1e-9) * dt;
             if (best < 0 || tc < best)
                 best = tc;
         }
@@ -492,7 +521,7 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
         if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1])
             continue;
         double x = s->cx[c], xd = s->cv[c];
-        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
         if (s->k > 0)
@@ -562,7 +591,7 @@ gd_status gd_sim_repair_held_modes(gd_sim *s, gd_error *err)
     gd_sim_clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
         double x = s->cx[c], h = s->m.clear[c].h;
-        int old = s->md.mode[c], nw = gd_model_mode_of(&s->m, c, x);
+        int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
         if (nw == old)
             continue;
         /* distance past the boundary of the region the held mode allows */
@@ -588,7 +617,7 @@ gd_status gd_sim_modes_from_state(gd_sim *s, gd_error *err)
     for (int c = 0; c < s->m.nclear; c++) {
         double x, v;
         gd_model_clearance(&s->m, c, s->t, y, &s->md, &x, &v);
-        int nw = gd_model_mode_of(&s->m, c, x), old = s->md.mode[c];
+        int nw = model_mode_of(&s->m, c, x), old = s->md.mode[c];
         if (nw == old)
             continue;
         s->md.mode[c] = nw;

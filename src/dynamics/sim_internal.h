@@ -45,6 +45,7 @@ struct gd_sim {
     gsl_vector *tau;
     double t_step0;          /* start of the last step (local) */
     double samp_t0, samp_dt; /* sample grid (absolute time; samp_dt 0: none): steps end on it */
+    int no_edges;            /* 1: the excitation has no discontinuity (no stop time of its own) */
     double cx[GD_MAX_CLEAR], cv[GD_MAX_CLEAR];   /* clearance coordinates and rates at (t, y) when cx_ok */
     double cx0[GD_MAX_CLEAR], cv0[GD_MAX_CLEAR]; /* the same at the start of the last step */
     int cx_ok;
@@ -128,12 +129,23 @@ gd_status gd_sim_reset_at(gd_sim *s, double t, gd_error *err);
 /* sim_events.c: event location, grazing watch, saltation */
 gd_status gd_sim_roots_setup(gd_sim *s, gd_error *err);
 gd_status gd_sim_arm_roots(gd_sim *s, int on, gd_error *err);
-void gd_sim_clearances_now(gd_sim *s);
+void gd_sim_clearances_compute(gd_sim *s);
+/* The clearance coordinates and rates at the current (t, y) in cx, cv, computed once per state
+ * (cx_ok); asked four times a step, inline */
+static inline void gd_sim_clearances_now(gd_sim *s)
+{
+    if (!s->cx_ok)
+        gd_sim_clearances_compute(s);
+}
 gd_status gd_sim_grazing_watch(gd_sim *s, double t0, double t1, double *tg, gd_error *err);
 /* After an accepted step (or redone piece) [t0, t1] (absolute): the gap watch when on, then the
  * step hook */
 gd_status gd_sim_after_step(gd_sim *s, double t0, double t1, gd_error *err);
 double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1);
+/* The bisection of the cubic Hermite of a root function over [0, 1] for a sign change (values g0,
+ * g1, rates d0, d1 times the step; held = +1 or -1 the side of the held mode): the end past it of
+ * the last of 48 halvings (tests/test_bisect_crossing.c checks it against one halving at a time) */
+double gd_sim_bisect_crossing(double g0, double d0, double g1, double d1, double held);
 gd_status gd_sim_roots_after_step(gd_sim *s, int flag, int refine, double t0, double tret, double tc, int *handled,
                                   gd_error *err);
 gd_status gd_sim_repair_held_modes(gd_sim *s, gd_error *err);
