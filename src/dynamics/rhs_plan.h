@@ -70,12 +70,18 @@ static inline int gd_rhs_plan_applies(const gd_model *m, const gd_modes *md)
 /* 1 when p was built for the modes of md. Asked at every stage: the modes compared as whole
  * 64-bit words (three loads each) rather than by a call of memcmp or a loop over the clearances. */
 _Static_assert(sizeof(((gd_modes *)0)->mode) == 3 * sizeof(uint64_t), "the modes are three words");
+static inline uint64_t gd_plan_word(const int *mode, int k)
+{
+    uint64_t w;
+    memcpy(&w, (const char *)mode + k * sizeof w, sizeof w);
+    return w;
+}
 static inline int gd_rhs_plan_current(const gd_rhs_plan *p, const gd_modes *md)
 {
-    uint64_t a[3], b[3];
-    memcpy(a, p->mode, sizeof a);
-    memcpy(b, md->mode, sizeof b);
-    return p->valid && ((a[0] ^ b[0]) | (a[1] ^ b[1]) | (a[2] ^ b[2])) == 0;
+    uint64_t d = (gd_plan_word(p->mode, 0) ^ gd_plan_word(md->mode, 0)) |
+                 (gd_plan_word(p->mode, 1) ^ gd_plan_word(md->mode, 1)) |
+                 (gd_plan_word(p->mode, 2) ^ gd_plan_word(md->mode, 2));
+    return p->valid && d == 0;
 }
 
 /* ex: gd_plan_excitation_build of m, one per mesh; it must outlive the plan */
