@@ -73,9 +73,11 @@ typedef struct gd_contin_start {
 
 /* Run the continuation of a resolved case into *res (free with gd_contin_result_free). start:
  * NULL for start = attractor or state; required for start = sweep (the row `continuation` reads
- * it from the sweep's states.csv), and used instead of the case's start when given. */
+ * it from the sweep's states.csv), and used instead of the case's start when given. stop (may be
+ * NULL): asked before each point of every branch; a stop ends the run with GD_ERR_INTERRUPTED and
+ * no result. */
 GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *start, gd_contin_progress_fn progress,
-                               void *user, gd_contin_result *res, gd_error *err);
+                               void *user, const gd_stop_hook *stop, gd_contin_result *res, gd_error *err);
 GD_API void gd_contin_result_free(gd_contin_result *res);
 
 /* The parameter of a branch point or bifurcation in the key's unit. */

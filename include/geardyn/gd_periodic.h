@@ -83,10 +83,11 @@ typedef struct gd_cont_opts {
     int max_points;          /* branch points at most (the start included) */
     int direction;           /* +1: set out towards increasing p; -1 decreasing */
     double locate_tol;       /* a bifurcation is located when its arclength bracket is below this */
+    gd_stop_hook stop;       /* asked before each new point: nonzero ends gd_continue with GD_ERR_INTERRUPTED */
 } gd_cont_opts;
 
 /* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], no dp_max, 400 points, +1,
- * locate_tol 1e-8 */
+ * locate_tol 1e-8, never stopped */
 GD_API void gd_cont_opts_default(gd_cont_opts *co);
 
 typedef enum gd_bif_kind {

@@ -668,6 +668,8 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
      * exceeds dp_max is a correction lost */
     double gain = 1.0;
     while (c->br->npoints < co->max_points) {
+        if (gd_stop_asked(&co->stop))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped at p = %.9g", u[N]);
         int iters = 0;
         gd_error e1 = {0};
         if (co->dp_max > 0 && fabs(ds * t[N]) * gain > DP_MARGIN * co->dp_max)

@@ -497,7 +497,7 @@ static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_
 }
 
 GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd_contin_progress_fn progress,
-                               void *user, gd_contin_result *res, gd_error *err)
+                               void *user, const gd_stop_hook *stop, gd_contin_result *res, gd_error *err)
 {
     memset(res, 0, sizeof *res);
     double t0 = gd_clock_thread_cpu_s();
@@ -510,6 +510,8 @@ GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd
                             "continuation row (gd_analysis_run_in), or given as gd_contin_start", c->cont_start_sweep);
     gd_model m;
     gd_status st = setup(&r, c, from, &m, err);
+    if (stop)
+        r.co.stop = *stop;
     double y[GD_MAX_STATE];
     if (st == GD_OK && from && from->n != m.n)
         st = gd_error_set(err, GD_ERR_INPUT, "the continuation's start (%s): %d state components, the model has %d",

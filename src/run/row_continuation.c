@@ -6,8 +6,8 @@
 
 #include <stdlib.h>
 
-/* The run's progress, after each branch, through the caller's hook; the run's should_stop is
- * asked there too (a stop between branches). */
+/* The run's progress, after each branch, through the caller's hook (the run's should_stop is
+ * asked before every point of a branch, gd_contin_run's stop, and here between branches). */
 static int on_branch(void *user, int done, int planned)
 {
     const gd_run_env *env = user;
@@ -38,7 +38,8 @@ gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_ru
     gd_contin_result *r = malloc(sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
-    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, r, err);
+    const gd_stop_hook stop = gd_row_stop(env);
+    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, &stop, r, err);
     if (st != GD_OK) {
         free(r);
         return st;
