@@ -50,8 +50,10 @@ static double dist(const double *a, const double *b, int n)
     return d;
 }
 
-/* the branch from the attractor reached after 300 periods from the case's start at Omega0 */
-static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o, int direction, gd_branch *br)
+/* the branch from the attractor reached after 300 periods from the case's start at Omega0 (po_tol:
+ * the shooting's tolerance, 0 for the default) */
+static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o, int direction, double po_tol,
+                   gd_branch *br)
 {
     gd_error e = {0};
     double y[GD_MAX_STATE];
@@ -64,6 +66,8 @@ static void branch(const gd_case *c, const gd_model *m, const gd_solver_opts *o,
     co.p_max = 1.5;
     co.ds_max = 0.05;
     co.direction = direction;
+    if (po_tol > 0)
+        co.po.tol = po_tol;
     gd_po start;
     if (gd_po_solve(m, o, &co.po, y, &start, &e) != GD_OK || gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co,
                                                                            &start, br, &e) != GD_OK)
@@ -268,7 +272,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     au_ks_case(&c, &m, alpha, 0.05, 0.1, 0.1, 0.5, sets);
     gd_solver_opts_from_case(&c, &o);
     gd_branch up;
-    branch(&c, &m, &o, 1, &up);
+    branch(&c, &m, &o, 1, 0.0, &up);
     /* 1. the bifurcations in order */
     const gd_bifurcation *fold[4], *pd[4], *cc[4];
     int nf = of_kind(&up, GD_BIF_FOLD, fold, 4), npd = of_kind(&up, GD_BIF_PERIOD_DOUBLING, pd, 4);
@@ -293,8 +297,8 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     gd_model m1;
     au_ks_case(&c1, &m1, alpha, 0.05, 0.1, 0.1, 1.0, sets);
     gd_branch down, up1;
-    branch(&c1, &m1, &o, -1, &down);
-    branch(&c1, &m1, &o, 1, &up1);
+    branch(&c1, &m1, &o, -1, 0.0, &down);
+    branch(&c1, &m1, &o, 1, 0.0, &up1);
     /* the branch from 0.5 up is the one from 1 down, reversed, then the one from 1 up */
     gd_branch joined = down;
     joined.nbif = 0;
@@ -339,24 +343,10 @@ static void tolerances(void)
         gd_case c;
         gd_model m;
         gd_solver_opts o;
-        gd_error e = {0};
         au_ks_case(&c, &m, 0.0, 0.05, 0.1, 0.1, 0.5, sets);
         gd_solver_opts_from_case(&c, &o);
-        double y[GD_MAX_STATE];
-        gd_modes md;
-        if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK)
-            au_die(&e);
-        gd_cont_opts co;
-        gd_cont_opts_default(&co);
-        co.p_min = 0.5;
-        co.p_max = 1.5;
-        co.ds_max = 0.05;
-        co.po.tol = fmax(1e-9, 0.1 * rtol[k]);
-        gd_po start;
         gd_branch br;
-        if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
-            gd_continue(gd_model_at_mesh_frequency, (void *)&m, &o, &co, &start, &br, &e) != GD_OK)
-            au_die(&e);
+        branch(&c, &m, &o, 1, fmax(1e-9, 0.1 * rtol[k]), &br);
         nb[k] = br.nbif;
         for (int i = 0; i < 4; i++)
             got[k][i] = i < br.nbif ? br.bif[i].p : NAN;
