@@ -10,13 +10,7 @@
 # max_branches bounds their number; end_reason says the bound in rpm. Bad [continuation] settings are
 # refused with exit 2 naming file, line and key, and
 # nothing is written. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 KS="$SRC/cases/continuation/kahraman-singh.ini"
 
 "$G" check "$KS" > "$work/check.txt"; ok $? "check exits 0 on kahraman-singh.ini"

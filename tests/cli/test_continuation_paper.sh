@@ -11,13 +11,7 @@
 # 3. At those speeds the branch's orbit (Newton from the branch's state interpolated to the speed,
 #    start = state) has the sweep's RMS mesh acceleration to 1e-6 relative.
 # TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 PS="$SRC/cases/continuation/paper-speed.ini"
 
 "$G" run "$SRC/cases/paper/sweep-speed.ini" --out "$work/sweep" --quiet --set sweep.from=3000 --set sweep.to=5500 \

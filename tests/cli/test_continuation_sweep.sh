@@ -10,13 +10,7 @@
 # the period-4 branch the cascade of the plain continuation reaches from Omega 0.5. A directory
 # that is missing, not a sweep, a sweep of another model or in another key is refused with exit 2
 # naming the key, and nothing is written. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 KS="$SRC/cases/continuation/kahraman-singh.ini"
 SWEEP=(--set scene.analysis=sweep --set sweep.parameter=operating.speed_rpm --set sweep.from=1591.5494309189
        --set sweep.to=4774.6482927569 --set sweep.points=21 --set run.record_periods=50

@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # The guards stop a run with a clear status instead of hanging or drifting: more events per mesh
 # period than allowed (chattering), and teeth separated for good at zero load. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 # the quickstart scene has about 20 contact events per mesh period: a limit of 3 must stop it
 "$G" run "$SRC/cases/quickstart.ini" --out "$work/chatter" --quiet --set solver.max_events_per_period=3 \

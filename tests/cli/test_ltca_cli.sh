@@ -2,13 +2,7 @@
 # geardyn run on the paper's LTCA cases: files, stable summary.json keys with valid values, no
 # temporary files left, check shows the new keys, a fixed pinion reports unequal load shares, a
 # case without load is refused with exit 2. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 "$G" check "$SRC/cases/paper/ltca-modified.ini" > "$work/check.txt"; ok $? "check exits 0 on ltca-modified.ini"
 grep -Eq "^pinion_axial = floating +; file line" "$work/check.txt"; ok $? "check shows [support] pinion_axial"

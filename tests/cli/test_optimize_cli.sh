@@ -4,13 +4,7 @@
 # beside the unmodified pair and Table 2, and the optimum's LTCA and TCA outputs); the comparison
 # output is complete for a small budget (files, CSV columns and rows, summary.json keys) and is
 # identical with 1 and 2 threads except the wall-time columns. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 # ---- check ----------------------------------------------------------------------------------------
 "$G" check "$SRC/cases/paper/optimize-alo.ini" > "$work/check.txt"; ok $? "check exits 0 on optimize-alo.ini"

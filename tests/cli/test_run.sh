@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # The command line end to end: check, run (files, stable summary.json keys, atomicity),
 # events. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 "$G" --version | grep -q "^geardyn [0-9]"; ok $? "--version"
 "$G" --help | grep -q "geardyn run CASE"; ok $? "--help"

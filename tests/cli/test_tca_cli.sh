@@ -1,13 +1,7 @@
 #!/usr/bin/env bash
 # geardyn run on the paper's TCA cases: files, stable summary.json keys, no temporary files left,
 # check shows the new sections, a modification that does not fit is refused with exit 2. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 "$G" check "$SRC/cases/paper/tca-modified.ini" > "$work/check.txt"; ok $? "check exits 0 on tca-modified.ini"
 grep -Eq "^tip_relief_amount_um = 35 um +; file line" "$work/check.txt"; ok $? "check shows [modification] keys"

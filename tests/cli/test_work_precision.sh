@@ -2,13 +2,7 @@
 # analysis = work-precision on the command line (docs/accuracy.md): a small grid on the torsional
 # model writes every table, the diagrams (when gnuplot is there), summary.json, atomically and
 # complete; bad [workprecision] input is refused with the key and the valid values. TAP output.
-set -u
-G=${GEARDYN:?}
-SRC=${GEARDYN_SOURCE:?}
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+. "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
 cat > "$work/wp.ini" <<'INI'
 [scene]
