@@ -28,6 +28,9 @@ int cli_load_case(cli_case_args *a, gd_case *c);
  * (the caller frees it), else the exit status with nothing left to free. */
 int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
+/* geardyn check's section of natural frequencies, resonance speeds and strain-energy shares of the
+ * case's model m (check_modes.c). */
+void cli_check_modes(const gd_case *c, const gd_model *m);
 /* The threads a run uses for --threads N: N when positive, else the OpenMP default (1 without
  * OpenMP). */
 int cli_threads(int requested);

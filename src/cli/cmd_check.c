@@ -64,6 +64,7 @@ int cmd_check(int argc, char **argv)
         printf("static_deflection_um = %.6g\n", m.static_load_n / m.k_ref * 1e6);
         if (c.stiffness == GD_STIFF_LTCA)
             printf("# with stiffness = ltca the mesh stiffness above is ISO 6336-1's; run replaces it by LTCA's mean\n");
+        cli_check_modes(&c, &m);
     }
     const gd_run_cost *k = &a.cost;
     printf("\n# estimated cost of the run (check runs no LTCA and no integration)\n");
