@@ -143,11 +143,12 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     return res;
 }
 
-gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, gd_error *err)
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_modal *modes,
+                                    const gd_response_result *r, gd_error *err)
 {
     json_t *root = gd_json_root(c, "response", "scene", "model");
     json_object_set_new(root, "derived", response_derived_json(c, m));
+    json_object_set_new(json_object_get(root, "derived"), "modal", gd_modal_json(c, modes));
     json_object_set_new(root, "solver", response_solver_json(c, m, r));
     json_object_set_new(root, "results", response_results_json(c, m, r));
     return gd_json_write_summary(d, root, err);
