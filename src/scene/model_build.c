@@ -63,6 +63,8 @@ static void interleave_rows(gd_nz *list, int n)
     memcpy(list, out, sizeof(gd_nz) * (size_t)n);
 }
 
+#define GD_GRAVITY_MPS2 9.80665 /* standard gravity (ISO 80000-3) */
+
 static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
 
 /* A spur or single-helical pair: one mesh on the whole bodies, carrying the whole torque. */
@@ -242,9 +244,14 @@ static void bta_supports(const gd_case *c, gd_model *m, const build_scales *b, i
             bl->wval[0] = 1.0;
             bl->h = b->eh;
             bl->k = k / km;
-            bl->c = 0.0;
             snprintf(bl->name, sizeof bl->name, "bearing-%d%s", body + 1, half_suffix(m, s));
-            add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
+            if (c->bearing_damping_mode == GD_DAMP_CONTACT) { /* only while the journal touches */
+                bl->c = cy * cscale;
+                bl->damp_contact_only = 1;
+            } else { /* on the journal's velocity always, inside the clearance too */
+                bl->c = 0.0;
+                add_nz(m->C0, &m->nc, i, i, cy * cscale);
+            }
         } else {
             spring(m, i, -1, k / km, cy * cscale);
         }
@@ -278,6 +285,11 @@ static void build_bta(const gd_case *c, gd_model *m, const build_scales *b)
         m->mass[b0 + 3] = m2 / mn;
         m->mass[b0 + 4] = 1.0;
         m->F0[b0 + 4] = m->static_load_n * b->fscale;
+        if (c->gravity) { /* the weights along y: their component along the line of action */
+            double gy = GD_GRAVITY_MPS2 * cos(c->gravity_angle_deg * M_PI / 180.0);
+            m->F0[b0 + 0] = m1 * gy * b->fscale;
+            m->F0[b0 + 2] = m2 * gy * b->fscale;
+        }
         bta_mesh(c, m, b, s, b0, &nclr);
         bta_supports(c, m, b, s, b0, &nclr);
     }
