@@ -29,9 +29,11 @@ static gd_status spy_eval(void *state, const double *y, double *f, gd_error *err
 /* The gear problem of a case: its pair, its LTCA settings, its [optimize] bounds. */
 static gd_status gear_create(const gd_case *c, gd_opt_gear **g, gd_error *e)
 {
-    double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
-    gd_opt_gear_bounds(c, lower, upper);
-    return gd_opt_gear_create(PAIR_OF(c), LTCA_SET_OF(c), lower, upper, g, e);
+    double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
+    gd_opt_gear_vars v;
+    gd_opt_gear_vars_paper(&v);
+    gd_opt_gear_bounds(c, &v, lower, upper);
+    return gd_opt_gear_create(PAIR_OF(c), LTCA_SET_OF(c), &v, lower, upper, g, e);
 }
 
 int main(void)
@@ -53,8 +55,14 @@ int main(void)
         tap_ok(0, "LTE amplitude: %s", e.msg);
     }
     double x[6], t2[6];
-    gd_opt_gear_from_pair(PAIR_OF(&c), x);
-    gd_opt_gear_table2(t2);
+    gd_opt_gear_vars paper;
+    gd_opt_gear_vars_paper(&paper);
+    gd_opt_gear_from_pair(&paper, PAIR_OF(&c), x);
+    {
+        gd_pair t = *PAIR_OF(&c);
+        gd_opt_gear_table2(&t);
+        gd_opt_gear_from_pair(&paper, &t, t2);
+    }
     tap_ok(memcmp(x, t2, sizeof x) == 0, "the Table 2 case holds x = [y1, y2, y3, y4, y5, y7] = Table 2");
 
     /* the problem: bounds of [optimize], the constraint y2 + y4 <= rho_a1 - rho_SAP1 */

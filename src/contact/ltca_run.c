@@ -643,6 +643,8 @@ static void key_stream(const gd_pair *p, const gd_ltca_settings *s, int npos, ke
     key_double(k, "modification.lead_relief_inner_um", p->lead_relief_inner_um);
     key_double(k, "modification.lead_relief_outer_um", p->lead_relief_outer_um);
     key_double(k, "modification.lead_unmodified_length_mm", p->lead_unmodified_length_mm);
+    key_double(k, "modification.lead_unmodified_centre_mm", p->lead_unmodified_centre_mm);
+    key_double(k, "modification.helix_slope_um", p->helix_slope_um);
     key_double(k, "misalignment.axis_in_plane_arcmin", p->axis_in_plane_arcmin);
     key_double(k, "misalignment.axis_cross_plane_arcmin", p->axis_cross_plane_arcmin);
     key_double(k, "misalignment.centre_distance_error_mm", p->centre_distance_error_mm);

@@ -48,10 +48,10 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
     if (!c->modification_apply) { /* the unmodified pair: amounts and lengths resolve to 0, marked derived */
         static const char *const mk[] = { "root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
                                           "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
-                                          "lead_unmodified_length_mm" };
+                                          "lead_unmodified_length_mm", "lead_unmodified_centre_mm", "helix_slope_um" };
         double *mf[] = { &c->root_relief_amount_um, &c->root_relief_length_mm, &c->tip_relief_amount_um,
                          &c->tip_relief_length_mm, &c->lead_relief_inner_um, &c->lead_relief_outer_um,
-                         &c->lead_unmodified_length_mm };
+                         &c->lead_unmodified_length_mm, &c->lead_unmodified_centre_mm, &c->helix_slope_um };
         for (size_t k = 0; k < sizeof mk / sizeof mk[0]; k++) {
             *mf[k] = 0.0;
             c->src[gd_case_key_index("modification", mk[k])] = GD_SRC_DERIVED;
