@@ -93,6 +93,10 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
                hypot(c->base_pitch_deviation_um, c->profile_deviation_um));
     else if (!gd_case_key_given(c, "excitation", "ste_amplitude_um"))
         c->ste_amplitude_um = 10.0;
+    /* the periodicity tolerance follows the integration tolerance: a period of about a hundred
+     * steps, each within rtol of the state (docs/numerics.md section 8) */
+    gd_case_key_derive(c, "run", "periodicity_tol", &c->periodicity_tol,
+                       c->method == GD_METHOD_RK4 || c->fixed_step ? 1e-6 : fmin(0.1, 100.0 * c->rtol));
     /* stiffness harmonics */
     if (c->n_stiffness_phases > c->n_stiffness_harmonics) {
         gd_case_key_where(c, "excitation", "stiffness_phases_deg", w, sizeof w);

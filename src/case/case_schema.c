@@ -206,8 +206,10 @@ static const gd_keyspec schema[] = {
     D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-6,
       "two-trajectory: initial and renormalised separation (dimensionless state norm); keep it far above the "
       "integration error of each trajectory (about rtol times the state)"),
-    D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, 1e-6,
-      "Poincare points closer than this (relative to 1 + the largest value of each state variable) are equal"),
+    D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, NAN,
+      "Poincare points closer than this (relative to the size of the orbit, 1 + the largest value of any state "
+      "variable) are equal (derived: 100 solver.rtol, the error of a period of about a hundred steps each within "
+      "rtol; 1e-6 with fixed steps)"),
     D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
       "largest Lyapunov exponent per mesh period above which a non-periodic motion is chaotic (|mle| below: quasi-periodic)"),
 
