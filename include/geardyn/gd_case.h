@@ -250,6 +250,10 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
 /* The value of schema entry i formatted as the case file would write it. */
 GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len);
 GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
+/* Whether schema entry i is unused by the case as resolved: NULL when it is used, else why not
+ * ("ignored: excitation.stiffness = ltca"); *absent = 1 when the key does not exist for this pair
+ * at all (a single pair's groove width and groove shafts), so that a listing may leave it out. */
+GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent);
 GD_API const char *gd_source_name(gd_source s);
 
 #ifdef __cplusplus

@@ -533,6 +533,8 @@ GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x)
     free(x->k[0]);
     free(x->k[1]);
     free(x->lte_arcsec);
+    free(x->lte_half_arcsec[0]);
+    free(x->lte_half_arcsec[1]);
     memset(x, 0, sizeof *x);
 }
 
@@ -554,7 +556,8 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     int ok = x->phi1 && x->lte_arcsec;
     for (int h = 0; h < r.halves && ok; h++) {
         x->k[h] = malloc(N * sizeof(double));
-        ok = x->k[h] != NULL;
+        x->lte_half_arcsec[h] = malloc(N * sizeof(double));
+        ok = x->k[h] != NULL && x->lte_half_arcsec[h] != NULL;
     }
     if (!ok) {
         gd_ltca_result_free(&r);
@@ -565,6 +568,7 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     memcpy(x->lte_arcsec, r.lte_arcsec, N * sizeof(double));
     for (int h = 0; h < r.halves; h++) {
         memcpy(x->k[h], r.stiffness[h], N * sizeof(double));
+        memcpy(x->lte_half_arcsec[h], r.lte_half_arcsec[h], N * sizeof(double));
         x->k_mean[h] = r.stiffness_mean[h];
         x->load_share[h] = r.load_share[h];
         x->impact[h] = r.impact[h];

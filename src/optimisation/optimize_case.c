@@ -178,8 +178,9 @@ static gd_status check_gear(gd_case *c, const gd_pair *pair, gd_error *err)
             gd_case_key_where(c, "optimize", gear_key(id, up), w, sizeof w);
             const char *sym;
             gd_opt_gear_variable(id, NULL, &sym);
-            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the bounds of %s (%s) are [%g, %g] (valid: the "
-                                "lower bound below the upper)", w, gear_key(id, up), sym,
+            (void)sym;
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the bounds of %s are [%g, %g] (valid: the "
+                                "lower bound below the upper)", w, gear_key(id, up),
                                 gd_opt_gear_variable(id, NULL, NULL), lo[i], hi[i]);
         }
     const char *bad = NULL;
