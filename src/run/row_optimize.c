@@ -6,6 +6,7 @@
  * outputs in optimum/ and optimum-tca/, through the rows of those analyses. */
 #include "rows.h"
 #include "geardyn/gd_scene.h"
+#include "geardyn/gd_geometry.h"
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
 
@@ -156,19 +157,24 @@ static gd_status compute_lte(const gd_case *c, gd_stop_hook stop, gd_optimize_ou
     return st;
 }
 
-/* The variables without effect at the optimum: a relief length (y2, y4) whose amount (y1, y3) is
- * below 0.01 um there, or the unmodified lead band (y7, y8) when both lead reliefs (y5, y6) are;
- * and the convergence of the best run: the relative fall of its best value over the last tenth of
- * its evaluations. */
+/* The variables without effect at the optimum: a relief length (y2, y4) whose amount (y1, y3), or
+ * the unmodified lead band (y7, y8) when both lead reliefs (y5, y6) are, below 1 % of the optimum's
+ * LTE as a displacement normal to the flank (LTE r_b2 cos(beta_b)): a relief cannot change the
+ * LTE by more than its amount, so where it lies cannot matter; and the convergence of the best run:
+ * the relative fall of its best value over the last tenth of its evaluations. */
 static void assess_optimum(const gd_case *c, gd_optimize_outcome *o)
 {
     const gd_opt_result *b = &o->res[o->best];
-    const double tiny = 0.01; /* um: below what any measurement of a ground flank resolves */
     if (o->gear) {
         for (int k = 0; k < o->dim; k++)
             o->no_effect[k][0] = '\0';
         gd_pair t = gd_pair_from_case(c);
         gd_opt_gear_apply(&o->vars, &t, b->y);
+        gd_geometry g;
+        gd_error e = {0};
+        double tiny = 0.0; /* um */
+        if (gd_geometry_compute(&t, &g, &e) == GD_OK)
+            tiny = 0.01 * b->f * M_PI / (180.0 * 3600.0) * g.rb[1] * cos(g.beta_b) * 1e6;
         double lead = fmax(t.lead_relief_inner_um, t.lead_relief_outer_um);
         for (int k = 0; k < o->dim; k++) {
             int id = o->vars.var[k];
