@@ -342,10 +342,10 @@ static const gd_keyspec schema[] = {
     S("optimize", "optimizers", opt_optimizers, "alo,gn_direct_l,gn_crs2_lm,gn_isres,gn_esch,ln_bobyqa,ln_cobyla,ln_sbplx,random",
       "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
     S("optimize", "objective", opt_objective, "gear-lte",
-      "gear-lte (LTE amplitude of the modified pair over y1..y5, y7) or test functions sphere, rosenbrock, "
+      "gear-lte (LTE amplitude of the modified pair over optimize.variables) or test functions sphere, rosenbrock, "
       "rastrigin, ackley, griewank; compare-optimizers takes a comma-separated list"),
     L("optimize", "dimension", "", opt_dimensions, n_opt_dimensions, 1, 1000,
-      "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte has 6)"),
+      "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte: the count of optimize.variables)"),
     I("optimize", "iterations", opt_iterations, 1, 10000000, 100,
       "ALO iterations after the initial population (the paper: 100); the budget is population (iterations + 1)"),
     I("optimize", "population", opt_population, 2, 100000, 30, "ALO: number of ants (= antlions); random search: batch size"),
