@@ -57,7 +57,7 @@ static const gd_keyspec schema[] = {
     E("gear", "arrangement", arrangement, 0, "herringbone|helical|spur",
       "two helical halves of opposite hand on common bodies, one helical pair, or a spur pair (helix_angle_deg = 0)"),
     E("gear", "pinion_hand", pinion_hand, 0, "right|left",
-      "hand of the pinion helix in the left half (the right half and the gear have the opposite hand)"),
+      "hand of the pinion helix (a herringbone: of its left half; the right half and the gear have the opposite hand)"),
 
     /* [modification]: pinion flank only, form-ground (docs/geometry.md). Amounts are measured normal to
      * the flank; profile lengths are transverse roll lengths; lead lengths are axial. */
