@@ -86,6 +86,12 @@ static gd_status check_settings(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.ds: %g is outside [ds_min, ds_max] = [%g, %g] "
                             "(valid: ds_min <= ds <= ds_max)", WHERE("ds"), c->cont_ds, c->cont_ds_min,
                             c->cont_ds_max);
+    if (!c->root_finding) {
+        gd_case_key_where(c, "solver", "root_finding", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: solver.root_finding: off with analysis = continuation: the "
+                            "monodromy matrices need the saltation matrix at every located contact event (valid: "
+                            "root_finding = on)", w);
+    }
     if (c->cont_newton_tol < c->rtol)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is below solver.rtol = %g (valid: "
                             "newton_tol >= %g, or a tighter solver.rtol)", WHERE("newton_tol"), c->cont_newton_tol,
