@@ -4,7 +4,6 @@
  * docs/continuation.md section 2 derives the system. */
 #include "shooting.h"
 
-#include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -258,20 +257,8 @@ gd_status gd_shoot_orbit(const gd_shoot *sh, const double *u, gd_po *po, gd_erro
     for (int i = 0; i < sh->N; i++)
         po->residual = fmax(po->residual, fabs(sh->r[i]));
     memcpy(po->events, sh->events, sizeof po->events);
-    /* the whole orbit's monodromy: M_{nseg-1} ... M_1 M_0 */
-    double A[GD_MAX_STATE * GD_MAX_STATE], B[GD_MAX_STATE * GD_MAX_STATE];
-    memcpy(A, sh->Mk, sizeof(double) * (size_t)(n * n));
-    for (int k = 1; k < sh->nseg; k++) {
-        gsl_matrix_const_view Mv = gsl_matrix_const_view_array(sh->Mk + (size_t)k * n * n, (size_t)n, (size_t)n);
-        gsl_matrix_const_view Av = gsl_matrix_const_view_array(A, (size_t)n, (size_t)n);
-        gsl_matrix_view Bv = gsl_matrix_view_array(B, (size_t)n, (size_t)n);
-        int rc = gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &Mv.matrix, &Av.matrix, 0.0, &Bv.matrix);
-        if (rc != GSL_SUCCESS)
-            return gd_error_set(err, GD_ERR_GSL, "the orbit's monodromy: gsl_blas_dgemm: %s", gsl_strerror(rc));
-        memcpy(A, B, sizeof A);
-    }
-    memcpy(po->M, A, sizeof(double) * (size_t)(n * n));
-    gd_status st = gd_floquet(po->M, n, po->mu_re, po->mu_im, err);
+    /* the whole orbit's monodromy M_{nseg-1} ... M_1 M_0 and its multipliers, from the segments */
+    gd_status st = gd_floquet_segments(sh->Mk, sh->nseg, n, po->M, po->mu_re, po->mu_im, err);
     if (st != GD_OK)
         return st;
     po->mu_max = hypot(po->mu_re[0], po->mu_im[0]);

@@ -43,4 +43,10 @@ gd_status gd_shoot_tangent(gd_shoot *sh, const double *v, double *t, gd_error *e
  * Floquet multipliers and stability, the events. */
 gd_status gd_shoot_orbit(const gd_shoot *sh, const double *u, gd_po *po, gd_error *err);
 
+/* The Floquet multipliers of the product M_{K-1} ... M_1 M_0 of K segment monodromies (n x n each,
+ * row-major, consecutive in Mk), sorted by decreasing modulus, from the eigenvalues of the
+ * block-cyclic matrix of the segments (floquet.c): accurate to the segments' own rounding, not to
+ * eps |mu_max|. M (may be NULL): the product. */
+gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im, gd_error *err);
+
 #endif
