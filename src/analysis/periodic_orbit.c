@@ -13,9 +13,9 @@ GD_API void gd_po_opts_default(gd_po_opts *po)
     memset(po, 0, sizeof *po);
     po->nper = 1;
     po->multiple = 1;
-    po->tol = 1e-9;
+    po->tol = 0.0;
     po->max_iter = 12;
-    po->dp_rel = 1e-6;
+    po->dp_rel = 0.0;
 }
 
 /* the model of gd_po_solve: the one given, whatever p */
@@ -40,8 +40,9 @@ GD_API gd_status gd_po_solve(const gd_model *m, const gd_solver_opts *o, const g
         st = gd_sim_period_map(m, o, u + (k - 1) * m->n, sh.per_seg, u + k * m->n, NULL, NULL, err);
     u[sh.N] = m->Omega;
     int iters = 0;
+    double tol = po->tol > 0 ? po->tol : gd_po_tol_derived(o, gd_po_state_scale(u, sh.N));
     if (st == GD_OK)
-        st = gd_shoot_correct(&sh, u, NULL, NULL, po->tol, po->max_iter, &iters, err);
+        st = gd_shoot_correct(&sh, u, NULL, NULL, tol, po->max_iter, &iters, err);
     if (st == GD_OK)
         st = gd_shoot_orbit(&sh, u, orbit, err);
     if (st == GD_OK)
