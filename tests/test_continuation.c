@@ -34,7 +34,16 @@
  * 8. The extrema the grazing is located on (gd_sim_orbit_gaps): on the non-impacting orbit at
  *    Omega 0.6 (alpha 0) the mesh coordinate has one maximum and one minimum per period, at
  *    1 + F_m +- F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| (the closed form of
- *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6. */
+ *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6.
+ * 9. A bifurcation in the last step before a bound is located: the branch from 0.5 to a bound 1e-6
+ *    beyond the grazing, or beyond the period doubling, has it at its place to 1e-8.
+ * 10. The period-2 branch by single shooting (one segment of two periods) has the bifurcations of
+ *    multiple shooting to 1e-8 and as many points within 25 %, and the parameter part of its unit
+ *    tangent at the start within 20 % of multiple shooting's (the arclength's state part is averaged
+ *    over the segments).
+ * 11. The event-count fallback of a contact change (gd_cont_opts.contact_by_events): the grazing of
+ *    alpha 0 bisected on the event count lies within 1e-6 above its place, on the side where the
+ *    orbit penetrates, and is reported as located on the event count. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -166,6 +175,32 @@ static void both_sides(const char *name, const gd_model *m, const gd_solver_opts
     }
 }
 
+/* the bifurcations of kind `kind` of a branch, in branch order */
+static int of_kind(const gd_branch *br, int kind, const gd_bifurcation **out, int max)
+{
+    int k = 0;
+    for (int i = 0; i < br->nbif; i++)
+        if (br->bif[i].kind == kind && k < max)
+            out[k++] = &br->bif[i];
+    return k;
+}
+
+/* the largest parameter difference between bifurcations of the same kind in two branches (in
+ * opposite order when reversed); -1 when their numbers differ */
+static double same_bifurcations(const gd_branch *a, const gd_branch *b, int reversed)
+{
+    double d = 0;
+    for (int kind = 0; kind <= GD_BIF_CONTACT_CHANGE; kind++) {
+        const gd_bifurcation *x[8], *y[8];
+        int nx = of_kind(a, kind, x, 8), ny = of_kind(b, kind, y, 8);
+        if (nx != ny)
+            return -1;
+        for (int i = 0; i < nx; i++)
+            d = fmax(d, fabs(x[i]->p - y[reversed ? nx - 1 - i : i]->p));
+    }
+    return d;
+}
+
 /* 5. branch switching at the period doubling b: the period-2 orbit 0.01 beyond it against settled
  * simulation (either of its two Poincare points), and its branch continued to 1.5 */
 static void period_two(const char *name, const gd_model *m, const gd_solver_opts *o, const gd_bifurcation *b)
@@ -205,6 +240,22 @@ static void period_two(const char *name, const gd_model *m, const gd_solver_opts
     char label[200];
     snprintf(label, sizeof label, "%s, period 2", name);
     stable_points(label, m, o, &br);
+    /* 10. the same branch by single shooting (one segment of two periods): the same bifurcations, and
+     * about as many points (the arclength's state part is averaged over the segments) */
+    gd_branch bs;
+    co.po.multiple = 0;
+    if (gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co, &p2, &bs, &e) != GD_OK)
+        au_die(&e);
+    double dp = same_bifurcations(&br, &bs, 0), ratio = (double)bs.npoints / br.npoints;
+    printf("# single shooting: %d points, %d bifurcations, end: %s; tangent_p at the start %.6f (multiple %.6f)\n",
+           bs.npoints, bs.nbif, bs.end_reason, bs.pt[0].tangent_p, br.pt[0].tangent_p);
+    tap_ok(bs.end == GD_END_BOUND && dp >= 0 && dp < 1e-8 && ratio > 0.8 && ratio < 1.25,
+           "%s, period 2 by single shooting: to the bound, the bifurcations of multiple shooting (max |dp| %.3g), "
+           "%d points against %d", name, dp, bs.npoints, br.npoints);
+    double tr = bs.pt[0].tangent_p / br.pt[0].tangent_p;
+    tap_ok(fabs(tr - 1.0) < 0.2, "%s, period 2: the parameter part of the unit tangent at the start, single over "
+           "multiple shooting, %.4f (within 20 %% of 1: a step of the arclength moves p alike)", name, tr);
+    gd_branch_free(&bs);
     gd_branch_free(&br);
 }
 
@@ -242,30 +293,36 @@ static void sweep_jumps(const char *name, const gd_case *c, const gd_model *m, c
     }
 }
 
-/* the bifurcations of kind `kind` of a branch, in branch order */
-static int of_kind(const gd_branch *br, int kind, const gd_bifurcation **out, int max)
+/* check 9: a bifurcation in the last step before a bound is located as anywhere else: the branch from
+ * 0.5 up to a bound 1e-6 beyond the bifurcation b (a step of the branch is of order 1e-2, so the
+ * bifurcation lies in the step that crosses the bound) has it, at its place to 1e-8 */
+static void bound_step(const char *name, const gd_case *c, const gd_model *m, const gd_solver_opts *o,
+                       const gd_bifurcation *b)
 {
-    int k = 0;
-    for (int i = 0; i < br->nbif; i++)
-        if (br->bif[i].kind == kind && k < max)
-            out[k++] = &br->bif[i];
-    return k;
-}
-
-/* the largest parameter difference between bifurcations of the same kind in two branches (in
- * opposite order when reversed); -1 when their numbers differ */
-static double same_bifurcations(const gd_branch *a, const gd_branch *b, int reversed)
-{
-    double d = 0;
-    for (int kind = 0; kind <= GD_BIF_CONTACT_CHANGE; kind++) {
-        const gd_bifurcation *x[8], *y[8];
-        int nx = of_kind(a, kind, x, 8), ny = of_kind(b, kind, y, 8);
-        if (nx != ny)
-            return -1;
-        for (int i = 0; i < nx; i++)
-            d = fmax(d, fabs(x[i]->p - y[reversed ? nx - 1 - i : i]->p));
-    }
-    return d;
+    gd_error e = {0};
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    if (gd_initial_state(c, m, y, &md, &e) != GD_OK || gd_sim_period_map(m, o, y, 300, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.p_min = 0.5;
+    co.p_max = b->p + 1e-6;
+    co.ds_max = 0.05;
+    gd_po start;
+    gd_branch br;
+    if (gd_po_solve(m, o, &co.po, y, &start, &e) != GD_OK ||
+        gd_continue(gd_model_at_mesh_frequency, (void *)m, o, &co, &start, &br, &e) != GD_OK)
+        au_die(&e);
+    const gd_bifurcation *f = NULL;
+    for (int i = 0; i < br.nbif; i++)
+        if (br.bif[i].kind == b->kind && fabs(br.bif[i].p - b->p) < 1e-8)
+            f = &br.bif[i];
+    double last_inside = br.npoints > 1 ? br.pt[br.npoints - 2].orbit.p : NAN;
+    tap_ok(br.end == GD_END_BOUND && f != NULL && last_inside < b->p,
+           "%s: the %s at %.10f, in the step from the last point inside (%.6f) to the bound %.6f, is located (%s)",
+           name, gd_bif_kind_name(b->kind), b->p, last_inside, co.p_max, f ? "found" : "missing");
+    gd_branch_free(&br);
 }
 
 static void ks(double alpha, const char *name, int expect_pd, double grazing)
@@ -326,12 +383,55 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
     if (expect_pd && npd == 1) {
         both_sides(name, &m, &o, &up, pd[0], -1);
         period_two(name, &m, &o, pd[0]);
+        bound_step(name, &c, &m, &o, pd[0]);
     }
+    if (ncc == 1)
+        bound_step(name, &c, &m, &o, cc[0]);
     gd_branch_free(&up);
     gd_branch_free(&up1);
     gd_branch_free(&down);
     gd_case_free(&c);
     gd_case_free(&c1);
+}
+
+/* check 11: the event-count fallback of a contact change (gd_cont_opts.contact_by_events), on the
+ * grazing of alpha 0: bisected to where the event detection first sees the contact, reported as such
+ * (location event-count), within 1e-6 of the grazing on the extremum's distance and on the side where
+ * the orbit penetrates */
+static void events_fallback(void)
+{
+    const char *sets[] = {"excitation.ste_phase_deg=90", "solver.rtol=1e-10", "solver.atol=1e-12", NULL};
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    gd_error e = {0};
+    au_ks_case(&c, &m, 0.0, 0.05, 0.1, 0.1, 0.5, sets);
+    gd_solver_opts_from_case(&c, &o);
+    double y[GD_MAX_STATE], graze = 1.0 / sqrt(1.99);
+    gd_modes md;
+    if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    gd_cont_opts co;
+    gd_cont_opts_default(&co);
+    co.p_min = 0.5;
+    co.p_max = 0.72;
+    co.ds_max = 0.05;
+    co.contact_by_events = 1;
+    gd_po start;
+    gd_branch br;
+    if (gd_po_solve(&m, &o, &co.po, y, &start, &e) != GD_OK ||
+        gd_continue(gd_model_at_mesh_frequency, (void *)&m, &o, &co, &start, &br, &e) != GD_OK)
+        au_die(&e);
+    const gd_bifurcation *b = br.nbif == 1 ? &br.bif[0] : NULL;
+    printf("# contact change by the event count: %d bifurcations; at Omega %.10f (bracket %.10f .. %.10f), %s, %d "
+           "corrections\n", br.nbif, b ? b->p : NAN, b ? b->p_lo : NAN, b ? b->p_hi : NAN,
+           b ? gd_bif_location_name(b->location) : "-", b ? b->corrections : 0);
+    tap_ok(b && b->kind == GD_BIF_CONTACT_CHANGE && b->location == GD_LOC_EVENTS && b->p >= graze &&
+               b->p - graze < 1e-6,
+           "the grazing by bisection of the event count: at %.10f, %.3g above 1/sqrt(1.99), reported as %s", b ? b->p : NAN,
+           b ? b->p - graze : NAN, b ? gd_bif_location_name(b->location) : "-");
+    gd_branch_free(&br);
+    gd_case_free(&c);
 }
 
 /* check 7: the located values against the integration tolerance */
@@ -420,5 +520,6 @@ int main(void)
     ks(0.2, "K&S alpha 0.2", 0, 0.0);
     tolerances();
     gap_extrema();
+    events_fallback();
     return tap_done();
 }

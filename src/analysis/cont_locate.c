@@ -129,6 +129,14 @@ static double loc_value(double s, void *params)
     int iters;
     hermite_guess(L, s, g);
     L->st = cont_step(L->c, L->a, s, g, &q, &iters, L->err);
+    if (L->st == GD_ERR_SOLVER || L->st == GD_ERR_GSL) {
+        /* no orbit there: at a branch point the bordered Jacobian is singular, and Brent's secant may
+         * land on it exactly; a quarter of the tolerance beyond stands for it */
+        double s2 = s + 0.25 * L->c->locate_tol * (s < 0.5 * L->ds1 ? 1.0 : -1.0);
+        gd_error_clear(L->err);
+        hermite_guess(L, s2, g);
+        L->st = cont_step(L->c, L->a, s2, g, &q, &iters, L->err);
+    }
     if (L->st != GD_OK)
         return NAN;
     double f = value_at(L, &q, L->ph[near], &phase);
