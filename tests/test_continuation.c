@@ -43,7 +43,10 @@
  *    over the segments).
  * 11. The event-count fallback of a contact change (gd_cont_opts.contact_by_events): the grazing of
  *    alpha 0 bisected on the event count lies within 1e-6 above its place, on the side where the
- *    orbit penetrates, and is reported as located on the event count. */
+ *    orbit penetrates, and is reported as located on the event count.
+ * 12. Branch switching accepts only the orbit born at the doubling: offered the period-1 orbit at
+ *    Omega 1.3 as a period doubling (none is there; the stable period-2 orbit born at 1.2267 coexists),
+ *    gd_po_period_doubled refuses; at the real doubling it finds the period-2 orbit. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -325,6 +328,38 @@ static void bound_step(const char *name, const gd_case *c, const gd_model *m, co
     gd_branch_free(&br);
 }
 
+/* check 12: branch switching accepts only the orbit born at the doubling. Given a period doubling
+ * that is not one (the period-1 orbit of alpha 0 at Omega 1.3, past the real doubling at 1.2267, where
+ * the stable period-2 orbit born there coexists 0.07 away), gd_po_period_doubled finds no orbit born
+ * there: the period-2 orbit it reaches keeps its amplitude when the distance to the "doubling" is
+ * quartered. At the real doubling it finds the one born there. */
+static void switching_check(const gd_model *m, const gd_solver_opts *o, const gd_branch *up, const gd_bifurcation *pd)
+{
+    gd_error e = {0};
+    const gd_po *q = NULL;
+    for (int i = 0; i < up->npoints; i++)
+        if (up->pt[i].orbit.p > 1.25 && (!q || fabs(up->pt[i].orbit.p - 1.3) < fabs(q->p - 1.3)))
+            q = &up->pt[i].orbit;
+    gd_model mq;
+    gd_po_opts po;
+    gd_po_opts_default(&po);
+    gd_po at, p2;
+    if (gd_model_at_mesh_frequency(1.3, &mq, (void *)m, &e) != GD_OK || gd_po_solve(&mq, o, &po, q->y[0], &at, &e) != GD_OK)
+        au_die(&e);
+    gd_bifurcation fake = *pd;
+    fake.p = 1.3;
+    memcpy(fake.y, at.y[0], sizeof fake.y);
+    gd_status st = gd_po_period_doubled(gd_model_at_mesh_frequency, (void *)m, o, &po, &fake, 0.01, 0.05, &p2, &e);
+    printf("# switching at a period doubling that is none (Omega 1.3, |mu| %.4f): %s\n", at.mu_max,
+           st == GD_OK ? "an orbit accepted" : e.msg);
+    tap_ok(st == GD_ERR_SOLVER, "branch switching at Omega 1.3 on the period-1 orbit, no doubling there: no orbit of "
+           "twice the period accepted (%s)", st == GD_OK ? "one accepted" : "refused");
+    gd_error_clear(&e);
+    st = gd_po_period_doubled(gd_model_at_mesh_frequency, (void *)m, o, &po, pd, 0.01, 0.05, &p2, &e);
+    tap_ok(st == GD_OK && p2.nper == 2, "branch switching at the real doubling at %.6f: the period-2 orbit born there "
+           "(%s)", pd->p, st == GD_OK ? "found" : e.msg);
+}
+
 static void ks(double alpha, const char *name, int expect_pd, double grazing)
 {
     gd_case c;
@@ -384,6 +419,7 @@ static void ks(double alpha, const char *name, int expect_pd, double grazing)
         both_sides(name, &m, &o, &up, pd[0], -1);
         period_two(name, &m, &o, pd[0]);
         bound_step(name, &c, &m, &o, pd[0]);
+        switching_check(&m, &o, &up, pd[0]);
     }
     if (ncc == 1)
         bound_step(name, &c, &m, &o, cc[0]);

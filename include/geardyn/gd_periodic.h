@@ -196,13 +196,14 @@ GD_API gd_status gd_continue(gd_model_at_fn model_at, void *ctx, const gd_solver
 GD_API void gd_branch_free(gd_branch *br);
 
 /* Branch switching at the period doubling b of a branch of orbits of po->nper mesh periods: the
- * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp) from the
- * bifurcation's orbit moved by +-eps Y along the eigenvector of its multiplier -1 (Y the orbit's
- * state scale, its max-norm but at least 1). An orbit is accepted only when it is the one born at
- * the doubling: not the period-nper orbit again, its two halves on either side of the period-nper
- * orbit at that parameter, and its amplitude growing as the square root of the distance to the
- * doubling (the orbit shot again at a quarter of the distance has half the amplitude, within 30 %).
- * GD_ERR_SOLVER when no trial finds it. out->p is its parameter. */
+ * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp, then both at dp/8)
+ * from the bifurcation's orbit moved by +-eps Y along the eigenvector of its multiplier -1 (Y the
+ * orbit's state scale, its max-norm but at least 1; sqrt(1/8) of that at dp/8). An orbit is accepted
+ * only when it is the one born at the doubling: not the period-nper orbit again, its two halves
+ * (its states at phase 0 and nper periods later) about the period-nper orbit at that parameter (their
+ * mean within their distance of it), and its amplitude growing as the square root of the
+ * distance to the doubling (the orbit shot again at a quarter of the distance has 0.35 to 0.7 of
+ * the amplitude). GD_ERR_SOLVER when no trial finds it. out->p is its parameter. */
 GD_API gd_status gd_po_period_doubled(gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o,
                                       const gd_po_opts *po, const gd_bifurcation *b, double dp, double eps,
                                       gd_po *out, gd_error *err);
