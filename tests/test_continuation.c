@@ -34,7 +34,10 @@
  * 8. The extrema the grazing is located on (gd_sim_orbit_gaps): on the non-impacting orbit at
  *    Omega 0.6 (alpha 0) the mesh coordinate has one maximum and one minimum per period, at
  *    1 + F_m +- F_a Omega^2 / |1 - Omega^2 + 2 i zeta Omega| (the closed form of
- *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6.
+ *    tests/test_periodic_orbit.c) to 1e-9, half a period apart to 1e-6. A pair of extrema inside one
+ *    integration step: with a third stiffness harmonic at Omega 0.2 the coordinate has 8 extrema per
+ *    period, two of them 0.041 periods apart; with 12 fixed steps per period the gap watch finds the 8
+ *    of an adaptive run at rtol 1e-10 (to 1e-3 in phase, 1e-4 in the coordinate).
  * 9. A bifurcation in the last step before a bound is located: the branch from 0.5 to a bound 1e-6
  *    beyond the grazing, or beyond the period doubling, has it at its place to 1e-8.
  * 10. The period-2 branch by single shooting (one segment of two periods) has the bifurcations of
@@ -550,12 +553,58 @@ static void gap_extrema(void)
     gd_case_free(&c);
 }
 
+/* check 8b: a pair of extrema inside one integration step. Alpha 0.2 with a third stiffness harmonic
+ * (stiffness_harmonics 0.05, 0.05, 0.3), backlash 200 um (no contact), Omega 0.2: the mesh coordinate
+ * has 8 extrema per period, two of them 0.041 periods apart. Integrated with 12 fixed steps per
+ * period (a step of 0.083 periods holds that pair, and the rate has the same sign at both its ends),
+ * the gap watch finds the 8 extrema of an adaptive run at rtol 1e-10, to 1e-3 in phase and 1e-4 in
+ * the coordinate. */
+static void gap_pair(void)
+{
+    const char *sets[] = {"excitation.stiffness_harmonics=0.05,0.05,0.3", "solver.rtol=1e-10", "solver.atol=1e-12",
+                          "clearance.backlash_um=200", NULL};
+    gd_case c;
+    gd_model m;
+    gd_solver_opts o;
+    gd_error e = {0};
+    au_ks_case(&c, &m, 0.2, 0.05, 0.1, 0.1, 0.2, sets);
+    gd_solver_opts_from_case(&c, &o);
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    if (gd_initial_state(&c, &m, y, &md, &e) != GD_OK || gd_sim_period_map(&m, &o, y, 300, y, NULL, NULL, &e) != GD_OK)
+        au_die(&e);
+    gd_gap_extrema fine, coarse;
+    gd_solver_opts oc = o;
+    oc.fixed_step = 1;
+    oc.steps_per_period = 12;
+    if (gd_sim_orbit_gaps(&m, &o, y, 1, &fine, &e) != GD_OK || gd_sim_orbit_gaps(&m, &oc, y, 1, &coarse, &e) != GD_OK)
+        au_die(&e);
+    double dt = 0, dx = 0, closest = INFINITY;
+    for (int i = 0; i < fine.n[0]; i++) {
+        if (i > 0)
+            closest = fmin(closest, (fine.t[0][i] - fine.t[0][i - 1]) / m.period);
+        if (i < coarse.n[0] && coarse.kind[0][i] == fine.kind[0][i]) {
+            dt = fmax(dt, fabs(coarse.t[0][i] - fine.t[0][i]) / m.period);
+            dx = fmax(dx, fabs(coarse.x[0][i] - fine.x[0][i]));
+        } else {
+            dt = dx = INFINITY;
+        }
+    }
+    printf("# extrema at Omega 0.2: %d (adaptive), %d (12 fixed steps), the closest two %.4f periods apart\n",
+           fine.n[0], coarse.n[0], closest);
+    tap_ok(fine.n[0] == 8 && coarse.n[0] == 8 && closest < 1.0 / 12 && dt < 1e-3 && dx < 1e-4,
+           "gap watch with 12 steps per period: the %d extrema of the adaptive run (%d found), a pair %.3f periods "
+           "apart among them, to %.2g periods and %.2g", fine.n[0], coarse.n[0], closest, dt, dx);
+    gd_case_free(&c);
+}
+
 int main(void)
 {
     ks(0.0, "K&S alpha 0", 1, 1.0 / sqrt(1.99));
     ks(0.2, "K&S alpha 0.2", 0, 0.0);
     tolerances();
     gap_extrema();
+    gap_pair();
     events_fallback();
     return tap_done();
 }
