@@ -8,7 +8,8 @@
 # the period doubling starts there, period-doubles again where the library test finds it, and the
 # period-4 branch born there runs to the bound; each switched branch is followed back to its doubling;
 # max_branches bounds their number; end_reason says the bound in rpm; to Omega 2, each curve of doubled
-# orbits joining two period doublings is followed once and names both. Bad [continuation] settings are
+# orbits joining two period doublings is followed once and names both; a user's spur pair runs on the
+# default settings. Bad [continuation] settings are
 # refused with exit 2 naming file, line and key, and
 # nothing is written. TAP output.
 . "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
@@ -158,6 +159,49 @@ assert sorted(round(joins(x)[1], 4) for x in p4) == [1.4004, 1.8462], [joins(x) 
 print("# branches:", [(x["period_n"], x["direction"], born(x), joins(x), x["end"]) for x in b])
 ' "$work/o2"
 ok $? "to Omega 2: each curve of doubled orbits followed once, from the doubling it was born at to the one it joins (both named), none on the budget"
+# a user's spur pair (the NASA Glenn spur rig pair: 28/28 teeth, module 3.175 mm, 20 deg, face 6.35 mm, 72 N m,
+# backlash 127 um) in rpm, with every [continuation] setting at its default: it runs, from the attractor at
+# 9000 rpm both ways to the bounds 2000 and 16000 rpm, through the folds of its softening resonance (where a
+# brute-force sweep of the same pair jumps: up between 9700 and 9800 rpm, down between 6500 and 6400), and no
+# branch uses up its point budget
+cat > "$work/spur.ini" <<'INI'
+[scene]
+analysis = continuation
+model = torsional
+[gear]
+arrangement = spur
+normal_module_mm = 3.175
+teeth_pinion = 28
+teeth_gear = 28
+helix_angle_deg = 0
+normal_pressure_angle_deg = 20
+face_width_pinion_mm = 6.35
+face_width_gear_mm = 6.35
+[operating]
+speed_rpm = 5000
+torque_nm = 72
+[clearance]
+backlash_um = 127
+[continuation]
+parameter = operating.speed_rpm
+from = 2000
+to = 16000
+INI
+"$G" run "$work/spur.ini" --out "$work/spur" --quiet --set output.plots=off > "$work/spur.txt" 2>&1
+ok $? "a spur pair in rpm with the default [continuation] settings runs ($(head -c 300 "$work/spur.txt"))"
+python3 -c '
+import csv, json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+b = s["branches"]
+f = [float(x["speed_rpm"]) for x in csv.DictReader(open(sys.argv[1] + "/bifurcations.csv")) if x["kind"] == "fold"]
+assert [x["end"] for x in b] == ["bound", "bound"], [(x["end"], x["points"]) for x in b]
+assert sorted([b[0]["last"], b[1]["last"]]) == [2000, 16000], [x["last"] for x in b]
+assert max(x["points"] for x in b) < 400, [x["points"] for x in b]
+assert any(9700 < v < 9800 for v in f) and any(6400 < v < 6500 for v in f), f
+print("# points", [x["points"] for x in b], "folds", f)
+' "$work/spur"
+ok $? "the spur pair: both branches to their bounds within the budget, the folds where a sweep jumps"
+
 # in the file: the message names its line
 sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
 line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)
