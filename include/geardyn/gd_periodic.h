@@ -55,6 +55,14 @@ typedef struct gd_po {
 /* The eigenvalues of the n x n matrix M (row-major), sorted by decreasing modulus. */
 GD_API gd_status gd_floquet(const double *M, int n, double *mu_re, double *mu_im, gd_error *err);
 
+/* The Floquet multipliers of the product M_{K-1} ... M_1 M_0 of K segment monodromies (n x n each,
+ * row-major, consecutive in Mk; K at most GD_PO_MAX_PERIODS), sorted by decreasing modulus, from the
+ * eigenvalues of the block-cyclic matrix of the segments: accurate to the segments' own rounding,
+ * where the explicit product's eigenvalues carry errors of about eps |mu_max|. M (may be NULL): the
+ * product. */
+GD_API gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im,
+                                     gd_error *err);
+
 /* The orbit of po->nper mesh periods of model m near the state y0 at t = 0 (the guesses of the
  * other segments are the images of y0). */
 GD_API gd_status gd_po_solve(const gd_model *m, const gd_solver_opts *o, const gd_po_opts *po, const double *y0,

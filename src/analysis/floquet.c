@@ -122,7 +122,8 @@ static void group_powers(const mu_pair *lam, int K, int n, mu_pair *mu)
     }
 }
 
-gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im, gd_error *err)
+GD_API gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im,
+                                     gd_error *err)
 {
     if (K < 1 || K > GD_PO_MAX_PERIODS || n < 1 || n > GD_MAX_STATE)
         return gd_error_set(err, GD_ERR_INPUT, "%d segments of %d x %d (valid: 1 to %d segments of at most %d)", K, n,

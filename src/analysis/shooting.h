@@ -64,10 +64,4 @@ double gd_po_state_scale(const double *y, int n);
  * absolute error rtol Y + atol of its error control. */
 double gd_po_tol_derived(const gd_solver_opts *o, double Y);
 
-/* The Floquet multipliers of the product M_{K-1} ... M_1 M_0 of K segment monodromies (n x n each,
- * row-major, consecutive in Mk), sorted by decreasing modulus, from the eigenvalues of the
- * block-cyclic matrix of the segments (floquet.c): accurate to the segments' own rounding, not to
- * eps |mu_max|. M (may be NULL): the product. */
-gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im, gd_error *err);
-
 #endif
