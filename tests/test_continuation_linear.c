@@ -14,7 +14,17 @@
  * 3. A branch point: x' = p x - x^3 (one state), the orbit x = 0 from p = -0.5 to 0.5 meets the branch
  *    x^2 = p at p = 0, where its multiplier exp(p T) passes 1 while the branch stays straight (the
  *    tangent's parameter part keeps its sign: no fold). The branch-point test locates it at 0 to
- *    1e-7, reported as a branch point, and the branch goes on to the bound. */
+ *    1e-7, reported as a branch point, and the branch goes on to the bound.
+ * 4. A test function that jumps: x' = a x with a = -0.1 below p = 0.3 and 0.1 above: the multiplier
+ *    jumps across 1, the branch-point test changes sign without a zero; the location closes on the
+ *    jump at 0.3 and reports it as a jump.
+ * 5. A location whose trial points fail: system 1 with no model in (0.3, 0.30002): the
+ *    Neimark-Sacker point there is the end of the bracket reached nearer the crossing (within 1e-4 of
+ *    it, with its own multiplier on the circle to 1e-3), keeps that bracket, and reports it as a
+ *    bracket.
+ * 6. The period-doubling test where det(M + I) = prod (1 + mu) overflows (multipliers of 1e200): finite,
+ *    with the product's sign. */
+#include "analysis/cont_internal.h"
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_periodic.h"
@@ -22,8 +32,9 @@
 #include <string.h>
 
 typedef struct lin {
-    int kind;                /* 1: two rotations, 2: neutral saddle, 3: pitchfork */
+    int kind;                /* 1: two rotations, 2: neutral saddle, 3: pitchfork, 4: a jump */
     double p;
+    double fail_lo, fail_hi; /* model_at fails for p in (fail_lo, fail_hi) */
     gd_custom_system sys;
 } lin;
 
@@ -42,8 +53,11 @@ static void rhs(double t, const double *y, double *ydot, void *ctx)
         ydot[0] = (1.0 + 0.5 * p) * y[0] + f;
         ydot[1] = (-1.0 + 0.5 * p) * y[1] + f;
         break;
-    default:
+    case 3:
         ydot[0] = p * y[0] - y[0] * y[0] * y[0];
+        break;
+    default:
+        ydot[0] = (p < 0.3 ? -0.1 : 0.1) * y[0];
     }
 }
 
@@ -63,15 +77,19 @@ static void tangent(double t, const double *y, const double *v, double *out, voi
         out[0] = (1.0 + 0.5 * p) * v[0];
         out[1] = (-1.0 + 0.5 * p) * v[1];
         break;
-    default:
+    case 3:
         out[0] = (p - 3.0 * y[0] * y[0]) * v[0];
+        break;
+    default:
+        out[0] = (p < 0.3 ? -0.1 : 0.1) * v[0];
     }
 }
 
 static gd_status model_at(double p, gd_model *m, void *ctx, gd_error *err)
 {
-    (void)err;
     lin *L = ctx;
+    if (p > L->fail_lo && p < L->fail_hi)
+        return gd_error_set(err, GD_ERR_SOLVER, "no model at p = %g (the test's gap)", p);
     L->p = p;
     gd_model_custom(m, &L->sys, 2.0 * M_PI);
     return GD_OK;
@@ -179,5 +197,52 @@ int main(void)
            "branch point: the orbit x = 0 meets x^2 = p at p = %.3g, located as a branch point (%d bifurcations, "
            "%d folds), the branch on to the bound", bp ? bp->p : NAN, br.nbif, folds);
     gd_branch_free(&br);
+
+    /* 4. a test function that jumps: x' = a x with a = -0.1 below p = 0.3 and 0.1 above, so the
+     * multiplier exp(a T) jumps across 1 and the branch-point test changes sign there without a zero.
+     * Brent closes a bracket on the jump; the location says so (jump), it does not report a zero. */
+    lin J = {.kind = 4, .sys = {1, rhs, tangent, NULL, NULL}};
+    J.sys.ctx = &J;
+    branch(&J, 1, 0.0, 0.0, 1.0, 0.05, &br);
+    const gd_bifurcation *jb = br.nbif == 1 ? &br.bif[0] : NULL;
+    tap_ok(jb && jb->kind == GD_BIF_BRANCH_POINT && jb->location == GD_LOC_JUMP && fabs(jb->p - 0.3) < 1e-6,
+           "a jump of the test function at p = 0.3: bracketed there (%.9f) and reported as a jump, not a zero (%s)",
+           jb ? jb->p : NAN, jb ? gd_bif_location_name(jb->location) : "none");
+    gd_branch_free(&br);
+
+    /* 5. a location whose trial points find no model in (0.3, 0.30002), just beyond the crossing at
+     * 0.30 (system 1): the Neimark-Sacker point is the end of the bracket reached nearer the crossing
+     * (its own orbit, its multiplier on the circle to 1e-3), the bracket the one reached, and it says
+     * so (bracket) */
+    L.fail_lo = 0.3;
+    L.fail_hi = 0.30002;
+    branch(&L, 4, 0.0, 0.0, 1.0, 0.05, &br);
+    const gd_bifurcation *nb = NULL;
+    for (int i = 0; i < br.nbif; i++)
+        if (br.bif[i].kind == GD_BIF_NEIMARK_SACKER && fabs(br.bif[i].p - 0.30) < 5e-3)
+            nb = &br.bif[i];
+    double lo = nb ? fmin(nb->p_lo, nb->p_hi) : NAN, hi = nb ? fmax(nb->p_lo, nb->p_hi) : NAN;
+    tap_ok(nb && nb->location == GD_LOC_BRACKET && lo <= 0.3 && hi >= 0.30002 && fabs(nb->p - 0.3) < 1e-4 &&
+               fabs(hypot(nb->mu_re, nb->mu_im) - 1.0) < 1e-3,
+           "a location whose trial points fail just beyond 0.30: at %.7f (|mu| %.6f), the bracket reached %.6f .. "
+           "%.6f, reported as %s", nb ? nb->p : NAN, nb ? hypot(nb->mu_re, nb->mu_im) : NAN, lo, hi,
+           nb ? gd_bif_location_name(nb->location) : "none");
+    gd_branch_free(&br);
+
+    /* 6. the period-doubling test of multipliers whose product overflows: 1e200, 1e200, 0.5 +- 0.5i, -0.5
+     * and -3e200 (det(M + I) about -1.5e600 < 0), and with 1e200 in place of -3e200 (> 0): the test
+     * function is finite with the sign of the product (the product itself, formed factor by factor,
+     * becomes inf * 0 = NaN) */
+    gd_po q;
+    memset(&q, 0, sizeof q);
+    q.n = 6;
+    const double re[6] = {-3e200, 1e200, 1e200, 0.5, 0.5, -0.5}, im[6] = {0, 0, 0, 0.5, -0.5, 0};
+    memcpy(q.mu_re, re, sizeof re);
+    memcpy(q.mu_im, im, sizeof im);
+    double neg = cont_pd_test(&q);
+    q.mu_re[0] = 1e200;
+    double pos = cont_pd_test(&q);
+    tap_ok(isfinite(neg) && neg < 0 && isfinite(pos) && pos > 0, "the period-doubling test where det(M + I) "
+           "overflows: %.3g and %.3g, finite, with the product's signs (- and +)", neg, pos);
     return tap_done();
 }

@@ -156,6 +156,13 @@ assert j[0][0] == 0 and abs(j[0][1] - 1.2267006347) < 1e-8 and j[1][0] == 0 and 
 p4 = [x for x in b if x["period_n"] == 4]
 assert len(p4) == 2 and all(joins(x) and joins(x)[0] == p2[0]["branch"] for x in p4), [joins(x) for x in p4]
 assert sorted(round(joins(x)[1], 4) for x in p4) == [1.4004, 1.8462], [joins(x) for x in p4]
+import csv
+rows = list(csv.DictReader(open(sys.argv[1] + "/bifurcations.csv")))
+for x in b:
+    if joins(x):
+        near = [r for r in rows if int(r["branch"]) == x["branch"] and r["kind"] == "fold" and
+                abs(float(r["continuation_p"]) - joins(x)[1]) < 1e-3]
+        assert not near, ("a fold listed at the doubling a branch joins", x["branch"], near)
 print("# branches:", [(x["period_n"], x["direction"], born(x), joins(x), x["end"]) for x in b])
 ' "$work/o2"
 ok $? "to Omega 2: each curve of doubled orbits followed once, from the doubling it was born at to the one it joins (both named), none on the budget"
