@@ -188,7 +188,8 @@ typedef struct gd_branch {
     long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that
                               * came before the Newton iterations */
 #define GD_BRANCH_NOTES 8
-    int nnotes;              /* what a location found that is not a bifurcation (a neutral saddle) */
+    int nnotes;              /* what a location found and did not keep (a modulus passing 1 with no complex
+                              * multiplier on the unit circle at the located point) */
     char notes[GD_BRANCH_NOTES][256];
     int notes_dropped;       /* notes beyond GD_BRANCH_NOTES */
     double vertex_p;         /* GD_END_DOUBLING: the vertex's parameter, from a parabola through the last points */

@@ -443,7 +443,7 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double
         free(b->bif_meas);
         return st;
     }
-    for (int i = 0; i < b->br.nnotes; i++) { /* what the locations noted (a neutral saddle) */
+    for (int i = 0; i < b->br.nnotes; i++) { /* what the locations noted */
         char why[GD_ERROR_MSG_MAX];
         snprintf(why, sizeof why, "%s", b->br.notes[i]);
         note(res, "branch %.0f: %s", res->nbranches, why);
