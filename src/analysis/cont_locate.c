@@ -79,7 +79,7 @@ static double value_at(loc *L, cpoint *q, double ref_phase, double *phase)
 
 static void keep(loc *L, double s, double f, double phase, const cpoint *q)
 {
-    if (L->nc == LOC_CACHE) /* (never with Brent's iterations at most 30 and the tolerance steps) */
+    if (L->nc == LOC_CACHE) /* (loc_value stops before) */
         return;
     L->s[L->nc] = s;
     L->f[L->nc] = f;
@@ -119,6 +119,10 @@ static double loc_value(double s, void *params)
         return L->f[i];
     if (L->st != GD_OK)
         return NAN;
+    if (L->nc == LOC_CACHE) { /* a location this long ends with the bracket it has */
+        L->st = gd_error_set(L->err, GD_ERR_SOLVER, "more than %d trial points", LOC_CACHE);
+        return NAN;
+    }
     /* the extremum is followed from the phase it had at the evaluated point nearest s */
     int near = 0;
     for (int j = 1; j < L->nc; j++)
