@@ -183,6 +183,8 @@ typedef struct gd_branch {
                               * one shifted (0: the first orbit itself) */
     int closed_reversed;     /* GD_END_CLOSED: that shifted orbit passed the other way (the curve is symmetric
                               * under the shift: what follows mirrors the branch's other direction) */
+    int closed_point;        /* GD_END_CLOSED: the point it came back to (0: its first; a later one when the branch
+                              * entered a closed curve, as at a branch point onto another branch) */
     long newton_iterations;  /* over all points, located bifurcations included */
     long corrections;        /* corrector runs (accepted, rejected, and the location's) */
     long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that

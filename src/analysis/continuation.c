@@ -270,11 +270,13 @@ static gd_status end_on_bound(cont *c, const cpoint *prev, const cpoint *a, doub
 
 #define DP_MARGIN 0.98 /* steps aim at this fraction of dp_max */
 
-/* The branch's first point u0 with its tangent t0, and whether the branch has left it (been farther
- * from it, and from its shifts, than twice the step that got there). */
+/* A point of the branch that a later step may come back to (the first point, and every
+ * ANCHOR_EVERY-th after it), with its tangent, and whether the branch has left it (been farther from
+ * it, and from its shifts, than twice the step that got there). */
+#define ANCHOR_EVERY 8
 typedef struct first_point {
     double u[UMAX], t[UMAX];
-    int left;
+    int left, point;
 } first_point;
 
 /* x shifted by k segments: the same orbit started k segments later (the parameter kept) */
@@ -285,12 +287,12 @@ static void shifted(const gd_shoot *sh, const double *x, int k, double *out)
     out[sh->N] = x[sh->N];
 }
 
-/* Whether the chord from a to b passes the first point (or a shift of it by whole segments) within a
- * quarter of its length with the tangent tb along the first point's: the branch is a closed curve,
- * followed once round (docs/continuation.md section 3). A shifted first point may be passed the other
- * way (*reversed): the curve is symmetric under the shift, and what follows is the mirror image of
- * the branch's other direction from its start. *kshift: the shift, in segments. Distances in the
- * arclength's norm. */
+/* Whether the chord from a to b passes the point f (or a shift of it by whole segments) within a
+ * quarter of its length with the tangent tb along f's: the branch is a closed curve from f on,
+ * followed once round (docs/continuation.md section 3). A shifted point may be passed the other way
+ * (*reversed): the curve is symmetric under the shift, and what follows is the mirror image of the
+ * branch's other direction from f. *kshift: the shift, in segments. Distances in the arclength's
+ * norm. */
 static int closes(const cont *c, first_point *f, const double *a, const double *b, const double *tb, int *kshift,
                   int *reversed)
 {
@@ -345,6 +347,7 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
     if (!P)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the continuation");
     cpoint *prev = NULL, *a = P, *b = P + 1, *spare = P + 2;
+    first_point *anchor = NULL;
     gd_status st = start_branch(c, start, a, err);
     if (st == GD_OK)
         st = cont_half(c, a, err);
@@ -352,9 +355,17 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
         st = push_point(c->br, &a->po, cont_fold_test(c, a), 0.0, err);
     if (st != GD_OK)
         goto done;
-    first_point first = {.left = 0};
-    memcpy(first.u, a->u, sizeof first.u);
-    memcpy(first.t, a->t, sizeof first.t);
+    /* the points a step may come back to: the first, and every ANCHOR_EVERY-th */
+    const int nanchor_max = co->max_points / ANCHOR_EVERY + 2;
+    anchor = malloc(sizeof *anchor * (size_t)nanchor_max);
+    int nanchor = 0;
+    if (!anchor) {
+        st = gd_error_set(err, GD_ERR_NOMEM, "out of memory for the continuation");
+        goto done;
+    }
+    anchor[nanchor] = (first_point){.left = 0, .point = 0};
+    memcpy(anchor[nanchor].u, a->u, sizeof anchor[0].u);
+    memcpy(anchor[nanchor++].t, a->t, sizeof anchor[0].t);
     double ds = co->ds;
     /* the corrected change of p over the predicted one, ds t_p, at the last step (at least 1): the
      * corrector moves p further than the tangent where the branch curves, and a step that then
@@ -424,14 +435,27 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
                      b->u[N]);
             goto done;
         }
-        int k = 0, rev = 0;
-        if (closes(c, &first, a->u, b->u, b->t, &k, &rev)) {
+        int k = 0, rev = 0, j = 0;
+        while (j < nanchor && !closes(c, &anchor[j], a->u, b->u, b->t, &k, &rev))
+            j++;
+        if (j < nanchor) {
             c->br->end = GD_END_CLOSED;
             c->br->closed_shift = k * c->sh.per_seg;
             c->br->closed_reversed = rev;
-            snprintf(c->br->end_reason, sizeof c->br->end_reason, "closed: back at its first orbit%s%s at p = %.9g",
-                     k ? " shifted by whole mesh periods" : "", rev ? ", the other way" : "", b->u[N]);
+            c->br->closed_point = anchor[j].point;
+            if (anchor[j].point == 0)
+                snprintf(c->br->end_reason, sizeof c->br->end_reason, "closed: back at its first orbit%s%s at p = "
+                         "%.9g", k ? " shifted by whole mesh periods" : "", rev ? ", the other way" : "", b->u[N]);
+            else
+                snprintf(c->br->end_reason, sizeof c->br->end_reason, "closed: back at the orbit of its point %d%s%s "
+                         "at p = %.9g (a closed curve from there on, followed once round)", anchor[j].point,
+                         k ? " shifted by whole mesh periods" : "", rev ? ", the other way" : "", b->u[N]);
             goto done;
+        }
+        if ((c->br->npoints - 1) % ANCHOR_EVERY == 0 && nanchor < nanchor_max) {
+            anchor[nanchor] = (first_point){.left = 0, .point = c->br->npoints - 1};
+            memcpy(anchor[nanchor].u, b->u, sizeof anchor[0].u);
+            memcpy(anchor[nanchor++].t, b->t, sizeof anchor[0].t);
         }
         cpoint *t = prev ? prev : spare;
         prev = a;
@@ -442,6 +466,7 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
     c->br->end = GD_END_BUDGET;
     snprintf(c->br->end_reason, sizeof c->br->end_reason, "%d points reached at p = %.9g", co->max_points, a->u[N]);
 done:
+    free(anchor);
     free(P);
     return st;
 }

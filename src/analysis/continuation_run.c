@@ -349,6 +349,12 @@ static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_c
         snprintf(o, n, "no orbit at the bound %s = %.10g%s%s (p = %.9g): the branch ends at %.10g%s%s (p = %.9g): "
                  "%s", k, gd_contin_value(res, bound), sp, res->unit, bound, gd_contin_value(res, p), sp, res->unit,
                  p, br->end_detail);
+    else if (br->end == GD_END_CLOSED && br->closed_point > 0)
+        snprintf(o, n, "closed: back at the orbit of its point %d (%s = %.10g%s%s)%s%s at %s = %.10g%s%s (p = %.9g): "
+                 "a closed curve from there on, followed once round", br->closed_point, k,
+                 gd_contin_value(res, br->pt[br->closed_point].orbit.p), sp, res->unit,
+                 br->closed_shift ? ", shifted by whole mesh periods" : "", br->closed_reversed ? ", passed the other "
+                 "way" : "", k, gd_contin_value(res, p), sp, res->unit, p);
     else if (br->end == GD_END_CLOSED && br->closed_shift)
         snprintf(o, n, "closed: back at its first orbit shifted by %d mesh period%s (the same orbit)%s at %s = "
                  "%.10g%s%s (p = %.9g)", br->closed_shift, br->closed_shift > 1 ? "s" : "", br->closed_reversed ?

@@ -208,6 +208,21 @@ assert any(9700 < v < 9800 for v in f) and any(6400 < v < 6500 for v in f), f
 print("# points", [x["points"] for x in b], "folds", f)
 ' "$work/spur"
 ok $? "the spur pair: both branches to their bounds within the budget, the folds where a sweep jumps"
+# the same pair in the bta model: down from 9000 rpm the branch passes a branch point onto a closed curve
+# of orbits (between folds at 6322 and 8436 rpm) that does not hold its first point; it ends once round
+# that curve, back at a point it passed, not on the point budget
+sed 's/^model = torsional/model = bta/' "$work/spur.ini" > "$work/spur-bta.ini"
+"$G" run "$work/spur-bta.ini" --out "$work/spur-bta" --quiet --set output.plots=off \
+    --set continuation.branch_switching=off > "$work/spur-bta.txt" 2>&1
+ok $? "the spur pair in the bta model runs on the default settings ($(head -c 300 "$work/spur-bta.txt"))"
+python3 -c '
+import json, sys
+b = json.load(open(sys.argv[1] + "/summary.json"))["results"]["branches"]
+assert b[0]["end"] == "closed" and "back at the orbit of its point" in b[0]["end_reason"], b[0]["end_reason"]
+assert b[0]["points"] < 400 and b[1]["end"] == "bound", [(x["end"], x["points"]) for x in b]
+print("#", b[0]["points"], "points:", b[0]["end_reason"])
+' "$work/spur-bta"
+ok $? "the spur pair in the bta model: the branch down ends once round the closed curve it entered, within the budget"
 
 # in the file: the message names its line
 sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
