@@ -6,16 +6,19 @@
  * of a uniform random sample of initial states (x, x') in a box that goes to each attractor, with
  * the recurrence mapper of gd_basins.h (docs/basins.md section 7). Two published cases:
  *
- *   twin   d = 0.15, b = -1, f = 0.2 on [-2.2, 2.2]^2: two attractors, 0.511 (the one reached from
- *          (1.8, 0)) and 0.489 (from (-0.8, 0)) (Attractors.jl's test suite, 1000 states)
+ *   twin   d = 0.15, b = -1, f = 0.2 on [-2.2, 2.2]^2: two attractors, one in each well, 0.511 (the
+ *          right well's, reached from (1.8, 0) in the reference's integration) and 0.489 (the left
+ *          well's, from (-0.8, 0)) (Attractors.jl's test suite, 1000 states)
  *   five   d = 0.08, b = 0, f = 0.2 on x in [-1, 1], x' in [-0.5, 1]: five attractors, 0.2027 (from
  *          (-0.21, 0.02): the small period-1 orbit), 0.495 ((1.05, 0.77): the large one), 0.0288
  *          ((-0.67, 0.02)), 0.0257 ((-0.46, 0.30)), 0.2478 ((-0.43, 0.12): period 3) (bSTAB's
  *          reference, 10 000 states, Stender & Hoffmann, Nonlinear Dyn. 107, 2022)
  *
- * Each reference's attractor is named by an initial state that reaches it (its template); the
- * templates are mapped after the sample as seeds, which counts nothing, and each reference value is
- * set beside the fraction of the attractor its template reaches.
+ * bSTAB names each attractor by an initial state that reaches it (its template): the templates are
+ * mapped after the sample as seeds, which counts nothing, and each reference value is set beside the
+ * fraction of the attractor its template reaches. The twin-well attractors are named by their well
+ * (the sign of x at the section), because (1.8, 0) lies in a region of fractal basins where the
+ * attractor reached depends on the integrator's rounding (a change of 1e-9 takes it to either).
  *
  * Usage: example_basins_duffing twin|five [samples [threads]]   (default 10000 states, OpenMP's threads)
  * Prints `name = value` lines: the attractors, then per reference value
@@ -46,7 +49,7 @@ static void tangent(double t, const double *y, const double *v, double *out, voi
     out[1] = -p->d * v[1] - (p->b + 3.0 * y[0] * y[0]) * v[0];
 }
 
-typedef struct reference { double x0, v0, fraction; } reference;
+typedef struct reference { double x0, v0, fraction; int well; } reference; /* well: +-1 (the sign of x), 0: by template */
 
 int main(int argc, char **argv)
 {
@@ -59,9 +62,9 @@ int main(int argc, char **argv)
         return 2;
     }
     duffing par = five ? (duffing){0.08, 0.0, 0.2} : (duffing){0.15, -1.0, 0.2};
-    static const reference twin_ref[] = {{1.8, 0.0, 0.511}, {-0.8, 0.0, 0.489}};
-    static const reference five_ref[] = {{-0.21, 0.02, 0.2027}, {1.05, 0.77, 0.495}, {-0.67, 0.02, 0.0288},
-                                         {-0.46, 0.30, 0.0257}, {-0.43, 0.12, 0.2478}};
+    static const reference twin_ref[] = {{1.8, 0.0, 0.511, 1}, {-0.8, 0.0, 0.489, -1}};
+    static const reference five_ref[] = {{-0.21, 0.02, 0.2027, 0}, {1.05, 0.77, 0.495, 0}, {-0.67, 0.02, 0.0288, 0},
+                                         {-0.46, 0.30, 0.0257, 0}, {-0.43, 0.12, 0.2478, 0}};
     const reference *ref = five ? five_ref : twin_ref;
     int nref = five ? 5 : 2;
     long ref_n = five ? 10000 : 1000; /* the sample the reference values come from */
@@ -145,14 +148,19 @@ int main(int argc, char **argv)
         printf("%s = %ld\n", gd_basin_label_name(l), cnt);
     }
     for (int r = 0; r < nref; r++) {
+        if (ref[r].well) /* the attractor in that well */
+            for (int a = 0; a < natt; a++)
+                if ((att[a].pts[0] > 0) == (ref[r].well > 0))
+                    lab[N + r] = a;
         long cnt = 0;
         for (long k = 0; k < N; k++)
             cnt += lab[k] == lab[N + r];
         gd_basin_fraction f;
         gd_basin_fraction_of(cnt, N, 1.96, &f);
-        printf("fraction_%d = %.6f %.6f %.6f %.6f   ; template (%g, %g): attractor %d, Wilson [%.4f, %.4f]\n", r,
-               f.p, f.se, ref[r].fraction, sqrt(ref[r].fraction * (1 - ref[r].fraction) / (double)ref_n),
-               ref[r].x0, ref[r].v0, lab[N + r], f.wilson_lo, f.wilson_hi);
+        printf("fraction_%d = %.6f %.6f %.6f %.6f   ; %s: attractor %d, Wilson [%.4f, %.4f]\n", r, f.p, f.se,
+               ref[r].fraction, sqrt(ref[r].fraction * (1 - ref[r].fraction) / (double)ref_n),
+               ref[r].well > 0 ? "the right well" : ref[r].well < 0 ? "the left well" : "the template's attractor",
+               lab[N + r], f.wilson_lo, f.wilson_hi);
     }
     printf("mesh_periods = %ld\ncpu_s = %.2f\nwall_s = %.2f\n", gd_basin_mapper_periods(mp),
            (double)(clock() - c0) / CLOCKS_PER_SEC, (double)(w1.tv_sec - w0.tv_sec) + 1e-9 * (double)(w1.tv_nsec - w0.tv_nsec));

@@ -112,10 +112,11 @@ static void plot_fractions(gd_gnuplot_script *s, const gd_case *c, const gd_basi
     gd_gnuplot_printf(s, "set terminal %s\nset output '.fractions%s.tmp'\n", term, ext);
     gd_gnuplot_printf(s, "set multiplot layout 2,1 title \"%s%sthe motion a start settles on, over %s\" noenhanced\n",
                       c->title, c->title[0] ? "\\n" : "", res->parameter);
-    gd_gnuplot_printf(s, "set xrange [%.12g:%.12g]\nset grid\nset key outside right top noenhanced\n", lo, hi);
+    gd_gnuplot_printf(s, "set xrange [%.12g:%.12g]\nset grid\nset key outside right top noenhanced\n"
+                         "set lmargin at screen 0.08\nset rmargin at screen 0.78\n", lo, hi);
     /* top: the largest mesh deflection of every attractor beside the continuation's branches */
     gd_gnuplot_printf(s, "set title '%s' noenhanced\nset xlabel ''\nset ylabel 'largest mesh deflection lambda_L (um)' "
-                         "noenhanced\n", cont ? "attractors (points) and the continuation's orbits (solid stable, "
+                         "noenhanced\n", cont ? "attractors (points) and the orbits of the continuation (solid stable, "
                                                 "dashed unstable)" : "attractors");
     gd_gnuplot_printf(s, "plot ");
     const char *sep = "";
