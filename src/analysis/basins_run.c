@@ -73,7 +73,8 @@ static int coord_kind(const char *name)
 }
 
 /* The derived ends of the box: a deflection from -2 (back contact) to the base's deflection + 2 (at
- * least 3); a rate +-(the deflection box's width, or 5) Omega / 2. */
+ * least 3); a rate +-(the deflection box's width, or 5) Omega: a motion over the whole width at the mesh
+ * frequency. */
 static gd_status derive_box(gd_case *c, const gd_model *m, const double *base, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
@@ -105,7 +106,7 @@ static gd_status derive_box(gd_case *c, const gd_model *m, const double *base, g
                 b = fmax(u, 1.0) + 2.0;
                 width = b - a;
             } else {
-                b = 0.5 * width * m->Omega;
+                b = width * m->Omega;
                 a = -b;
             }
             gd_case_key_derive(c, "basins", from[k], lo[k], a);

@@ -292,7 +292,7 @@ static const gd_keyspec schema[] = {
     D("basins", "x_to", "", bas_x_to, -1e30, 1e30, 0, 0, NAN,
       "upper end of the box in x (derived for a mesh deflection: the static deflection + 2, drive contact)"),
     D("basins", "y_from", "", bas_y_from, -1e30, 1e30, 0, 0, NAN,
-      "lower end of the box in y (derived for a rate: -(x_to - x_from) Omega / 2, Omega the frequency ratio)"),
+      "lower end of the box in y (derived for a rate: -(x_to - x_from) Omega, Omega the frequency ratio)"),
     D("basins", "y_to", "", bas_y_to, -1e30, 1e30, 0, 0, NAN, "upper end of the box in y (derived for a rate: the "
       "opposite of y_from)"),
     D("basins", "phase_deg", "deg", bas_phase_deg, 0, 360, 0, 1, 0,

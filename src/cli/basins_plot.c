@@ -63,9 +63,8 @@ static void plot_basins(gd_gnuplot_script *s, const gd_case *c, const gd_basins_
     gd_gnuplot_printf(s, "set terminal %s\nset output '.basins%s.tmp'\n", term, ext);
     char ent[200] = "";
     if (res->grid)
-        snprintf(ent, sizeof ent, "basin entropy S_b %.3f, boundary basin entropy S_bb %.3f (%s ln 2: %s)",
-                 res->entropy.sb, res->entropy.sbb, res->entropy.fractal ? ">" : "<=",
-                 res->entropy.fractal ? "fractal boundary" : "no evidence of a fractal boundary");
+        snprintf(ent, sizeof ent, "basin entropy S_b %.3f, S_bb %.3f (%s ln 2: %s)", res->entropy.sb, res->entropy.sbb,
+                 res->entropy.fractal ? ">" : "<=", res->entropy.fractal ? "a fractal boundary" : "not shown fractal");
     gd_gnuplot_printf(s, "set title \"%s%sbasins at mesh phase %g deg, %d x %d initial states\\n%s\" noenhanced\n",
                       c->title, c->title[0] ? "\\n" : "", res->phase_deg, res->nx, res->ny, ent);
     gd_gnuplot_printf(s, "set xlabel '%s' noenhanced\nset ylabel '%s' noenhanced\n", res->column[0], res->column[1]);
