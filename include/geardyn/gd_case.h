@@ -22,7 +22,8 @@ extern "C" {
 typedef enum gd_analysis {
     GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
     GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6,
-    GD_ANALYSIS_CONTINUATION = 7
+    GD_ANALYSIS_CONTINUATION = 7,
+    GD_ANALYSIS_BASINS = 8
 } gd_analysis;
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind {
@@ -52,6 +53,8 @@ typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
     GD_CONT_RESP_POINCARE = 3
 } gd_cont_response;
+/* [basins] base: the components off the section at the static state or at a given state */
+typedef enum gd_basins_base { GD_BASINS_BASE_STATIC = 0, GD_BASINS_BASE_STATE = 1 } gd_basins_base;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
@@ -208,6 +211,27 @@ typedef struct gd_case {
     int cont_branch_switching;
     char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
     int cont_response;       /* gd_cont_response */
+
+    /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
+    char bas_x[32], bas_y[32];   /* the section's coordinates */
+    double bas_x_from, bas_x_to, bas_y_from, bas_y_to; /* its box, in the coordinates' units (NaN: derived) */
+    double bas_phase_deg;    /* mesh phase of the section */
+    int bas_base;            /* gd_basins_base */
+    char bas_state[1024];    /* base = state: the dimensionless state, comma-separated */
+    int bas_resolution, bas_resolution_y; /* cells of the box per coordinate (resolution_y 0: resolution) */
+    int bas_picture;         /* the grid of resolution x resolution_y initial states */
+    int bas_samples, bas_seed; /* the random sample of the fractions, its seed */
+    int bas_max_periods;     /* mesh periods of one trajectory at most */
+    double bas_margin;       /* the tessellation beyond the box, in box widths */
+    int bas_consecutive_recurrences, bas_consecutive_attractor_steps, bas_consecutive_basin_steps,
+        bas_consecutive_lost_steps;
+    int bas_lyapunov_periods;
+    double bas_newton_tol;
+    int bas_entropy_box_cells;
+    char bas_continuation[GD_PATH_MAX]; /* a finished continuation's directory ("": none) */
+    char bas_parameter[256]; /* the fractions over a numeric key, "section.key" ("": one value) */
+    double bas_from, bas_to; /* in the unit of that key */
+    int bas_points;
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */

@@ -21,7 +21,7 @@
 
 static const gd_keyspec schema[] = {
     /* [scene] */
-    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation",
+    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation|basins",
       "what to compute"),
     E("scene", "model", model, 2, "torsional|torsional-lr|bta",
       "dynamic model: one mesh coordinate, the two helical halves, or bending-torsion-axial (10 DOF; 5 for a single pair)"),
@@ -310,6 +310,64 @@ static const gd_keyspec schema[] = {
     E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
       "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
       "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
+
+    /* [basins] (analysis = basins; docs/basins.md) */
+    S("basins", "x", bas_x, "lambda_L",
+      "the section's first coordinate: lambda_L, lambda_R (the mesh deflection over half the backlash), lambda_dot_L, "
+      "lambda_dot_R (its rate, half backlashes per unit of dimensionless time omega_n t), or a state component "
+      "(y1L, ..., y1L_dot, dimensionless)"),
+    S("basins", "y", bas_y, "lambda_dot_L", "the section's second coordinate (as x)"),
+    D("basins", "x_from", "", bas_x_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in x, in x's unit (derived for a mesh deflection: -2, back contact)"),
+    D("basins", "x_to", "", bas_x_to, -1e30, 1e30, 0, 0, NAN,
+      "upper end of the box in x (derived for a mesh deflection: the static deflection + 2, drive contact)"),
+    D("basins", "y_from", "", bas_y_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in y (derived for a rate: -(x_to - x_from) Omega, Omega the frequency ratio)"),
+    D("basins", "y_to", "", bas_y_to, -1e30, 1e30, 0, 0, NAN, "upper end of the box in y (derived for a rate: the "
+      "opposite of y_from)"),
+    D("basins", "phase_deg", "deg", bas_phase_deg, 0, 360, 0, 1, 0,
+      "mesh phase of the section: initial states and the stroboscopic map at this phase of the mesh cycle"),
+    E("basins", "base", bas_base, 0, "static|state",
+      "the state components off the section: at the static state, or at basins.state (an orbit's point)"),
+    S("basins", "state", bas_state, "",
+      "base = state: the dimensionless state at the section's phase, comma-separated (as branch.csv writes it)"),
+    I("basins", "resolution", bas_resolution, 2, 20000, 100,
+      "cells of the box along x (the picture's grid and the tessellation of the recurrences)"),
+    I("basins", "resolution_y", bas_resolution_y, 0, 20000, 0, "cells of the box along y (0: resolution)"),
+    B("basins", "picture", bas_picture, 1,
+      "map every cell's centre (basins.csv and the picture; without parameter only)"),
+    I("basins", "samples", bas_samples, 0, 1000000000, 10000,
+      "initial states drawn uniformly in the box for the fractions (0: none), per parameter value"),
+    I("basins", "seed", bas_seed, 0, 2147483647, 1, "seed of the random sample (GSL's Mersenne Twister)"),
+    I("basins", "max_periods", bas_max_periods, 10, 100000000, 2000,
+      "mesh periods of one trajectory at most: beyond, its state is labelled iteration-cap"),
+    D("basins", "margin", "", bas_margin, 0, 10, 0, 0, 1,
+      "the tessellation extends this many box widths beyond the box on every side; a trajectory outside it for "
+      "consecutive_lost_steps periods is labelled left-box"),
+    I("basins", "consecutive_recurrences", bas_consecutive_recurrences, 1, 1000000, 100,
+      "map points in a row on cells the trajectory visited before: an attractor is found"),
+    I("basins", "consecutive_attractor_steps", bas_consecutive_attractor_steps, 1, 1000000, 2,
+      "map points in a row on one known attractor's cells: the trajectory goes there"),
+    I("basins", "consecutive_basin_steps", bas_consecutive_basin_steps, 1, 1000000, 10,
+      "map points in a row on cells whose initial states went to one attractor: the trajectory goes there "
+      "(used when the section is the whole state space)"),
+    I("basins", "consecutive_lost_steps", bas_consecutive_lost_steps, 0, 1000000, 20,
+      "map points in a row outside the tessellation: left-box"),
+    I("basins", "lyapunov_periods", bas_lyapunov_periods, 10, 10000000, 1000,
+      "mesh periods over which a non-periodic attractor's largest Lyapunov exponent is measured"),
+    D("basins", "newton_tol", "", bas_newton_tol, 1e-14, 1e-2, 0, 0, 1e-8,
+      "a periodic attractor's orbit by shooting is converged when the residual's max-norm is below this "
+      "(keep solver.rtol tighter)"),
+    I("basins", "entropy_box_cells", bas_entropy_box_cells, 1, 1000, 5,
+      "side of the boxes of the basin entropy, in cells of the picture"),
+    S("basins", "continuation", bas_continuation, "",
+      "a finished continuation's directory (relative to the working directory): its stable orbits seed the "
+      "search, its orbits are marked on the picture and its branches drawn beside the fractions"),
+    S("basins", "parameter", bas_parameter, "",
+      "the fractions over a numeric key, section.key (e.g. operating.speed_rpm); empty: at the case's values"),
+    D("basins", "from", "", bas_from, -1e30, 1e30, 0, 0, NAN, "first value of the parameter, in its key's unit"),
+    D("basins", "to", "", bas_to, -1e30, 1e30, 0, 0, NAN, "last value of the parameter, in its key's unit"),
+    I("basins", "points", bas_points, 2, 100000, 11, "values of the parameter from `from` to `to`, both included"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
     S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",
