@@ -187,6 +187,7 @@ static void expect_bad(const char *const *extra, const char *needle, const char 
     gd_case c;
     gd_error e = {0};
     PU_CHECK(gd_case_init(&c, &e), &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[64];
     int n = 0;
     for (int i = 0; ks[i]; i++)
@@ -440,6 +441,7 @@ int main(void)
         const char *t[] = {"sweep.from=1000", "sweep.to=2000", "sweep.parameter=operating.power_kw", NULL};
         gd_case bc;
         PU_CHECK(gd_case_init(&bc, &e), &e);
+        bc.speed_rpm = 4000, bc.torque_nm = 500; /* the paper's operating point: a case must give one */
         gd_status st = GD_OK;
         for (int i = 0; ks[i] && st == GD_OK; i++)
             st = gd_case_set(&bc, ks[i], i, &e);

@@ -245,6 +245,13 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
 GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len);
 GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
 GD_API const char *gd_source_name(gd_source s);
+/* The physical values a resolved case takes from the schema's defaults: the numbers of [gear],
+ * [modification], [misalignment], [clearance], [excitation], [damping] and [support] that its
+ * analysis and model use, that neither the file nor --set gives, that no other key derives and that
+ * its sweep or continuation does not vary. Writes up to cap schema indices into idx (may be NULL)
+ * and returns how many there are. (The operating point has no default: gd_case_check refuses a case
+ * whose analysis needs it and lacks it.) */
+GD_API size_t gd_case_defaulted_keys(const gd_case *c, size_t *idx, size_t cap);
 
 #ifdef __cplusplus
 }

@@ -91,8 +91,11 @@ static const gd_keyspec schema[] = {
 
 
     /* [operating] */
-    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, 4000, "pinion (input) speed n"),
-    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it; default 500, or from power_kw)"),
+    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, NAN,
+      "pinion (input) speed n; no default: a response, sweep, continuation or work-precision needs it (a sweep or "
+      "continuation of this key gives it)"),
+    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it); no default: this or power_kw is needed by "
+      "every analysis but tca (and the optimisers' test functions)"),
     D("operating", "power_kw", "kW", power_kw, 0, 1e6, 1, 0, NAN, "input power P: torque = 9550 P / n (exclusive with torque_nm)"),
 
     /* [clearance] */

@@ -35,6 +35,8 @@ int cmd_check(int argc, char **argv)
         snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "", s[i].unit);
         printf("%-58s ; %s\n", lhs, where);
     }
+    printf("\n");
+    cli_print_defaulted(stdout, &c, "# ");
     gd_geometry g;
     gd_model m;
     gd_error err = {0};

@@ -151,10 +151,12 @@ else
     ok 0 "pictures (skipped: gnuplot not installed)"
 fi
 
-# bad [sweep] input: exit 2, one message naming file:line, nothing written
+# bad [sweep] input: exit 2, one message naming file:line, nothing written; the case without its
+# [sweep] gives the speed that the sweep gave (a sweep of another key needs it)
+ks_base() { ks_case | sed '/^\[sweep\]/,$d'; printf '[operating]\nspeed_rpm = 3000\n'; }
 check_bad() { # sweep-section-lines expected-regex name
     local f="$work/bad.ini" out="$work/bad-$n"
-    ks_case | sed '/^\[sweep\]/,$d' > "$f"
+    ks_base > "$f"
     printf '[sweep]\n%s\n' "$1" >> "$f"
     "$G" run "$f" --out "$out" --quiet > "$work/stdout" 2> "$work/stderr"
     local rc=$? msg; msg=$(cat "$work/stderr")
@@ -162,7 +164,7 @@ check_bad() { # sweep-section-lines expected-regex name
     echo "$msg" | grep -Eq -- "$2"; ok $? "$3: message matches /$2/ (got: $msg)"
     [ "$(echo "$msg" | wc -l)" -eq 1 ] && [ ! -e "$out" ]; ok $? "$3: one line, nothing written"
 }
-L=$(($(ks_case | sed '/^\[sweep\]/,$d' | wc -l) + 1)) # line of [sweep]
+L=$(($(ks_base | wc -l) + 1)) # line of [sweep]
 check_bad "parameter = operating.speed_rmp
 from = 100
 to = 200" "bad.ini:$((L + 1)): sweep.parameter: 'operating.speed_rmp' is not a numeric case key: .*did you mean operating.speed_rpm" "unknown swept key"
