@@ -45,7 +45,7 @@ typedef enum gd_cont_shooting { GD_SHOOT_MULTIPLE = 0, GD_SHOOT_SINGLE = 1 } gd_
 typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1, GD_CONT_START_SWEEP = 2 } gd_cont_start;
 typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
-    GD_CONT_RESP_POINCARE = 3
+    GD_CONT_RESP_POINCARE = 3, GD_CONT_RESP_DYNAMIC_LOAD_FACTOR = 4
 } gd_cont_response;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 

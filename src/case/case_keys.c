@@ -102,23 +102,37 @@ static int key_used(const gd_case *c, const char *sec, const char *key)
     const int loaded = c->analysis == GD_ANALYSIS_LTCA || gear_lte ||
                        (dyn && (c->stiffness == GD_STIFF_LTCA || c->impact));
     const int contact = loaded || c->analysis == GD_ANALYSIS_TCA;
-    const int bodies = dyn && !(gd_case_key_given(c, "gear", "pinion_inertia_kgm2") &&
-                                gd_case_key_given(c, "gear", "gear_inertia_kgm2") &&
-                                (!bta || (gd_case_key_given(c, "gear", "pinion_mass_kg") &&
-                                          gd_case_key_given(c, "gear", "gear_mass_kg"))));
+    /* the bodies' masses and inertias derived from the blank; the mesh stiffness from ISO 6336-1; the
+     * groove shafts' stiffness from E A / L; the rectangular stiffness's high fraction from the
+     * contact ratio */
+    const int inertias = gd_case_key_given(c, "gear", "pinion_inertia_kgm2") &&
+                         gd_case_key_given(c, "gear", "gear_inertia_kgm2");
+    const int masses = gd_case_key_given(c, "gear", "pinion_mass_kg") && gd_case_key_given(c, "gear", "gear_mass_kg");
+    const int bodies = dyn && (bta ? !(inertias && masses)
+                                   : !(inertias || gd_case_key_given(c, "gear", "equivalent_mass_kg")));
+    const int iso = dyn && c->stiffness != GD_STIFF_LTCA && !gd_case_key_given(c, "excitation", "mesh_stiffness_n_per_m");
+    const int shafts = dyn && bta && !single && c->axial_coupling &&
+                       !(gd_case_key_given(c, "support", "shaft_stiffness_pinion_n_per_m") &&
+                         gd_case_key_given(c, "support", "shaft_stiffness_gear_n_per_m"));
+    const int fraction = dyn && c->stiffness == GD_STIFF_RECTANGULAR &&
+                         !gd_case_key_given(c, "excitation", "rectangular_high_fraction");
     if (strcmp(sec, "gear") == 0) {
         if (!dyn && !contact)
             return 0;
         if (strcmp(key, "helix_angle_deg") == 0)
             return !spur;
         if (strcmp(key, "groove_width_mm") == 0)
-            return !single;
+            return !single && (contact || bodies || shafts);
         if (strcmp(key, "density_kg_per_m3") == 0 || strstr(key, "diameter_") || strstr(key, "thickness_") ||
             strstr(key, "length_"))
             return bodies; /* the blank: bore, rim, web and hub */
         if (strcmp(key, "youngs_modulus_gpa") == 0 || strcmp(key, "poisson_ratio") == 0)
-            return loaded || (dyn && !gd_case_key_given(c, "excitation", "mesh_stiffness_n_per_m"));
-        return 1;
+            return loaded || iso || (shafts && key[0] == 'y');
+        if (strncmp(key, "face_width_", 11) == 0)
+            return contact || iso || bodies;
+        if (strncmp(key, "profile_shift_", 14) == 0 || strstr(key, "dendum_coefficient"))
+            return contact || iso || bodies || fraction;
+        return 1; /* module, teeth, pressure angle: the base radii and the mesh frequency */
     }
     if (strcmp(sec, "modification") == 0 || strcmp(sec, "misalignment") == 0)
         return contact;
@@ -136,7 +150,7 @@ static int key_used(const gd_case *c, const char *sec, const char *key)
         if (strcmp(key, "impact_exponent") == 0)
             return c->impact;
         if (strcmp(key, "half_phase_deg") == 0)
-            return !single && c->stiffness != GD_STIFF_LTCA;
+            return !single && c->model != GD_MODEL_TORSIONAL && c->stiffness != GD_STIFF_LTCA;
         return 0; /* the mesh stiffness (derived) and the deviations (an alternative to ste_amplitude_um) */
     }
     if (strcmp(sec, "damping") == 0)

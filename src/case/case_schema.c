@@ -280,9 +280,10 @@ static const gd_keyspec schema[] = {
       "branches at most, those from the start and those switched to; a switching beyond it is listed under notes"),
     S("continuation", "overlay_sweep", cont_overlay_sweep, "",
       "a finished sweep's directory (as output.directory: relative to the working directory) whose points are drawn over the branches"),
-    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
+    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare|dynamic_load_factor",
       "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
-      "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
+      "deflection lambda_L (um) on the orbit, lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv), "
+      "or the dynamic load factor (the largest mesh force on the orbit over the static one, of the more loaded mesh)"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
     S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",
