@@ -67,6 +67,10 @@ typedef struct gd_case {
     double profile_shift_pinion, profile_shift_gear, addendum_coefficient, dedendum_coefficient;
     double face_width_pinion_mm, face_width_gear_mm, groove_width_mm;
     double bore_diameter_pinion_mm, bore_diameter_gear_mm;
+    /* the blank of a body that is not a solid disc (docs/model.md section 9.2): a rim down to its inner
+     * diameter (0: none, a solid blank), a web of an axial thickness, a hub of a diameter and length */
+    double rim_inner_diameter_pinion_mm, rim_inner_diameter_gear_mm, web_thickness_pinion_mm, web_thickness_gear_mm;
+    double hub_diameter_pinion_mm, hub_diameter_gear_mm, hub_length_pinion_mm, hub_length_gear_mm;
     double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
     double pinion_mass_kg, gear_mass_kg, pinion_inertia_kgm2, gear_inertia_kgm2;
     double equivalent_mass_kg; /* torsional equivalent mass of one half, m_e */
