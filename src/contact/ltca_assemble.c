@@ -293,6 +293,49 @@ double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k)
     return gd_face_kernel_cells(j->lo, j->hi, k->lo, k->hi, j->z0, j->z1, j->ell, k->ell);
 }
 
+/* Edge loading at the face ends (docs/ltca.md section 5). Each block of points is one tooth pair's
+ * contact line on one half. A loaded face-end point is edge-loaded when the flanks meet first at
+ * that end: its initial gap is the least of the line's loaded points and the gaps rise from it,
+ * across the loaded part of the line, by more than GD_LTCA_EDGE_MARGIN of the line's mean elastic
+ * deflection, so that the load concentrates on the end that cuts the line off (the points on a tip
+ * edge or form circle, corner contact off the path, are left out of the gaps). The flat gaps of
+ * an aligned pair of unmodified flanks (1e-11 m) raise nothing, whatever the line load does along
+ * a helical line; a crowned lead has its least gap inside the face. edge_ratio: the largest line
+ * load of a loaded face end over its line's mean, for the reader. */
+static void ltca_face_ends(const gd_ltca *w, gd_ltca_position *out)
+{
+    for (int b = 0; b < w->nb; b++) {
+        int lo = w->bstart[b], hi = w->bstart[b + 1];
+        double load = 0, length = 0, defl = 0, gmin = INFINITY, gmax = -INFINITY;
+        int n = 0;
+        for (int i = lo; i < hi; i++) {
+            const gd_ltca_point *P = &w->pts[i];
+            if (!(P->load > 0))
+                continue;
+            load += P->load;
+            length += P->width;
+            if (P->edge & GD_EDGE_TIPS_ROOTS)
+                continue; /* a tip edge's corner contact lies off the line's path: not its gap */
+            defl += w->z[0] + (w->m > 1 ? P->normal[2] * w->z[1] : 0.0) - P->gap;
+            gmin = fmin(gmin, P->gap);
+            gmax = fmax(gmax, P->gap);
+            n++;
+        }
+        if (!(length > 0))
+            continue;
+        double mean = load * w->cb / length;
+        defl /= n;
+        for (int i = lo; i < hi; i++) {
+            const gd_ltca_point *P = &w->pts[i];
+            if (!(P->load > 0) || !(P->edge & GD_EDGE_FACE_ENDS))
+                continue;
+            out->edge_ratio[P->half] = fmax(out->edge_ratio[P->half], P->line_load / mean);
+            if (n > 0 && P->gap <= gmin + 1e-3 * defl && gmax - P->gap > GD_LTCA_EDGE_MARGIN * defl)
+                out->edge_loaded[P->half] |= P->edge & GD_EDGE_FACE_ENDS;
+        }
+    }
+}
+
 gd_status ltca_collect(gd_ltca *w, double phi1, double window, gd_error *err)
 {
     w->n = 0;
@@ -518,7 +561,7 @@ GD_API gd_status gd_ltca_solve_at(gd_ltca *w, double phi1, double torque_nm, gd_
             P->line_load = P->load * w->cb / P->width;
             ltca_hertz(w, i, P->line_load, &P->pressure, &P->hertz_half_width);
             out->max_pressure[h] = fmax(out->max_pressure[h], P->pressure);
-            out->edge_loaded[h] |= P->edge;
+            out->edge_loaded[h] |= P->edge & GD_EDGE_TIPS_ROOTS; /* corner contact off the nominal path */
             if (P->pair != lastpair[h]) {
                 out->pairs_loaded[h]++;
                 lastpair[h] = P->pair;
@@ -526,6 +569,7 @@ GD_API gd_status gd_ltca_solve_at(gd_ltca *w, double phi1, double torque_nm, gd_
         }
     }
     out->balance = fabs(total - fn) / fn;
+    ltca_face_ends(w, out);
     for (int h = 0; h < w->halves; h++) {
         out->geometric[h] = w->gstar[h];
         double nz = npts[h] ? nzsum[h] / npts[h] : 0.0;
