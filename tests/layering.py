@@ -68,7 +68,7 @@ PUBLIC = {
     'gd_contact.h': 'contact', 'gd_compliance.h': 'contact', 'gd_tca.h': 'contact',
     'gd_ltca.h': 'contact',
     'gd_excitation.h': 'excitation',
-    'gd_model.h': 'dynamics', 'gd_sim.h': 'dynamics',
+    'gd_model.h': 'dynamics', 'gd_modal.h': 'dynamics', 'gd_sim.h': 'dynamics',
     'gd_scene.h': 'scene',
     'gd_optimize.h': 'optimisation',
     'gd_analysis.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',

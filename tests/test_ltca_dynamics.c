@@ -65,7 +65,7 @@ int main(void)
     double omega1 = 2.0 * M_PI * c.speed_rpm / 60.0, F, dur;
     gd_impact_force(im->vs_per_omega * omega1, m.m_ref, im->ks, im->delta_m, 1.0, &F, &dur);
     TAP_REL(F, fabs(im->vs_per_omega * omega1) * sqrt(m.m_ref * im->ks), 1e-14, "linear law: F_s = v_s sqrt(m k_s)");
-    TAP_REL(m.mesh[0].imp_force * m.k_ref * m.bc_m, F, 1e-12, "and that force is the model's pulse (N)");
+    TAP_REL(m.mesh[0].imp_force[0] * m.k_ref * m.bc_m, F, 1e-12, "and that force is the model's pulse (N)");
     double F2, d2;
     gd_impact_force(2 * im->vs_per_omega * omega1, m.m_ref, im->ks, im->delta_m, 1.5, &F2, &d2);
     gd_impact_force(im->vs_per_omega * omega1, m.m_ref, im->ks, im->delta_m, 1.5, &F, &dur);
@@ -82,7 +82,7 @@ int main(void)
         base(&c, extra);
         if (gd_model_build(&c, &m, &e) != GD_OK)
             printf("# %s\n", e.msg);
-        double f = m.mesh[0].imp_force * m.k_ref * m.bc_m;
+        double f = m.mesh[0].imp_force[0] * m.k_ref * m.bc_m;
         if (relief)
             Frel = f;
         else

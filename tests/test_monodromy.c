@@ -12,7 +12,9 @@
  * relative to the largest entry of M. Each case also checks that the period it differentiates
  * contains the events it is meant to (drive-side separations, back-side contacts). Two more cases
  * damp the mesh in contact only, so that the vector field jumps at each event and the saltation
- * matrix differs from the identity. */
+ * matrix differs from the identity; one more has a mesh-in pulse that acts only in drive-side
+ * contact (it switches with the contact inside its phases), and one damps the bearings only while
+ * their journals touch. */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_scene.h"
@@ -80,6 +82,41 @@ static void compare(const char *name, const gd_model *m, const gd_solver_opts *o
     TAP_CLOSE(dmax / mmax, 0.0, 1e-6, label);
 }
 
+typedef struct pulse_events {
+    const gd_model *m;
+    long in, all;
+} pulse_events;
+
+static int count_event(gd_sim *s, const gd_event *ev, void *user)
+{
+    (void)s;
+    pulse_events *p = user;
+    p->all++;
+    p->in += gd_model_pulse_after(p->m, 0, ev->t) != 0; /* the pulse (gated) in its phases there */
+    return 0;
+}
+
+/* contact events of one period from y0 at which the pulse of mesh 0 is in its phases: there the
+ * gated pulse switches with the contact and the saltation matrix carries its jump */
+static long events_in_pulse(const gd_model *m, const gd_solver_opts *o, const double *y0, long *all)
+{
+    gd_error e = {0};
+    gd_modes md;
+    memset(&md, 0, sizeof md);
+    if (gd_model_consistent_modes(m, 0.0, y0, &md, &e) != GD_OK)
+        au_die(&e);
+    gd_sim *s;
+    if (gd_sim_create(m, o, y0, &md, &s, &e) != GD_OK)
+        au_die(&e);
+    pulse_events p = {m, 0, 0};
+    gd_sim_set_hooks(s, NULL, count_event, &p);
+    if (gd_sim_period(s, &e) != GD_OK)
+        au_die(&e);
+    gd_sim_free(s);
+    *all = p.all;
+    return p.in;
+}
+
 int main(void)
 {
     const char *tight[] = {"solver.rtol=1e-12", "solver.atol=1e-14", NULL};
@@ -129,6 +166,32 @@ int main(void)
     gd_solver_opts_from_case(&c, &o);
     settle(&c, &m, &o, 100, y);
     compare("bta, double-sided, damping in contact only", &m, &o, y, 1);
+    gd_case_free(&c);
+
+    /* a mesh-in impact pulse that acts only in drive-side contact: the force jumps by the pulse at
+     * each contact and separation inside its phases (half of each period here), and the saltation
+     * matrices carry that jump */
+    {
+        load(&c, &m, "cases/validation/kahraman-singh.ini", tight);
+        gd_error e = {0};
+        double F = 0.5 * m.F0[0] / m.mass[0] * m.k_ref * m.bc_m, Tm = 1.0 / m.mesh_freq_hz;
+        if (gd_model_set_impact(&m, 0, F, 2.0 * M_PI * 0.3, 0.5 * Tm, &e) != GD_OK)
+            au_die(&e);
+        m.mesh[0].imp_contact_only = 1;
+        gd_solver_opts_from_case(&c, &o);
+        settle(&c, &m, &o, 200, y);
+        long all, in = events_in_pulse(&m, &o, y, &all);
+        tap_ok(in > 0, "gated pulse: %ld of the period's %ld events fall inside the pulse's phases", in, all);
+        compare("torsional, single-sided, a pulse gated by drive-side contact", &m, &o, y, 0);
+        gd_case_free(&c);
+    }
+    /* the bearing damper in contact only: its force jumps at every bearing contact and separation */
+    const char *bearing[] = {"solver.rtol=1e-12", "solver.atol=1e-14", "damping.bearing_damping_mode=contact",
+                             "damping.support_damping_ratio=0.05", NULL};
+    load(&c, &m, "cases/accuracy/rattle-4000rpm.ini", bearing);
+    gd_solver_opts_from_case(&c, &o);
+    settle(&c, &m, &o, 100, y);
+    compare("bta, double-sided, bearing damping in contact only", &m, &o, y, 1);
     gd_case_free(&c);
     return tap_done();
 }

@@ -32,6 +32,9 @@ typedef enum gd_stiffness_kind {
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_vector_kernels { GD_VECTOR_KERNELS_GEARDYN = 0, GD_VECTOR_KERNELS_SUNDIALS = 1 } gd_vector_kernels;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
+/* [excitation] impact_form: the mesh-in pulse while the drive flanks touch, with the impulse m_n v_s;
+ * or the paper's external force, acting whatever the contact, for the rise time capped at a quarter period */
+typedef enum gd_impact_form { GD_IMPACT_CONTACT = 0, GD_IMPACT_PAPER = 1 } gd_impact_form;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
 /* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
 typedef enum gd_arrangement { GD_ARR_HERRINGBONE = 0, GD_ARR_HELICAL = 1, GD_ARR_SPUR = 2 } gd_arrangement;
@@ -59,6 +62,7 @@ typedef struct gd_case {
     int bearing_clearance;   /* physics switches: 1 on, 0 off */
     int error_excitation;
     int axial_coupling;
+    int gravity;             /* the bodies' weights on their supports (bta) */
     char title[256];
     /* [gear] geometry (ISO 21771) and bodies; masses and inertias are per helical half,
      * each including half of the relief groove */
@@ -98,15 +102,18 @@ typedef struct gd_case {
     double base_pitch_deviation_um, profile_deviation_um;
     double half_phase_deg;   /* mesh phase of the right half relative to the left */
     int impact;              /* mesh-in impact from LTCA */
+    int impact_form;         /* gd_impact_form */
     double impact_exponent;
     /* [damping] */
     double mesh_damping_ratio, support_damping_ratio, shaft_damping_ratio;
     int mesh_damping_mode;   /* gd_damping_mode */
+    int bearing_damping_mode; /* gd_damping_mode of the radial bearings with a clearance */
     /* [support] (per half, per body) */
     double radial_stiffness_pinion_n_per_m, radial_stiffness_gear_n_per_m;
     double axial_stiffness_pinion_n_per_m, axial_stiffness_gear_n_per_m;
     double shaft_stiffness_pinion_n_per_m, shaft_stiffness_gear_n_per_m; /* groove shafts, axial */
     int pinion_axial;        /* gd_pinion_axial (LTCA) */
+    double gravity_angle_deg; /* direction of the weights from +y (the transverse line of action) */
     /* [solver] */
     int method;              /* gd_method */
     int order;

@@ -4,6 +4,7 @@
 #ifndef GD_RESPONSE_H
 #define GD_RESPONSE_H
 
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_sim.h"
 
 #ifdef __cplusplus
@@ -74,6 +75,7 @@ typedef struct gd_local {
 /* The result of the response row of the table of analyses (gd_analysis.h). */
 typedef struct gd_response_outcome {
     gd_model model;          /* the model the case built */
+    gd_modal modes;          /* its modes (gd_scene_modes; modes.failed says why there are none) */
     gd_response_result res;
     gd_local local;          /* [output] response_variable: samples, Poincare points, spectrum */
 } gd_response_outcome;

@@ -156,6 +156,7 @@ GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_poin
 typedef struct gd_sweep_outcome {
     gd_sweep_plan plan;
     gd_sweep_point *pts;
+    gd_modal modes;          /* the modes of the case's model at its own values (modes.failed: why none) */
 } gd_sweep_outcome;
 
 #ifdef __cplusplus

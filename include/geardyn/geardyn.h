@@ -8,6 +8,7 @@
 #include "geardyn/gd_pair.h"
 #include "geardyn/gd_geometry.h"
 #include "geardyn/gd_model.h"
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_analysis.h"
 #include "geardyn/gd_sim.h"

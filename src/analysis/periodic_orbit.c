@@ -110,7 +110,7 @@ GD_API gd_status gd_model_at_mesh_frequency(double Omega, gd_model *m, void *ctx
     if (!(Omega > 0) || !isfinite(Omega))
         return gd_error_set(err, GD_ERR_INPUT, "mesh frequency Omega = %g (valid: above 0)", Omega);
     for (int j = 0; j < base->nmesh; j++)
-        if (base->mesh[j].imp_width > 0)
+        if (base->mesh[j].nimp > 0)
             return gd_error_set(err, GD_ERR_INPUT,
                                 "the mesh-in impact of mesh %d lasts a fixed time, so its phase width depends on the "
                                 "speed: a model of another mesh frequency must be built from the case", j);

@@ -73,7 +73,7 @@ static void mesh_quantities(const gd_model *m, double t, double s0, double c0, c
     double f = mode > 0 ? cl->k * kf * (*lam - cl->h) : mode < 0 ? cl->k * kf * (*lam + cl->h) : 0.0;
     if (!cl->damp_contact_only || mode != 0)
         f += cl->c * *lamd;
-    *force = f + gd_model_pulse_force(m, j, t, md);
+    *force = f + gd_model_pulse_force(m, j, t, md, mode);
 }
 
 static int on_step(gd_sim *s, double t0, double t1, void *user)

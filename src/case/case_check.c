@@ -193,6 +193,19 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_harmonics: amplitudes sum to %g, the "
                             "stiffness could become negative (valid: sum below 1)", w, asum);
     }
+    if (c->gravity && c->model != GD_MODEL_BTA) {
+        gd_case_key_where(c, "scene", "gravity", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: scene.gravity: on with scene.model = %s (valid: gravity = on only "
+                            "with model = bta; the torsional models have no translation for the weights to move)", w,
+                            c->model == GD_MODEL_TORSIONAL ? "torsional" : "torsional-lr");
+    }
+    if (c->impact && c->stiffness != GD_STIFF_LTCA) {
+        static const char *const kind[] = {"constant", "harmonic", "rectangular"};
+        gd_case_key_where(c, "excitation", "impact", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.impact: on with excitation.stiffness = %s (valid: "
+                            "impact = on only with stiffness = ltca; the pulse sits at LTCA's mesh-in phase of LTCA's "
+                            "mesh cycle, which a %s stiffness does not have)", w, kind[c->stiffness], kind[c->stiffness]);
+    }
     if (gd_case_key_given(c, "solver", "order") && c->method == GD_METHOD_DIRK && c->order > 5) {
         gd_case_key_where(c, "solver", "order", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: solver.order: %d for dirk (valid: 2 to 5)", w, c->order);

@@ -158,7 +158,8 @@ static int key_used(const gd_case *c, const char *sec, const char *key)
                (bta && !single && c->axial_coupling && strcmp(key, "shaft_damping_ratio") == 0);
     if (strcmp(sec, "support") == 0)
         return bta && (strncmp(key, "radial_", 7) == 0 ||
-                       (strncmp(key, "axial_", 6) == 0 && c->axial_coupling && !spur));
+                       (strncmp(key, "axial_", 6) == 0 && c->axial_coupling && !spur) ||
+                       (strcmp(key, "gravity_angle_deg") == 0 && c->gravity));
     return 0;
 }
 

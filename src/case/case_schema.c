@@ -28,6 +28,8 @@ static const gd_keyspec schema[] = {
     B("scene", "bearing_clearance", bearing_clearance, 1, "radial bearing clearance (dead zone) in the supports"),
     B("scene", "error_excitation", error_excitation, 1, "static transmission error excitation e(t)"),
     B("scene", "axial_coupling", axial_coupling, 1, "axial mesh force component and axial DOFs (bta)"),
+    B("scene", "gravity", gravity, 0,
+      "the weights of the bodies on their radial supports (bta; the direction is support.gravity_angle_deg)"),
     S("scene", "title", title, "", "free text shown in outputs"),
 
     /* [gear] */
@@ -122,9 +124,13 @@ static const gd_keyspec schema[] = {
     /* [excitation] */
     E("excitation", "stiffness", stiffness, 1, "constant|harmonic|rectangular|ltca",
       "mesh stiffness k(t) of each half (ltca: from loaded tooth contact analysis, docs/ltca.md)"),
-    B("excitation", "impact", impact, 0, "mesh-in impact force from LTCA, once per mesh period per half (paper section 5.2)"),
+    B("excitation", "impact", impact, 0,
+      "mesh-in impact force from LTCA, once per mesh period per half (paper section 5.2; needs stiffness = ltca)"),
+    E("excitation", "impact_form", impact_form, 0, "contact|paper",
+      "contact: the pulse acts while the drive flanks touch, peak F_s and impulse m_n v_s; paper: an external force "
+      "whatever the contact, F_s for the contact's rise time, at most a quarter mesh period (docs/model.md 8.4)"),
     D("excitation", "impact_exponent", "", impact_exponent, 1, 3, 0, 0, 1,
-      "exponent n of the impact contact law F = c delta^n (1: linear, F_s = v_s sqrt(m_e k_s))"),
+      "exponent n of the impact contact law F = c delta^n (1: linear, F_s = v_s sqrt(m_n k_s))"),
     D("excitation", "mesh_stiffness_n_per_m", "N/m", mesh_stiffness_n_per_m, 0, 1e12, 1, 0, NAN,
       "mean mesh stiffness per mesh: one half, or a single pair (derived: ISO 6336-1 c_gamma_alpha times face width)"),
     L("excitation", "stiffness_harmonics", "", stiffness_harmonics, n_stiffness_harmonics, 0, 0.95,
@@ -150,6 +156,9 @@ static const gd_keyspec schema[] = {
     E("damping", "mesh_damping_mode", mesh_damping_mode, 0, "always|contact",
       "mesh damping acts always (Kahraman & Singh) or only while the teeth are in contact"),
     D("damping", "support_damping_ratio", "", support_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of every bearing support"),
+    E("damping", "bearing_damping_mode", bearing_damping_mode, 0, "always|contact",
+      "radial bearing damper on the journal's velocity always, or only while the journal touches its clearance's "
+      "boundary (scene.bearing_clearance = on)"),
     D("damping", "shaft_damping_ratio", "", shaft_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of the groove shafts (axial)"),
 
     /* [support] */
@@ -163,6 +172,9 @@ static const gd_keyspec schema[] = {
       "axial stiffness of the gear groove shaft (derived likewise)"),
     E("support", "pinion_axial", pinion_axial, 0, "floating|fixed",
       "LTCA: herringbone pinion axially floating (the halves carry equal axial forces) or axially fixed"),
+    D("support", "gravity_angle_deg", "deg", gravity_angle_deg, -360, 360, 0, 0, 0,
+      "scene.gravity: angle in the transverse plane between +y (the line of action, the way the pinion pushes the "
+      "gear) and the weights' direction; only their component along y, times cos of it, acts"),
 
     /* [solver] */
     E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),

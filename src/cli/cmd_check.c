@@ -75,6 +75,7 @@ int cmd_check(int argc, char **argv)
         }
         if (c.stiffness == GD_STIFF_LTCA)
             printf("# with stiffness = ltca the mesh stiffness above is ISO 6336-1's; run replaces it by LTCA's mean\n");
+        cli_check_modes(&c, &m);
     }
     const gd_run_cost *k = &a.cost;
     printf("\n# estimated cost of the run (check runs no LTCA and no integration)\n");

@@ -31,7 +31,10 @@ static const cli_help commands[] = {
      "'file line N' (written in CASE), '--set #N' (the Nth --set), 'default' (the schema's "
      "default) or 'derived' (computed from other keys, such as the masses from the geometry). "
      "Then the derived geometry (ISO 21771: radii, contact ratios, centre distance) and the model "
-     "scales (natural and mesh frequency, static mesh force and deflection). Nothing is written.",
+     "scales (natural and mesh frequency, static mesh force and deflection), then the modes of the "
+     "model linearised at its static operating point: natural frequencies, the pinion speeds of their "
+     "main and superharmonic (1/2, 1/3, 1/4) resonances, the share of each mesh and support in each "
+     "mode's strain energy. Nothing is written.",
      {{"--set section.key=value", "override one key of the case (repeatable)"}}},
     {"events", "FILE [--from S] [--to S] [--clearance NAME] [--kind KIND] [--recorded] [--csv OUT]",
      "summarise, filter and export an event log (events.csv of a response run)",

@@ -36,6 +36,8 @@ GD_API void gd_ltca_result_free(gd_ltca_result *r)
 
 /* ---- mesh-in impact (section 7) --------------------------------------------------------------- */
 
+#define TOUCH_TIE 1e-12 /* m: gaps closer than this touch together */
+
 typedef struct entry_eval {
     double s;          /* the pair's least rigid gap w_i - (G z)_i (m): > 0 open, < 0 it carries load */
     int imin;          /* the point where it is least (-1: the pair has no point in the window) */
@@ -64,6 +66,27 @@ static gd_status eval_entry(gd_ltca *w, double phi1, double torque, int half, in
         }
     }
     e->s = e->imin >= 0 ? smin : w->window; /* outside the window: clearly open */
+    if (e->imin < 0)
+        return GD_OK;
+    /* A line that touches along a stretch of the face at once (an aligned spur pair: every slice
+     * within a picometre, rounding) has no first point: the middle of the stretch stands for it,
+     * not its first slice, which sits on a face end and would read as a corner. */
+    int first = -1, last = -1;
+    for (int i = 0; i < w->n; i++) {
+        const gd_ltca_point *P = &w->pts[i];
+        if (P->half != half || P->pair != pair)
+            continue;
+        double gz = w->z[0] + (w->m > 1 ? P->normal[2] * w->z[1] : 0.0);
+        if (w->w[i] - gz <= smin + TOUCH_TIE) {
+            if (first < 0)
+                first = i;
+            last = i;
+        } else if (first >= 0) {
+            break; /* the stretch is contiguous; a second one elsewhere is not a tie of this one */
+        }
+    }
+    if (first >= 0 && e->imin >= first && e->imin <= last)
+        e->imin = first + (last - first) / 2;
     return GD_OK;
 }
 

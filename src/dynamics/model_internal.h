@@ -67,22 +67,32 @@ static inline __attribute__((always_inline)) void mesh_eval_sc(const gd_model *m
         *edd = -x->e_r * m->Omega * m->Omega * se;
 }
 
+/* The pulses of x in their phases at mesh phase th (bit k: pulse k) */
 static inline int pulse_at(const gd_mesh_excitation *x, double th)
 {
-    if (!(x->imp_width > 0))
-        return 0;
-    double f = (th - x->imp_phase) / (2.0 * M_PI);
-    f -= floor(f);
-    return f * 2.0 * M_PI < x->imp_width;
+    int on = 0;
+    for (int k = 0; k < x->nimp; k++) {
+        double f = (th - x->imp_phase[k]) / (2.0 * M_PI);
+        f -= floor(f);
+        on |= (f * 2.0 * M_PI < x->imp_width[k]) << k;
+    }
+    return on;
 }
 
-static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+/* The force of the pulses of mesh j at t with the mesh's clearance in mode `mode`: a pulse acts in its
+ * phases (held in md, or from t when the modes follow the state) and, when it is gated by contact,
+ * only while the drive flanks touch (mode +1). */
+static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md, int mode)
 {
     const gd_mesh_excitation *x = &m->mesh[j];
-    if (!(x->imp_width > 0))
+    if (x->nimp == 0 || (x->imp_contact_only && mode <= 0))
         return 0.0;
     int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
-    return on ? x->imp_force : 0.0;
+    double f = 0.0;
+    for (int k = 0; k < x->nimp; k++)
+        if (on >> k & 1)
+            f += x->imp_force[k];
+    return f;
 }
 
 

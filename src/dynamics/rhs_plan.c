@@ -84,7 +84,11 @@ void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, co
                 pm->u[cl->widx[q]] += cl->wval[q] * m->inv_mass[cl->widx[q]];
             }
             pm->ks = ks, pm->hs = hs, pm->cs = cs;
-            pm->imp_force = m->mesh[cl->mesh].imp_width > 0 ? m->mesh[cl->mesh].imp_force : 0.0;
+            /* the pulses, unless they act only in drive-side contact and the mode is another */
+            const gd_mesh_excitation *x = &m->mesh[cl->mesh];
+            pm->nimp = x->imp_contact_only && mode <= 0 ? 0 : x->nimp;
+            for (int k = 0; k < pm->nimp; k++)
+                pm->imp_force[k] = x->imp_force[k];
             continue;
         }
         /* a bearing: the force k (x - hs) + c xdot along w is linear in the state */
@@ -195,8 +199,13 @@ static inline __attribute__((always_inline)) void eval(const gd_rhs_plan *p, con
             double e, ed;
             excitation(q, m, pm->j, md, s0, c0, pm->ks != 0.0 ? &kf : NULL, &e, &ed);
             f = pm->ks * kf * (x - e - pm->hs) + pm->cs * (xd - ed);
-            if (pm->imp_force != 0.0 && md->pulse_on[pm->j]) /* pulse_force with the modes held */
-                f += pm->imp_force;
+            if (pm->nimp > 0 && md->pulse_on[pm->j]) { /* pulse_force with the modes held */
+                int on = md->pulse_on[pm->j];
+                if (on & 1)
+                    f += pm->imp_force[0];
+                if (pm->nimp > 1 && (on & 2))
+                    f += pm->imp_force[1];
+            }
         }
         v4 fv = {f, f, f, f};
 #pragma GCC unroll 4

@@ -41,7 +41,8 @@ typedef struct gd_plan_mesh {
     double w[GD_PLAN_W];      /* weights of its coordinate x = w . q - e(t) over the degrees of freedom */
     double u[GD_PLAN_W];      /* w / mass: how its force moves the accelerations */
     double ks, hs, cs;        /* stiffness (0 when open), held half gap with the side's sign, damping */
-    double imp_force;         /* the mesh-in impact pulse's force while it acts (0: no pulse) */
+    int nimp;                 /* pulses that can act in the held mode (0: none, or gated off by the mode) */
+    double imp_force[GD_MAX_PULSE]; /* each mesh-in impact pulse's force while it is in its phases */
 } gd_plan_mesh;
 
 typedef struct gd_rhs_plan gd_rhs_plan;

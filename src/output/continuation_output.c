@@ -158,9 +158,11 @@ static json_t *branch_json(const gd_contin_result *res, int b)
     return o;
 }
 
-gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_contin_result *res, gd_error *err)
+gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_contin_result *res,
+                                  gd_error *err)
 {
     json_t *root = gd_json_root(c, "continuation", "scene", "model");
+    json_object_set_new(root, "derived", json_pack("{s:o}", "modal", gd_modal_json(c, modes)));
     json_t *r = json_object();
     json_object_set_new(r, "parameter", json_string(res->parameter));
     json_object_set_new(r, "unit", json_string(res->unit));

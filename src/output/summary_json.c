@@ -18,20 +18,27 @@ static json_t *lr(double l, double r)
     return o;
 }
 
-/* derived.model.impact: the mesh-in impact pulse of each mesh (excitation.impact = on, from LTCA). */
+/* derived.model.impact: the mesh-in impact pulses (excitation.impact = on, from LTCA), each as the
+ * model's mesh receives it: one per mesh, and both halves' on the one mesh of a herringbone's torsional
+ * model. */
 static json_t *impact_json(const gd_model *m)
 {
     json_t *imp = json_object();
-    static const char *const mesh_name[] = {"left", "right"};
+    static const char *const half_name[] = {"left", "right"};
+    int herringbone = m->nmesh == 2 || m->force_share != 1.0;
     for (int j = 0; j < m->nmesh && j < 2; j++) {
         const gd_mesh_excitation *x = &m->mesh[j];
-        json_t *o = json_object();
-        double fn = x->imp_force * m->k_ref * m->bc_m / (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
-        json_object_set_new(o, "force_n", gd_json_num(fn));
-        json_object_set_new(o, "duration_s", gd_json_num(x->imp_width / (m->omega_n * m->Omega)));
-        json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase / (2.0 * M_PI)));
-        json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
-        json_object_set_new(imp, m->nmesh == 1 ? "mesh" : mesh_name[j], o);
+        for (int k = 0; k < x->nimp; k++) {
+            json_t *o = json_object();
+            double fn = x->imp_force[k] * m->k_ref * m->bc_m, dur = x->imp_width[k] / (m->omega_n * m->Omega);
+            json_object_set_new(o, "force_n", gd_json_num(fn));
+            json_object_set_new(o, "duration_s", gd_json_num(dur));
+            json_object_set_new(o, "impulse_n_s", gd_json_num(fn * dur));
+            json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase[k] / (2.0 * M_PI)));
+            json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
+            json_object_set_new(o, "acts", json_string(x->imp_contact_only ? "in drive-side contact" : "always"));
+            json_object_set_new(imp, herringbone ? half_name[x->imp_half[k]] : "mesh", o);
+        }
     }
     return imp;
 }
@@ -145,11 +152,12 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     return res;
 }
 
-gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, gd_error *err)
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_modal *modes,
+                                    const gd_response_result *r, gd_error *err)
 {
     json_t *root = gd_json_root(c, "response", "scene", "model");
     json_object_set_new(root, "derived", response_derived_json(c, m));
+    json_object_set_new(json_object_get(root, "derived"), "modal", gd_modal_json(c, modes));
     json_object_set_new(root, "solver", response_solver_json(c, m, r));
     json_object_set_new(root, "results", response_results_json(c, m, r));
     return gd_json_write_summary(d, root, err);

@@ -4,6 +4,9 @@
 #define GD_RUN_ROWS_H
 
 #include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
+
+#include <stdio.h>
 
 #define GD_ROW_DECLARE(NAME)                                                                                     \
     gd_status gd_row_##NAME##_run(const gd_case *c, const gd_run_env *env, gd_run_dir *out, void **result,       \
@@ -28,6 +31,28 @@ gd_status gd_row_continuation_check(gd_case *c, gd_error *err);
 static inline gd_stop_hook gd_row_stop(const gd_run_env *env)
 {
     return env ? (gd_stop_hook){env->should_stop, env->user} : (gd_stop_hook){NULL, NULL};
+}
+
+/* The modes of the model m of the resolved case c for summary.json (gd_scene_modes): a modal
+ * analysis that fails does not fail the run, its message goes into out->failed. */
+static inline void gd_row_modes(const gd_case *c, const gd_model *m, gd_modal *out)
+{
+    gd_error e = {0};
+    if (gd_scene_modes(c, m, out, &e) != GD_OK)
+        snprintf(out->failed, sizeof out->failed, "%s", e.msg[0] ? e.msg : "modal analysis failed");
+}
+
+/* The same for the model the case builds (with its LTCA excitation, from the cache resolving the
+ * case filled). */
+static inline void gd_row_case_modes(const gd_case *c, gd_modal *out)
+{
+    gd_error e = {0};
+    gd_model m;
+    if (gd_model_build(c, &m, &e) != GD_OK) {
+        snprintf(out->failed, sizeof out->failed, "%s", e.msg[0] ? e.msg : "the model did not build");
+        return;
+    }
+    gd_row_modes(c, &m, out);
 }
 
 #endif
