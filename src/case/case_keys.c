@@ -123,9 +123,11 @@ static int key_used(const gd_case *c, const char *sec, const char *key)
             return !spur;
         if (strcmp(key, "groove_width_mm") == 0)
             return !single && (contact || bodies || shafts);
+        if (strncmp(key, "bore_diameter_", 14) == 0)
+            return bodies || loaded; /* the blank, and LTCA's tooth foundation clamped at the bore */
         if (strcmp(key, "density_kg_per_m3") == 0 || strstr(key, "diameter_") || strstr(key, "thickness_") ||
             strstr(key, "length_"))
-            return bodies; /* the blank: bore, rim, web and hub */
+            return bodies; /* the blank: rim, web and hub */
         if (strcmp(key, "youngs_modulus_gpa") == 0 || strcmp(key, "poisson_ratio") == 0)
             return loaded || iso || (shafts && key[0] == 'y');
         if (strncmp(key, "face_width_", 11) == 0)
