@@ -186,8 +186,9 @@ GD_API size_t gd_case_defaulted_keys(const gd_case *c, size_t *idx, size_t cap)
         int phys = 0;
         for (size_t j = 0; j < sizeof physical / sizeof physical[0]; j++)
             phys |= strcmp(k->section, physical[j]) == 0;
+        int absent;
         if (!phys || c->src[i] != GD_SRC_DEFAULT || !key_used(c, k->section, k->key) ||
-            key_varied(c, k->section, k->key))
+            key_varied(c, k->section, k->key) || gd_case_key_unused(c, i, &absent))
             continue;
         if (k->type == GD_KEY_DOUBLE) {
             if (!isfinite(*(const double *)((const char *)c + k->offset)))

@@ -28,7 +28,8 @@ static double dynamic_points(const gd_case *c)
  * on each half. */
 static double ltca_unknowns(const gd_case *c)
 {
-    if (!(c->stiffness == GD_STIFF_LTCA || c->impact || c->analysis == GD_ANALYSIS_LTCA))
+    if (!(c->stiffness == GD_STIFF_LTCA || c->impact || c->analysis == GD_ANALYSIS_LTCA ||
+          (c->ste_source == GD_STE_LTCA && c->error_excitation)))
         return 0;
     gd_geometry g;
     gd_error e = {0};
