@@ -56,11 +56,11 @@ typedef struct gd_ltca_position {
     double stiffness[2];     /* mesh stiffness of each half, Eq. 14: load / (approach - geometric) (N/m; 0 unloaded) */
     int pairs_loaded[2];     /* tooth pairs carrying load */
     double max_pressure[2];  /* Pa */
-    /* edge loading (docs/ltca.md section 5): the face-end bits of a loaded end where the flanks meet
-     * first (its gap the least of its contact line's loaded points, the others higher by more than
-     * GD_LTCA_EDGE_MARGIN of the line's deflection: the load concentrates on the end), and the tip
-     * and root bits of loaded points on a tip edge or the form circle (contact off the nominal path:
-     * corner contact); edge_ratio: the largest line load of a loaded face end over its contact line's
+    /* edge loading (docs/ltca.md section 4): the face-end bits of a loaded end where the flanks meet
+     * first (its gap, the profile relief aside, the least of its contact line's loaded points, the
+     * others higher by more than GD_LTCA_EDGE_MARGIN of the line's deflection: the load concentrates
+     * on the end), and the tip and root bits of loaded points on a tip edge or the form circle off the
+     * nominal path (corner contact, GD_LTCA_CORNER_GAP); edge_ratio: the largest line load of a loaded face end over its contact line's
      * mean (0 when no end is loaded) */
     unsigned edge_loaded[2];
     double edge_ratio[2];
@@ -77,6 +77,9 @@ typedef struct gd_ltca gd_ltca;
  * more than this fraction of the line's mean elastic deflection (an aligned pair of unmodified flanks:
  * 1e-6 of it). */
 #define GD_LTCA_EDGE_MARGIN 0.10
+/* A loaded point on a tip edge or form circle is a corner contact, off the nominal path of contact,
+ * when its initial gap above the half's first contact, the profile relief aside, exceeds this (m). */
+#define GD_LTCA_CORNER_GAP 1e-9
 /* The gd_edge_kind bits of the face ends, and of the tips and form circles. */
 #define GD_EDGE_FACE_ENDS 0xCCu
 #define GD_EDGE_TIPS_ROOTS 0x33u
