@@ -38,7 +38,7 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err);
 GD_API void gd_job_stop(gd_job *j);
 /* The run's progress so far: *done of *total units (total 0: not known), and the unit ("mesh
  * periods", "points", "runs", "branches", "problems", or a work-precision phase: "reference",
- * "check", "grid", "order"; "" before any). Any thread. */
+ * "check", "grid", "order", "transient"; "" before any). Any thread. */
 GD_API const char *gd_job_progress(const gd_job *j, long *done, long *total);
 /* After a successful gd_job_run: the bytes of the run's file name (as summary.json lists it;
  * "optimum/summary.json" for a file of a sub-directory), *len its length; NULL when the run has

@@ -45,7 +45,7 @@ def _format_value(value, ktype):
     if isinstance(value, bool):
         return 'on' if value else 'off'
     if isinstance(value, float):
-        return repr(value)
+        return repr(float(value))  # the shortest text that reads back to the same double
     if isinstance(value, (list, tuple)) or (ktype == 'list of numbers' and hasattr(value, '__iter__')
                                             and not isinstance(value, str)):
         return ', '.join(repr(float(v)) for v in value)
@@ -71,7 +71,7 @@ class Case:
 
     def __del__(self):
         ptr, self._ptr = getattr(self, '_ptr', None), None
-        if ptr:
+        if ptr and _lib_ is not None:
             _lib_.gd_case_delete(ptr)
 
     @classmethod

@@ -1,6 +1,7 @@
 """Running an analysis: gd_job (include/geardyn/gd_job.h) in a thread of its own, the calling
 thread waiting in Python, where Ctrl-C (KeyboardInterrupt) and the progress callback are seen and
 turned into gd_job_stop, the library's stop hook of the run."""
+import json
 import os
 import signal
 import threading
@@ -81,7 +82,6 @@ class _Job:
             if s is None:
                 return
             out[prefix + 'summary.json'] = s
-            import json
             for name in json.loads(s.decode('utf-8')).get('files', []):
                 if name.endswith('/'):
                     walk(prefix + name)
