@@ -50,6 +50,14 @@ def parse_table(data):
     return out
 
 
+PICTURES = ('.png', '.svg', '.pdf', '.eps')
+
+
+def is_picture(name):
+    """A picture the command line drew (gnuplot): listed, not read."""
+    return name.lower().endswith(PICTURES)
+
+
 def _same_table(a, b, ignore=()):
     if a.dtype.names != b.dtype.names or a.shape != b.shape:
         return False
@@ -70,7 +78,8 @@ class Result:
     CSV file (name without .csv: 'time_history', 'sweep', 'branch', ...); json: the other JSON files;
     subruns: {name: Result} of the run's sub-directories (optimize: 'optimum', 'optimum-tca');
     files: the files summary.json lists, in its order; pictures: those that are pictures (drawn by
-    the command line; a run from Python draws none); raw: {name: bytes} of every file read;
+    the command line; a run from Python draws none; not read); other: files of any other kind;
+    raw: {name: bytes} of every file read (all but the pictures);
     directory: where it was read from or written to (None for a run in memory). result[name] is a
     table ('time_history' or 'time_history.csv'), a sub-run's table ('optimum/lte') or a sub-run."""
 
@@ -84,7 +93,7 @@ class Result:
                         (directory or 'the run')) from None
         self.analysis = self.summary.get('analysis')
         self.files = list(self.summary.get('files', []))
-        self.tables, self.json, self.subruns, self.pictures = {}, {}, {}, []
+        self.tables, self.json, self.subruns, self.pictures, self.other = {}, {}, {}, [], []
         for name in self.files:
             if name.endswith('/'):
                 sub = name[:-1]
@@ -95,8 +104,10 @@ class Result:
                 self.tables[name[:-4]] = parse_table(files[name])
             elif name.endswith('.json') and name != 'summary.json':
                 self.json[name] = json.loads(files[name].decode('utf-8'))
-            elif name != 'summary.json':
+            elif is_picture(name):
                 self.pictures.append(name)
+            elif name != 'summary.json':
+                self.other.append(name)   # a file of another kind: its bytes are in raw
 
     def __getitem__(self, name):
         if '/' in name:
@@ -128,6 +139,7 @@ class Result:
             return o
         return (isinstance(other, Result) and strip(self.summary) == strip(other.summary)
                 and self.json == other.json and self.pictures == other.pictures
+                and self.other == other.other and all(self.raw.get(n) == other.raw.get(n) for n in self.other)
                 and set(self.tables) == set(other.tables)
                 and all(_same_table(self.tables[k], other.tables[k], ignore) for k in self.tables)
                 and set(self.subruns) == set(other.subruns)
@@ -158,7 +170,7 @@ def _read_files(fd, prefix, out):
                 _read_files(sub, prefix + name, out)
             finally:
                 os.close(sub)
-        elif name != 'summary.json' and name.endswith(('.csv', '.json')):
+        elif name != 'summary.json' and not is_picture(name):
             out[prefix + name] = rd(name)
 
 
