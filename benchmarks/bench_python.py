@@ -8,8 +8,12 @@
   threads   two responses (cases/guide/herringbone.ini at 3000 and 3500 rpm, 1 OpenMP thread each)
             one after the other, then in two Python threads at once: wall and CPU times, the speed-up
             and the CPU seconds the process used per wall second (above 1: both runs computed at once)
+  overhead  the cost of a run from Python against the command line's: N short responses
+            (cases/validation/kahraman-singh.ini, 10 + 5 mesh periods, pictures off), each as
+            `geardyn run --out DIR` in a process of its own, as geardyn.run(case) in memory and as
+            geardyn.run(case, out=DIR): the median wall time of each
 
-  PYTHONPATH=build/python GEARDYN_SOURCE=. python3 benchmarks/bench_python.py [memory] [stop N] [threads N]
+  PYTHONPATH=build/python GEARDYN_SOURCE=. python3 benchmarks/bench_python.py [memory] [stop N] [threads N] [overhead N]
   meson test -C build --benchmark -v python"""
 import os
 import signal
@@ -102,8 +106,36 @@ def two_threads(trials):
               (seq, seq_cpu, par, par_cpu, par_cpu / par, seq / par, os.cpu_count(), load_average()))
 
 
+def overhead(trials):
+    import subprocess
+    import tempfile
+    exe = os.environ.get('GEARDYN', os.path.join(SRC, 'build', 'src', 'cli', 'geardyn'))
+    rel = 'cases/validation/kahraman-singh.ini'
+    sets = [('run.transient_periods', 10), ('run.record_periods', 5), ('output.plots', 'off')]
+    c = load(rel, sets)
+    cmd = [exe, 'run', os.path.join(SRC, rel), '--quiet', '--threads', '1']
+    for k, v in sets:
+        cmd += ['--set', '%s=%s' % (k, v)]
+    t_cli, t_mem, t_dir = [], [], []
+    with tempfile.TemporaryDirectory() as tmp:
+        for i in range(trials):
+            t0 = time.monotonic()
+            subprocess.run(cmd + ['--out', os.path.join(tmp, 'cli')], check=True)
+            t_cli.append(time.monotonic() - t0)
+            t0 = time.monotonic()
+            geardyn.run(c, threads=1)
+            t_mem.append(time.monotonic() - t0)
+            t0 = time.monotonic()
+            geardyn.run(c, out=os.path.join(tmp, 'py'), threads=1)
+            t_dir.append(time.monotonic() - t0)
+    med = statistics.median
+    print('overhead: a short response (%d trials, median): geardyn run --out %.1f ms, geardyn.run in memory %.1f ms, '
+          'geardyn.run(out=) %.1f ms; load %.1f' % (trials, 1e3 * med(t_cli), 1e3 * med(t_mem), 1e3 * med(t_dir),
+                                                    load_average()))
+
+
 def main(argv):
-    what = argv or ['memory', 'stop', '10', 'threads', '3']
+    what = argv or ['memory', 'stop', '10', 'threads', '3', 'overhead', '20']
     i = 0
     while i < len(what):
         w = what[i]
@@ -114,8 +146,10 @@ def main(argv):
             stop(n or 10)
         elif w == 'threads':
             two_threads(n or 3)
+        elif w == 'overhead':
+            overhead(n or 20)
         else:
-            raise SystemExit('bench_python.py: unknown %r (memory, stop N, threads N)' % w)
+            raise SystemExit('bench_python.py: unknown %r (memory, stop N, threads N, overhead N)' % w)
         i += 2 if n is not None else 1
 
 
