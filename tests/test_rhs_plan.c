@@ -3,7 +3,8 @@
  * (gd_model_rhs, gd_model_tangent): the same function written twice in different orders of the
  * floating-point operations, so they must agree to rounding, in every combination of contact
  * modes, with the mesh-in impact pulse on and off, with damping that acts always or only in
- * contact, with harmonic, tabulated, rectangular and constant stiffness, for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
+ * contact, with harmonic, tabulated, rectangular and constant stiffness, with a tabulated error
+ * (excitation.ste = ltca), for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
  * sizes compiled with a constant) and for a hand-built five-degree-of-freedom model (the
  * general size). A wrong sign or a missing term (a bearing contact's offset, the mesh damping of
  * an open mesh, the pulse, the mass scaling) shows as a difference of the order of the term,
@@ -199,6 +200,20 @@ int main(void)
         }
     }
     check_model("bta, tabulated stiffness of 24 harmonics", &m, r);
+    /* and a tabulated error (excitation.ste = ltca) of 16 harmonics on each half, the right half
+     * shifted in phase */
+    {
+        gd_error e = {0};
+        double samp[32];
+        m.mesh[1].phase = 0.7, m.mesh[1].cph = cos(0.7), m.mesh[1].sph = sin(0.7);
+        for (int j = 0; j < m.nmesh; j++) {
+            for (int i = 0; i < 32; i++)
+                samp[i] = 1e-6 * (0.4 * sin(2 * M_PI * i / 32.0 + j) + 0.1 * rnd(r, 1.0));
+            if (gd_model_set_error_table(&m, j, samp, 32, &e) != GD_OK)
+                tap_ok(0, "gd_model_set_error_table: %s", e.msg);
+        }
+        check_model("bta, tabulated stiffness and tabulated error, phase-shifted right half", &m, r);
+    }
 
     const char *cst[] = {"scene.model=bta", "excitation.stiffness=constant", NULL};
     gd_case_free(&c);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """A response from Python and its four panels drawn from the arrays: the time history, the phase
 portrait and the Poincare section of the response variable, and its spectrum, as geardyn run's
-response.png shows them (docs/python.md, docs/guide.md section 12).
+response.png shows them (docs/python.md, docs/guide.md section 13).
 
     PYTHONPATH=build/python python3 examples/python/response.py [CASE] [PICTURE]
 

@@ -43,8 +43,9 @@ typedef struct gd_clearance {
 } gd_clearance;
 
 /* Mesh excitation of one half: stiffness shape s(phase) = mean + sum a_h cos(h phase + phi_h)
- * (harmonic and tabulated stiffness) or a rectangular wave, the error e, and the mesh-in impact
- * pulse. */
+ * (harmonic and tabulated stiffness) or a rectangular wave, the error e(phase) = e_m + e_r
+ * sin(phase + e_phi) + sum ea_h cos(h phase + ephi_h) (the sinusoid, or a tabulated error from
+ * LTCA), and the mesh-in impact pulse. */
 typedef struct gd_mesh_excitation {
     int kind;                /* gd_stiffness_kind */
     int nh;
@@ -54,6 +55,8 @@ typedef struct gd_mesh_excitation {
     double phase;            /* half phase offset (rad of the mesh cycle) */
     double cph, sph;         /* its cosine and sine (precomputed: one sincos per time serves both meshes) */
     double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
+    int ne;                  /* harmonics of a tabulated error (0: none) */
+    double ea[GD_MESH_HARMONICS], ephi[GD_MESH_HARMONICS], cephi[GD_MESH_HARMONICS], sephi[GD_MESH_HARMONICS];
     /* precomputed: cos and sin of phi[h] and of e_phi (one sincos per evaluation) */
     double cphi[GD_MESH_HARMONICS], sphi[GD_MESH_HARMONICS], ce, se;
     /* mesh-in impacts (paper section 5.2): nimp force pulses, pulse k of height imp_force[k]
@@ -173,6 +176,11 @@ GD_API int gd_model_pulse_after(const gd_model *m, int j, double t);
  * from mesh phase 0, turned into its trigonometric interpolant (GSL real FFT; n even, at most
  * 2 GD_MESH_HARMONICS): a smooth periodic function through every sample. */
 GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *k_n_per_m, int n, gd_error *err);
+/* A tabulated static transmission error of mesh j: n samples e_i (m, along the tooth normal, the
+ * mesh coordinate's sense) equally spaced over one mesh cycle from mesh phase 0, turned into their
+ * trigonometric interpolant without its mean (GSL real FFT; n even, at most 2 GD_MESH_HARMONICS),
+ * added to the error's mean and sinusoid. */
+GD_API gd_status gd_model_set_error_table(gd_model *m, int j, const double *e_m, int n, gd_error *err);
 /* The mesh-in impact of mesh j: a pulse of force_n (N, along the mesh normal, the force the model's
  * mesh receives) starting at mesh phase phase_rad of every cycle and lasting duration_s (at most a
  * mesh period: a whole period is a force that never stops); it replaces the mesh's pulses. */

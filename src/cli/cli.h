@@ -120,6 +120,14 @@ void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const v
                                const char **note);
 void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cli_continuation_progress(void *user, int branches_done, int branches_planned);
+/* The basins: progress, signals and MPI ranks around the row's run (run_basins.c), its pictures
+ * (basins_plot.c: basins.png and .svg, or fractions.png and .svg, into dir) and its lines on stdout. */
+int run_basins(const cli_case_args *a, gd_case *c, const char *dir);
+gd_status cli_basins_draw(const char *dir, const gd_case *c, const gd_basins_result *res, gd_error *err);
+void cli_basins_after_run(const cli_progress *p, gd_status st);
+void cli_basins_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                         const char **note);
+void cli_basins_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 int cmd_keys(int argc, char **argv);

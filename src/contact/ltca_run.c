@@ -556,6 +556,8 @@ GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x)
     free(x->k[0]);
     free(x->k[1]);
     free(x->lte_arcsec);
+    free(x->lte_half_arcsec[0]);
+    free(x->lte_half_arcsec[1]);
     memset(x, 0, sizeof *x);
 }
 
@@ -577,7 +579,8 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     int ok = x->phi1 && x->lte_arcsec;
     for (int h = 0; h < r.halves && ok; h++) {
         x->k[h] = malloc(N * sizeof(double));
-        ok = x->k[h] != NULL;
+        x->lte_half_arcsec[h] = malloc(N * sizeof(double));
+        ok = x->k[h] != NULL && x->lte_half_arcsec[h] != NULL;
     }
     if (!ok) {
         gd_ltca_result_free(&r);
@@ -588,6 +591,7 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     memcpy(x->lte_arcsec, r.lte_arcsec, N * sizeof(double));
     for (int h = 0; h < r.halves; h++) {
         memcpy(x->k[h], r.stiffness[h], N * sizeof(double));
+        memcpy(x->lte_half_arcsec[h], r.lte_half_arcsec[h], N * sizeof(double));
         x->k_mean[h] = r.stiffness_mean[h];
         x->load_share[h] = r.load_share[h];
         x->impact[h] = r.impact[h];
@@ -666,6 +670,8 @@ static void key_stream(const gd_pair *p, const gd_ltca_settings *s, int npos, ke
     key_double(k, "modification.lead_relief_inner_um", p->lead_relief_inner_um);
     key_double(k, "modification.lead_relief_outer_um", p->lead_relief_outer_um);
     key_double(k, "modification.lead_unmodified_length_mm", p->lead_unmodified_length_mm);
+    key_double(k, "modification.lead_unmodified_centre_mm", p->lead_unmodified_centre_mm);
+    key_double(k, "modification.helix_slope_um", p->helix_slope_um);
     key_double(k, "misalignment.axis_in_plane_arcmin", p->axis_in_plane_arcmin);
     key_double(k, "misalignment.axis_cross_plane_arcmin", p->axis_cross_plane_arcmin);
     key_double(k, "misalignment.centre_distance_error_mm", p->centre_distance_error_mm);

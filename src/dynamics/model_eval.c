@@ -571,6 +571,41 @@ GD_API gd_status gd_model_add_impact(gd_model *m, int j, double force_n, double 
     return GD_OK;
 }
 
+GD_API gd_status gd_model_set_error_table(gd_model *m, int j, const double *e_m, int n, gd_error *err)
+{
+    gd_gsl_quiet();
+    if (j < 0 || j >= m->nmesh)
+        return gd_error_set(err, GD_ERR_INTERNAL, "error table for mesh %d of %d", j, m->nmesh);
+    if (n < 2 || n % 2 || n > 2 * GD_MESH_HARMONICS)
+        return gd_error_set(err, GD_ERR_INPUT, "error table of %d samples (valid: even, 2 to %d)", n,
+                            2 * GD_MESH_HARMONICS);
+    double buf[2 * GD_MESH_HARMONICS];
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(e_m[i]))
+            return gd_error_set(err, GD_ERR_PHYSICS, "error table of mesh %d: sample %d is %g m (valid: finite)", j, i,
+                                e_m[i]);
+        buf[i] = e_m[i] / m->bc_m;
+    }
+    gsl_fft_real_wavetable *tab = gsl_fft_real_wavetable_alloc((size_t)n);
+    gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc((size_t)n);
+    int rc = (tab && ws) ? gsl_fft_real_transform(buf, 1, (size_t)n, tab, ws) : GSL_ENOMEM;
+    gsl_fft_real_wavetable_free(tab);
+    gsl_fft_real_workspace_free(ws);
+    if (rc != GSL_SUCCESS)
+        return gd_error_set(err, GD_ERR_GSL, "error table: gsl_fft_real_transform: %s", gsl_strerror(rc));
+    gd_mesh_excitation *x = &m->mesh[j];
+    x->ne = n / 2;
+    for (int h = 1; h <= n / 2; h++) { /* the mean (buf[0]) is left out */
+        double re = 2 * h == n ? buf[n - 1] : buf[2 * h - 1], im = 2 * h == n ? 0.0 : buf[2 * h];
+        double scale = 2 * h == n ? 1.0 / n : 2.0 / n;
+        x->ea[h - 1] = scale * sqrt(re * re + im * im);
+        x->ephi[h - 1] = atan2(im, re);
+        x->cephi[h - 1] = cos(x->ephi[h - 1]);
+        x->sephi[h - 1] = sin(x->ephi[h - 1]);
+    }
+    return GD_OK;
+}
+
 GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
                                      gd_error *err)
 {

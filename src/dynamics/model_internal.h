@@ -65,6 +65,24 @@ static inline __attribute__((always_inline)) void mesh_eval_sc(const gd_model *m
         *ed = x->e_r * m->Omega * ce;
     if (edd)
         *edd = -x->e_r * m->Omega * m->Omega * se;
+    if (x->ne > 0) { /* a tabulated error: sum ea_h cos(h th + ephi_h) and its rates */
+        double sk = s1, ck = c1, v = 0, v1 = 0, v2 = 0;
+        for (int h = 0; h < x->ne; h++) {
+            double co = ck * x->cephi[h] - sk * x->sephi[h], si = sk * x->cephi[h] + ck * x->sephi[h];
+            double hh = (double)(h + 1);
+            v += x->ea[h] * co;
+            v1 -= hh * x->ea[h] * si;
+            v2 -= hh * hh * x->ea[h] * co;
+            double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
+            sk = sn;
+            ck = cn;
+        }
+        *e += v;
+        if (ed)
+            *ed += m->Omega * v1;
+        if (edd)
+            *edd += m->Omega * m->Omega * v2;
+    }
 }
 
 /* The pulses of x in their phases at mesh phase th (bit k: pulse k) */

@@ -27,6 +27,12 @@ void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m)
         q->em = x->e_m;
         q->P = x->e_r * cos(psi);
         q->Q = x->e_r * sin(psi);
+        q->ne = x->ne;
+        for (int h = 0; h < q->ne; h++) { /* ea_h cos(h (Omega t + phase) + ephi_h) */
+            double ang = (h + 1) * x->phase + x->ephi[h];
+            q->EA[h] = x->ea[h] * cos(ang);
+            q->EB[h] = x->ea[h] * sin(ang);
+        }
     }
 }
 
@@ -54,6 +60,19 @@ static inline __attribute__((always_inline)) void excitation(const gd_plan_excit
         *e = q->em + (q->P * s0 + q->Q * c0);
     if (ed)
         *ed = m->Omega * (q->P * c0 - q->Q * s0);
+    if (q->ne > 0) {
+        double sk = s0, ck = c0, v = 0, v1 = 0;
+        for (int h = 0; h < q->ne; h++) {
+            v += q->EA[h] * ck - q->EB[h] * sk;
+            v1 -= (double)(h + 1) * (q->EA[h] * sk + q->EB[h] * ck);
+            double sn = sk * c0 + ck * s0, cn = ck * c0 - sk * s0;
+            sk = sn, ck = cn;
+        }
+        if (e)
+            *e += v;
+        if (ed)
+            *ed += m->Omega * v1;
+    }
 }
 
 void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, const gd_plan_excitation *ex)

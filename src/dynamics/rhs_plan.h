@@ -32,6 +32,8 @@ typedef struct gd_plan_excitation {
     int kind, nh;
     double mean, A[GD_MESH_HARMONICS], B[GD_MESH_HARMONICS];
     double em, P, Q;
+    int ne;                  /* a tabulated error: + sum EA_h cos(h Omega t) - EB_h sin(h Omega t) */
+    double EA[GD_MESH_HARMONICS], EB[GD_MESH_HARMONICS];
 } gd_plan_excitation;
 
 void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m);

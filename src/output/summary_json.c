@@ -18,6 +18,15 @@ static json_t *lr(double l, double r)
     return o;
 }
 
+/* a value of each body: pinion and gear */
+static json_t *pg(double p, double g)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "pinion", gd_json_num(p));
+    json_object_set_new(o, "gear", gd_json_num(g));
+    return o;
+}
+
 /* derived.model.impact: the mesh-in impact pulses (excitation.impact = on, from LTCA), each as the
  * model's mesh receives it: one per mesh, and both halves' on the one mesh of a herringbone's torsional
  * model. */
@@ -50,16 +59,18 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     gd_error e2;
     json_t *der = json_object();
     const gd_pair pair = gd_pair_from_case(c);
+    double sin_bb = NAN;
     if (gd_geometry_compute(&pair, &g, &e2) == GD_OK) {
+        sin_bb = sin(g.beta_b);
         json_t *geo = json_object();
         json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
         json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * 180 / M_PI));
         json_object_set_new(geo, "working_pressure_angle_deg", gd_json_num(g.alpha_wt * 180 / M_PI));
         json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * 180 / M_PI));
-        json_object_set_new(geo, "reference_radius_mm", lr(g.r[0] * 1e3, g.r[1] * 1e3));
-        json_object_set_new(geo, "base_radius_mm", lr(g.rb[0] * 1e3, g.rb[1] * 1e3));
-        json_object_set_new(geo, "tip_radius_mm", lr(g.ra[0] * 1e3, g.ra[1] * 1e3));
-        json_object_set_new(geo, "root_radius_mm", lr(g.rf[0] * 1e3, g.rf[1] * 1e3));
+        json_object_set_new(geo, "reference_radius_mm", pg(g.r[0] * 1e3, g.r[1] * 1e3));
+        json_object_set_new(geo, "base_radius_mm", pg(g.rb[0] * 1e3, g.rb[1] * 1e3));
+        json_object_set_new(geo, "tip_radius_mm", pg(g.ra[0] * 1e3, g.ra[1] * 1e3));
+        json_object_set_new(geo, "root_radius_mm", pg(g.rf[0] * 1e3, g.rf[1] * 1e3));
         json_object_set_new(geo, "centre_distance_mm", gd_json_num(g.a * 1e3));
         json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
         json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
@@ -73,9 +84,22 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     json_object_set_new(mod, "normal_equivalent_mass_kg", gd_json_num(m->m_ref));
     json_object_set_new(mod, "mesh_stiffness_n_per_m", gd_json_num(m->k_ref));
     json_object_set_new(mod, "static_mesh_force_n", gd_json_num(m->static_load_n));
+    /* its axial component, taken by the axial supports (a herringbone's halves: opposite senses) */
+    json_object_set_new(mod, "static_axial_force_n", gd_json_num(m->static_load_n * sin_bb));
     json_object_set_new(mod, "static_deflection_um", gd_json_num(m->static_load_n / m->k_ref * 1e6));
     if (c->impact)
         json_object_set_new(mod, "impact", impact_json(m));
+    /* where each excitation comes from (geardyn check says the same) */
+    {
+        static const char *const kind[] = {"constant", "harmonic", "rectangular", "ltca"};
+        json_t *ex = json_object();
+        json_object_set_new(ex, "mesh_stiffness", json_string(c->stiffness >= 0 && c->stiffness < 4 ?
+                                                              kind[c->stiffness] : "?"));
+        json_object_set_new(ex, "transmission_error", json_string(!c->error_excitation ? "off" :
+                                                                  c->ste_source == GD_STE_LTCA ? "ltca" : "sinusoid"));
+        json_object_set_new(ex, "mesh_in_impact", json_string(c->impact ? "ltca" : "off"));
+        json_object_set_new(mod, "excitations", ex);
+    }
     json_object_set_new(der, "model", mod);
     return der;
 }

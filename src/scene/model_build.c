@@ -133,7 +133,7 @@ static void model_excitations(const gd_case *c, gd_model *m)
         x->sph = sin(x->phase);
         double on = c->error_excitation ? 1.0 : 0.0;
         x->e_m = on * c->ste_mean_um * 1e-6 / m->bc_m;
-        x->e_r = on * c->ste_amplitude_um * 1e-6 / m->bc_m;
+        x->e_r = c->ste_source == GD_STE_LTCA ? 0.0 : on * c->ste_amplitude_um * 1e-6 / m->bc_m;
         x->e_phi = c->ste_phase_deg * deg;
         for (int j = 0; j < x->nh; j++) {
             x->cphi[j] = cos(x->phi[j]);
@@ -355,6 +355,41 @@ static void impact_pulse(const gd_case *c, const gd_model *m, const gd_ltca_impa
         *dur = fmin(m->m_ref * vs / *F, Tm);
 }
 
+/* excitation.ste = ltca: LTCA's transmission error as the error excitation of mesh j (docs/ltca.md
+ * section 8). Under the static load F of the mesh the model's mesh coordinate sits at q = e(t) +
+ * F/k(t) (+ the half backlash); LTCA's loaded approach of the half is q_LTCA = -LTE r_b2 cos(beta_b)
+ * along the normal (the gear lags). So e = q_LTCA - F/k(t), its mean removed: the quasi-static
+ * model reproduces LTCA's loaded transmission error whatever part of it the stiffness carries. The
+ * torsional model of a herringbone has one mesh for both halves: their mean. */
+static gd_status apply_ltca_error(const gd_case *c, gd_model *m, const gd_ltca_excitation *x, double rb2, double cbb,
+                                  gd_error *err)
+{
+    const double arcsec = M_PI / (180.0 * 3600.0);
+    int two = x->halves > 1 && x->lte_half_arcsec[1] != NULL;
+    double *buf = malloc(sizeof(double) * (size_t)x->npos);
+    if (!buf)
+        return gd_error_set(err, GD_ERR_NOMEM, "LTCA error excitation: out of memory");
+    gd_status st = GD_OK;
+    for (int j = 0; j < m->nmesh && st == GD_OK; j++) {
+        int h = j < 1 || !two ? 0 : 1;
+        double mean = 0;
+        for (int i = 0; i < x->npos; i++) {
+            double lte = m->kind == GD_MODEL_TORSIONAL && two ?
+                0.5 * (x->lte_half_arcsec[0][i] + x->lte_half_arcsec[1][i]) : x->lte_half_arcsec[h][i];
+            double k = c->stiffness == GD_STIFF_LTCA ?
+                (m->kind == GD_MODEL_TORSIONAL && two ? 0.5 * (x->k[0][i] + x->k[1][i]) : x->k[h][i]) : m->k_ref;
+            buf[i] = -lte * arcsec * rb2 * cbb - m->static_load_n / k;
+            mean += buf[i];
+        }
+        mean /= x->npos;
+        for (int i = 0; i < x->npos; i++)
+            buf[i] -= mean;
+        st = gd_model_set_error_table(m, j, buf, x->npos, err);
+    }
+    free(buf);
+    return st == GD_OK ? GD_OK : gd_error_prefix(err, "LTCA error excitation");
+}
+
 /* The LTCA excitation x applied to m; x is only read here (gd_model_set_stiffness_table keeps the
  * Fourier coefficients of the samples, gd_model_set_impact scalars). */
 static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_excitation *x, gd_error *err)
@@ -407,7 +442,8 @@ static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_e
 
 GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
 {
-    if ((c->stiffness != GD_STIFF_LTCA && !c->impact) || c->ltca_deferred)
+    int ste = c->ste_source == GD_STE_LTCA && c->error_excitation;
+    if ((c->stiffness != GD_STIFF_LTCA && !c->impact && !ste) || c->ltca_deferred)
         return GD_OK;
     const gd_ltca_excitation *x;
     const gd_pair pair = gd_pair_from_case(c);
@@ -416,6 +452,12 @@ GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *er
     if (st != GD_OK)
         return st;
     st = apply_excitation(c, m, x, err);
+    if (st == GD_OK && ste) {
+        gd_geometry g;
+        st = gd_geometry_compute(&pair, &g, err);
+        if (st == GD_OK)
+            st = apply_ltca_error(c, m, x, g.rb[1], cos(g.beta_b), err);
+    }
     gd_ltca_excitation_release(x); /* the model keeps no pointer into x */
     return st;
 }
