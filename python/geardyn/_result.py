@@ -127,6 +127,27 @@ class Result:
     def keys(self):
         return list(self.tables)
 
+    def grid(self, column='label', table='basins'):
+        """A table of cells (columns i and j, then the cell centre's two coordinates, as basins.csv
+        is) as a picture: (x, y, values), x the nx centres along i, y the ny centres along j,
+        values[j, i] the column's value of cell (i, j), an array of shape (ny, nx) (nan, or '' for a
+        column of text, where a cell has no row). result.grid() is the basins' labels;
+        result.grid('outcome') their names. The names of the coordinates are
+        result[table].dtype.names[2:4]."""
+        t = self[table]
+        names = t.dtype.names
+        if not names or names[:2] != ('i', 'j') or len(names) < 4:
+            raise KeyError('%s: not a table of cells (columns i, j, x, y, ...)' % table)
+        i, j = t['i'].astype(np.intp), t['j'].astype(np.intp)
+        nx = int(i.max()) + 1 if len(t) else 0
+        ny = int(j.max()) + 1 if len(t) else 0
+        col = t[column]
+        values = np.full((ny, nx), np.nan) if col.dtype.kind == 'f' else np.full((ny, nx), '', dtype=col.dtype)
+        values[j, i] = col
+        x, y = np.full(nx, np.nan), np.full(ny, np.nan)
+        x[i], y[j] = t[names[2]], t[names[3]]
+        return x, y, values
+
     def equals(self, other, ignore=()):
         """Equal summaries and pictures, every table and sub-run equal bit for bit; but the keys of
         summary.json (at any depth) and the columns named in ignore (times: two runs of one case

@@ -81,6 +81,12 @@ static int on_branch(void *user, int done, int planned)
     return should_stop(user);
 }
 
+static int on_basins(void *user, long done, long total)
+{
+    count(user, "initial states", done, total);
+    return should_stop(user);
+}
+
 static void on_problem(void *user, const struct gd_compare_entry *q, const gd_opt_compare_settings *s)
 {
     (void)q, (void)s;
@@ -144,6 +150,7 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     env.optimize_run = on_optimize_run;
     env.continuation_branch = on_branch;
     env.compare_problem = on_problem;
+    env.basins_progress = on_basins;
     st = gd_analysis_run_dir(a, &j->c, &env, out, err);
     if (st != GD_OK) {
         gd_run_dir_close(out);
