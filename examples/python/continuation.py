@@ -58,7 +58,7 @@ for k in np.unique(branch['branch']).astype(int):
 a.plot([], [], 'k-', lw=1.8, label='stable')
 a.plot([], [], 'k--', lw=1.0, label='unstable')
 marks = {'fold': ('s', '#d62728'), 'period-doubling': ('D', '#ff7f0e'), 'neimark-sacker': ('^', '#17becf'),
-         'contact-change': ('o', '#7f7f7f')}
+         'contact-change': ('o', '#7f7f7f'), 'branch-point': ('*', '#9467bd')}
 for kind in np.unique(bif['kind']):
     b = bif[bif['kind'] == kind]
     m, c = marks.get(kind, ('x', 'k'))

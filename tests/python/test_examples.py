@@ -10,8 +10,12 @@ computed another way, by the command line:
                    modification; the modification lowers the largest RMS acceleration (the paper's
                    finding, section 6).
   continuation.py  every bifurcation it prints is a row of the command line's bifurcations.csv.
+  basins.py        each attractor's fraction, standard error and Wilson interval, its cells of the
+                   picture (counted by the example in the 2-D array) and the basin entropy are those
+                   of `geardyn run` on the same case (attractors.csv, summary.json).
 
 With matplotlib installed each draws its picture (a whole PNG); without, it says so and ends well."""
+import csv
 import importlib.util
 import json
 import os
@@ -88,3 +92,18 @@ def test_continuation(work):
     want = ['branch %s, period-%s, %s at speed_rpm = %.9g rpm' % (r[0], r[1], r[2], float(r[3])) for r in rows]
     assert v['bifurcation'] == want and len(want) >= 4
     assert int(v['branches'][0]) >= 2
+
+
+def test_basins(work):
+    v = example('basins.py', 30)
+    s = cli_summary(os.path.join(SRC, 'cases', 'basins', 'ks-hysteresis.ini'),
+                    [('basins.resolution', 30), ('basins.samples', 2000), ('output.plots', 'off')])
+    assert v['cells'] == ['30 x 30']
+    with open(os.path.join('cli', 'attractors.csv')) as f:
+        rows = list(csv.DictReader(f))
+    cells = {lab['attractor']: lab['cells'] for lab in s['results']['picture']['labels']}
+    want = ['%s, %s, %s, fraction %.4f +- %.4f, wilson [%.4f, %.4f], picture cells %d'
+            % (r['index'], r['name'], r['impact_regime'], float(r['fraction']), float(r['standard_error']),
+               float(r['wilson_lo']), float(r['wilson_hi']), cells.get(int(r['attractor']), 0)) for r in rows]
+    assert v['attractor'] == want and len(want) == 2
+    assert v['basin_entropy'] == ['%.6f' % s['results']['picture']['basin_entropy']['S_b']]
