@@ -4,8 +4,11 @@
 # not there yet (scripts/sundials-release.sh; GD_SUNDIALS=system skips it); without it meson links
 # the system package. Run by scripts/quickstart.sh and scripts/test.sh; safe to run again.
 set -euo pipefail
-GD_PACKAGES=(gcc pkg-config meson ninja-build cmake dpkg-dev xz-utils python3 libsundials-dev libgsl-dev libnlopt-dev
-             libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev clang libclang-rt-14-dev)
+# python3-numpy and python3-pytest: the Python module (python/, docs/python.md) and its tests, for
+# Debian's /usr/bin/python3 (meson finds that interpreter when the first python3 on PATH lacks numpy)
+GD_PACKAGES=(gcc pkg-config meson ninja-build cmake dpkg-dev xz-utils python3 python3-numpy python3-pytest
+             libsundials-dev libgsl-dev libnlopt-dev libinih-dev libjansson-dev gnuplot-nox openmpi-bin libopenmpi-dev
+             clang libclang-rt-14-dev)
 missing=()
 for p in "${GD_PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

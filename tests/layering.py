@@ -71,7 +71,7 @@ PUBLIC = {
     'gd_model.h': 'dynamics', 'gd_modal.h': 'dynamics', 'gd_sim.h': 'dynamics',
     'gd_scene.h': 'scene',
     'gd_optimize.h': 'optimisation',
-    'gd_analysis.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
+    'gd_analysis.h': 'run', 'gd_job.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
     'gd_workprec.h': 'analysis', 'gd_spectrum.h': 'analysis', 'gd_periodic.h': 'analysis',
     'gd_continuation.h': 'analysis',
     'gd_basins.h': 'analysis',

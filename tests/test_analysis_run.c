@@ -10,7 +10,12 @@
  *    gte.csv has a row per position and its left GTE column spans gte_pp_arcsec;
  *  - both: summary.json's "files" are exactly the files the run's directory committed, in order,
  *    then summary.json, and every one of them exists;
- *  - a run that fails before its first file (an unknown response variable) leaves no directory. */
+ *  - a run that fails before its first file (an unknown response variable) leaves no directory;
+ *  - kept files (gd_job, the Python module's way in): the tca case run as a job in memory keeps the
+ *    bytes of the tables the directory above holds, and touches no disk; run as a job into a
+ *    directory, every file there is byte for byte what the job kept (summary.json too); a
+ *    sub-directory of a run in memory joins its parent's files as "sub/NAME"; a job stopped
+ *    before it runs is interrupted and makes nothing. */
 #include "geardyn/geardyn.h"
 #include "tap.h"
 
@@ -208,6 +213,108 @@ static void tca(const char *tmp)
     gd_case_free(&c);
 }
 
+/* The bytes of dir/name (malloc'd), *len; NULL when it cannot be read. */
+static char *slurp(const char *dir, const char *name, size_t *len)
+{
+    char path[2048];
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    char *b = NULL;
+    size_t cap = 0;
+    *len = 0;
+    for (;;) {
+        if (*len == cap && !(b = realloc(b, cap = 2 * cap + 4096)))
+            break;
+        size_t r = fread(b + *len, 1, cap - *len, f);
+        if (r == 0)
+            break;
+        *len += r;
+    }
+    fclose(f);
+    return b;
+}
+
+/* The job's bytes of name are dir/name's. */
+static int same_bytes(const gd_job *j, const char *dir, const char *name)
+{
+    size_t n = 0, m = 0;
+    const char *kept = gd_job_file(j, name, &n);
+    char *disk = slurp(dir, name, &m);
+    int same = kept && disk && n == m && memcmp(kept, disk, n) == 0;
+    free(disk);
+    return same;
+}
+
+static void kept(const char *tmp)
+{
+    gd_case c;
+    gd_error e = {0};
+    char path[2048], dir[1024], tdir[1024];
+    const char *src = getenv("GEARDYN_SOURCE");
+    snprintf(path, sizeof path, "%s/cases/paper/tca-modified.ini", src ? src : ".");
+    snprintf(tdir, sizeof tdir, "%s/tca", tmp);
+    CHECK(gd_case_init(&c, &e), &e);
+    CHECK(gd_case_load(&c, path, &e), &e);
+    static const char *const tables[] = {"gte.csv", "contact_path.csv", "separation_left.csv"};
+
+    gd_job *j;
+    CHECK(gd_job_new(&c, NULL, 1, &j, &e), &e);
+    CHECK(gd_job_run(j, &e), &e);
+    int same = 1;
+    for (size_t i = 0; i < sizeof tables / sizeof tables[0]; i++)
+        same &= same_bytes(j, tdir, tables[i]);
+    size_t n;
+    tap_ok(same && gd_job_file(j, "summary.json", &n) && n > 0 && !gd_job_file(j, "nothing.csv", &n) &&
+           access("(memory)", F_OK) != 0,
+           "kept: a job in memory keeps the bytes of the tables the run's directory holds, and writes nothing");
+    long done, total;
+    gd_job_progress(j, &done, &total);
+    gd_job_free(j);
+
+    snprintf(dir, sizeof dir, "%s/tca-kept", tmp);
+    CHECK(gd_job_new(&c, dir, 1, &j, &e), &e);
+    CHECK(gd_job_run(j, &e), &e);
+    int nlisted = 0;
+    size_t len;
+    const char *sj = gd_job_file(j, "summary.json", &len);
+    json_error_t je;
+    json_t *root = sj ? json_loadb(sj, len, 0, &je) : NULL;
+    json_t *fl = root ? json_object_get(root, "files") : NULL;
+    same = fl && json_array_size(fl) > 3;
+    for (size_t i = 0; same && i < json_array_size(fl); i++, nlisted++)
+        same = same_bytes(j, dir, json_string_value(json_array_get(fl, i)));
+    json_decref(root);
+    tap_ok(same, "kept: a job into a directory writes there the %d files it keeps, byte for byte", nlisted);
+    gd_job_free(j);
+
+    gd_run_dir *m, *sub;
+    FILE *fp;
+    CHECK(gd_run_dir_open_memory("(memory)", &m, &e), &e);
+    CHECK(gd_run_dir_open_sub(m, "optimum", &sub, &e), &e);
+    CHECK(gd_run_dir_create(sub, "a.csv", &fp, &e), &e);
+    fputs("x,y\n1,2\n", fp);
+    CHECK(gd_run_dir_commit(sub, fp, &e), &e);
+    int before = gd_run_dir_data(m, "optimum/a.csv", NULL) == NULL;
+    CHECK(gd_run_dir_publish(sub, &e), &e);
+    gd_run_dir_close(sub);
+    const char *a = gd_run_dir_data(m, "optimum/a.csv", &len);
+    tap_ok(before && a && len == 8 && memcmp(a, "x,y\n1,2\n", 8) == 0 && !gd_run_dir_data(m, "a.csv", NULL) &&
+           !gd_run_dir_stage(m) && access("(memory)", F_OK) != 0,
+           "kept: a sub-directory's file joins its parent's as optimum/a.csv when published");
+    gd_run_dir_close(m);
+
+    snprintf(dir, sizeof dir, "%s/stopped", tmp);
+    CHECK(gd_job_new(&c, dir, 1, &j, &e), &e);
+    gd_job_stop(j);
+    gd_status st = gd_job_run(j, &e);
+    tap_ok(st == GD_ERR_INTERRUPTED && access(dir, F_OK) != 0 && !gd_job_file(j, "summary.json", NULL),
+           "kept: a job stopped before it runs is interrupted and makes nothing: %s", e.msg);
+    gd_job_free(j);
+    gd_case_free(&c);
+}
+
 static int remove_entry(const char *path, const struct stat *sb, int flag, struct FTW *ftw)
 {
     (void)sb, (void)flag, (void)ftw;
@@ -223,6 +330,7 @@ int main(void)
     }
     response(tmp);
     tca(tmp);
+    kept(tmp);
     if (tap_failed == 0)
         nftw(tmp, remove_entry, 16, FTW_DEPTH | FTW_PHYS); /* kept for a look when a check failed */
     return tap_done();

@@ -29,6 +29,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_scene.h"
 #include "geardyn/gd_basins.h"
 
 #ifdef __cplusplus
@@ -115,10 +116,33 @@ GD_API const gd_analysis_type *gd_analysis_find(int id);
  * without its printing. */
 GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
                                     const char *dir, gd_error *err);
+/* The same in a run directory the caller opened (and closes): one kept in memory
+ * (gd_run_dir_open_memory) or keeping its files (gd_run_dir_keep), whose bytes the caller then
+ * reads with gd_run_dir_data. */
+GD_API gd_status gd_analysis_run_dir(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
+                                     gd_run_dir *out, gd_error *err);
 
 /* Fill the derived values (unless pinned) and check consistency and ranges across keys: the
  * case's own checks, the scene, the analysis's. Call once after load and sets. */
 GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err);
+
+/* Every check geardyn run makes before any work, in its order, so that a program gets the same
+ * refusal with the same message: c resolved without LTCA (gd_case.ltca_deferred), its model built,
+ * the run's cost estimated into *cost (may be NULL) and checked (gd_run_cost_check); then, unless
+ * check_only, c itself resolved and its model built (which computes the case's LTCA when it asks
+ * for it). check_only: c becomes the case resolved without LTCA, as geardyn check shows it. On a
+ * refusal c may be partly resolved: free it. */
+GD_API gd_status gd_case_prepare(gd_case *c, int check_only, gd_run_cost *cost, gd_error *err);
+/* What geardyn check shows of c (loaded, not resolved), as JSON text in *json (gd_free it):
+ * {"analysis", "case": {"path", "parameters"}, "derived": {"geometry", "model", "modal",
+ * "mesh_stiffness_estimated"}, "cost": {...}}; the refusals of gd_case_prepare. */
+GD_API gd_status gd_case_check_json(const gd_case *c, char **json, gd_error *err);
+
+/* The threads of a run whose gd_run_env.threads is 0: OpenMP's default for a new thread
+ * (OMP_NUM_THREADS, else the processors), 1 without OpenMP. */
+GD_API int gd_threads_default(void);
+/* The OpenMP version libgeardyn was built with (_OPENMP, yyyymm), 0 without OpenMP. */
+GD_API int gd_openmp_version(void);
 
 #ifdef __cplusplus
 }

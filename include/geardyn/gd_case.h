@@ -270,9 +270,18 @@ GD_API const gd_keyspec *gd_case_find_key(const char *section, const char *key);
 GD_API gd_status gd_case_init(gd_case *c, gd_error *err);
 GD_API void gd_case_free(gd_case *c);
 GD_API gd_status gd_case_copy(gd_case *dst, const gd_case *src, gd_error *err);
+/* The same on the heap, for a caller that does not know the size of gd_case (a foreign-function
+ * interface): a case with every default, or a copy of src; NULL with err set when out of memory.
+ * Free with gd_case_delete (NULL allowed). */
+GD_API gd_case *gd_case_new(gd_error *err);
+GD_API gd_case *gd_case_dup(const gd_case *src, gd_error *err);
+GD_API void gd_case_delete(gd_case *c);
 
 /* Read an INI case file over the defaults; strict validation of every line. */
 GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err);
+/* The same from the len bytes of text, checked as a case file's are; name stands for the file in
+ * messages and is the case's path (relative paths in it are taken from the working directory). */
+GD_API gd_status gd_case_load_text(gd_case *c, const char *text, size_t len, const char *name, gd_error *err);
 /* Apply "section.key=value" (the command line's --set). */
 GD_API gd_status gd_case_set(gd_case *c, const char *assignment, int set_index, gd_error *err);
 /* The cross-key checks that need no physics (torque or power, STE, stiffness harmonics, solver
@@ -282,6 +291,9 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err);
 /* Value of a numeric key as a double ("operating.speed_rpm"); for sweeps. */
 GD_API gd_status gd_case_get_number(const gd_case *c, const char *name, double *value, gd_error *err);
 GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, gd_error *err);
+/* The values of a key that is a list of numbers: the first max into values, their count in *n. */
+GD_API gd_status gd_case_get_list(const gd_case *c, const char *name, double *values, int max, int *n,
+                                  gd_error *err);
 /* The value of schema entry i formatted as the case file would write it. */
 GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len);
 GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);

@@ -58,6 +58,9 @@ GD_API const char *gd_status_name(gd_status code);
 /* The command-line exit status for an error code: 2 for bad input, 1 otherwise. */
 GD_API int gd_status_exit_code(gd_status code);
 
+/* Free memory the library allocated for the caller (text it returns: "free it"); NULL allowed. */
+GD_API void gd_free(void *p);
+
 /* A caller's way to stop a long computation early (a signal, a user's cancel): should_stop(user)
  * is asked between units of work (a contact position, an objective evaluation), possibly from
  * several threads at once; nonzero ends the computation with GD_ERR_INTERRUPTED and no result.

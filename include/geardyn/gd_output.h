@@ -29,11 +29,26 @@ extern "C" {
 typedef struct gd_run_dir gd_run_dir;
 
 GD_API gd_status gd_run_dir_open(const char *dir, gd_run_dir **out, gd_error *err);
+/* A run directory in memory only: the files are kept (gd_run_dir_data) and nothing touches the
+ * disk; name is what messages call it. Publishing it only marks it published. */
+GD_API gd_status gd_run_dir_open_memory(const char *name, gd_run_dir **out, gd_error *err);
+/* Keep the bytes of every file committed from now on in memory as well (call before the first
+ * file): the writers write into memory, and at commit the bytes go into the file, so that what
+ * gd_run_dir_data gives is what the file holds. */
+GD_API void gd_run_dir_keep(gd_run_dir *d);
+/* The directory sub of d (a run of its own, published into d's stage, or kept in memory with d):
+ * when d keeps its files, so does sub, and at sub's publication its files join d's kept files as
+ * "sub/NAME". The caller lists "sub/" in d (gd_run_dir_add) and closes sub before d. */
+GD_API gd_status gd_run_dir_open_sub(gd_run_dir *d, const char *sub, gd_run_dir **out, gd_error *err);
+/* The bytes of a committed file of a keeping run directory (NAME or "sub/NAME"), *len its length;
+ * NULL when d kept no such file. Valid until gd_run_dir_close. */
+GD_API const char *gd_run_dir_data(const gd_run_dir *d, const char *name, size_t *len);
 /* Discards the files still open and the stage when not published, unlocks and frees d; NULL is
  * allowed. */
 GD_API void gd_run_dir_close(gd_run_dir *d);
 GD_API const char *gd_run_dir_path(const gd_run_dir *d);
-/* Where the run's files are written before gd_run_dir_publish (pictures are drawn there). */
+/* Where the run's files are written before gd_run_dir_publish (pictures are drawn there); NULL for
+ * a run directory in memory. */
 GD_API const char *gd_run_dir_stage(const gd_run_dir *d);
 /* Make and lock the directory now (the first gd_run_dir_create does it otherwise). */
 GD_API gd_status gd_run_dir_make(gd_run_dir *d, gd_error *err);
@@ -74,6 +89,10 @@ typedef struct gd_eventlog_summary {
  * out_csv when not NULL (with the header). */
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err);
+/* The same with the selected rows (and the header) as CSV text in *csv (malloc'd: gd_free), *len
+ * its bytes; flt NULL selects every row, sum may be NULL. */
+GD_API gd_status gd_eventlog_select(const char *path, const gd_eventlog_filter *flt, char **csv, size_t *len,
+                                    gd_eventlog_summary *sum, gd_error *err);
 
 /* ---- the sweep's journal ----
  * What a program that distributes the points of a sweep (over processes, over MPI ranks) or

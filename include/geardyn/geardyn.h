@@ -11,6 +11,7 @@
 #include "geardyn/gd_modal.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_analysis.h"
+#include "geardyn/gd_job.h"
 #include "geardyn/gd_sim.h"
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_workprec.h"

@@ -453,14 +453,9 @@ static int handler(void *user, const char *section, const char *name, const char
     return 1;
 }
 
-GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
+/* inih over the checked text (case_text.h) of the case file path; frees text. */
+static gd_status parse_text(gd_case *c, const char *path, char *text, gd_error *err)
 {
-    if (strlen(path) >= GD_PATH_MAX)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: path too long", path);
-    char *text;
-    gd_status st = gd_case_text_read(path, &text, err);
-    if (st != GD_OK)
-        return st;
     snprintf(c->path, sizeof c->path, "%s", path);
     load_ctx ctx = {.c = c, .err = err, .next = text};
     int rc = ini_parse_stream(reader, &ctx, handler, &ctx);
@@ -471,6 +466,64 @@ GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s:%d: syntax error (expected [section] or key = value)", path,
                             rc > 0 ? rc : ctx.line);
     return GD_OK;
+}
+
+GD_API gd_status gd_case_load(gd_case *c, const char *path, gd_error *err)
+{
+    if (strlen(path) >= GD_PATH_MAX)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: path too long", path);
+    char *text;
+    gd_status st = gd_case_text_read(path, &text, err);
+    if (st != GD_OK)
+        return st;
+    return parse_text(c, path, text, err);
+}
+
+GD_API gd_status gd_case_load_text(gd_case *c, const char *text, size_t len, const char *name, gd_error *err)
+{
+    if (strlen(name) >= GD_PATH_MAX)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: name too long", name);
+    char *checked;
+    gd_status st = gd_case_text_normalise(name, text, len, &checked, err);
+    if (st != GD_OK)
+        return st;
+    return parse_text(c, name, checked, err);
+}
+
+GD_API gd_case *gd_case_new(gd_error *err)
+{
+    gd_case *c = malloc(sizeof *c);
+    if (!c) {
+        gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    if (gd_case_init(c, err) != GD_OK) {
+        free(c);
+        return NULL;
+    }
+    return c;
+}
+
+GD_API gd_case *gd_case_dup(const gd_case *src, gd_error *err)
+{
+    gd_case *c = malloc(sizeof *c);
+    if (!c) {
+        gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    if (gd_case_copy(c, src, err) != GD_OK) {
+        free(c);
+        return NULL;
+    }
+    return c;
+}
+
+GD_API void gd_case_delete(gd_case *c)
+{
+    if (!c)
+        return;
+    gd_case_free(c);
+    free(c);
 }
 
 GD_API gd_status gd_case_set(gd_case *c, const char *assignment, int set_index, gd_error *err)
@@ -559,6 +612,22 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
     size_t n;
     const gd_keyspec *s = gd_case_schema(&n);
     c->src[k - s] = GD_SRC_SET;
+    return GD_OK;
+}
+
+GD_API gd_status gd_case_get_list(const gd_case *c, const char *name, double *values, int max, int *n,
+                                  gd_error *err)
+{
+    const gd_keyspec *k = find_dotted(name, err);
+    if (!k)
+        return GD_ERR_INPUT;
+    if (k->type != GD_KEY_DLIST)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: not a list of numbers", name);
+    int count = *(const int *)((const char *)c + k->count_offset);
+    const double *arr = cfield(c, k);
+    for (int j = 0; j < count && j < max; j++)
+        values[j] = arr[j];
+    *n = count;
     return GD_OK;
 }
 

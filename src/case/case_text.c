@@ -192,15 +192,13 @@ static gd_status normalise_line(const char *path, int line, const char *s, size_
     return GD_OK;
 }
 
-gd_status gd_case_text_read(const char *path, char **text, gd_error *err)
+gd_status gd_case_text_normalise(const char *path, const char *b, size_t len, char **text, gd_error *err)
 {
-    char *b = NULL;
-    size_t len = 0;
     *text = NULL;
-    gd_status st = read_regular(path, &b, &len, err);
-    if (st != GD_OK)
-        return st;
-    st = check_nul(path, b, len, err);
+    if (len > GD_CASE_MAX_BYTES)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: %zu bytes, too large for a case file (valid: at most %d bytes)",
+                            path, len, GD_CASE_MAX_BYTES);
+    gd_status st = check_nul(path, b, len, err);
     char *out = st == GD_OK ? malloc(2 * len + 2) : NULL;
     if (st == GD_OK && !out)
         st = gd_error_set(err, GD_ERR_NOMEM, "%s: out of memory reading the case file", path);
@@ -212,7 +210,6 @@ gd_status gd_case_text_read(const char *path, char **text, gd_error *err)
         st = normalise_line(path, line, b + pos, e - pos, out, &used, err);
         pos = e + (e < len && b[e] == '\r' && e + 1 < len && b[e + 1] == '\n' ? 2 : 1);
     }
-    free(b);
     if (st != GD_OK) {
         free(out);
         return st;
@@ -220,4 +217,17 @@ gd_status gd_case_text_read(const char *path, char **text, gd_error *err)
     out[used] = '\0';
     *text = out;
     return GD_OK;
+}
+
+gd_status gd_case_text_read(const char *path, char **text, gd_error *err)
+{
+    char *b = NULL;
+    size_t len = 0;
+    *text = NULL;
+    gd_status st = read_regular(path, &b, &len, err);
+    if (st != GD_OK)
+        return st;
+    st = gd_case_text_normalise(path, b, len, text, err);
+    free(b);
+    return st;
 }

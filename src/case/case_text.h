@@ -22,5 +22,8 @@
  * header without its ']'), and no line longer than GD_CASE_MAX_LINE. Messages start with
  * "path:line:" and say what is wrong. */
 gd_status gd_case_text_read(const char *path, char **text, gd_error *err);
+/* The same checks and normalisation of a case file's len bytes b (not NUL-terminated) that name
+ * calls the file in messages (gd_case_load_text). */
+gd_status gd_case_text_normalise(const char *name, const char *b, size_t len, char **text, gd_error *err);
 
 #endif

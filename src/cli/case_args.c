@@ -4,9 +4,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
 {
@@ -69,22 +66,6 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     return 0;
 }
 
-/* Resolve c without LTCA (as geardyn check does), build its model and check the run's estimated
- * cost: every check before any work, whatever the run would compute first. */
-static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
-{
-    gd_model m;
-    c->ltca_deferred = 1;
-    gd_status st = gd_case_resolve(c, err);
-    if (st == GD_OK)
-        st = gd_model_build(c, &m, err);
-    if (st == GD_OK) {
-        gd_run_cost_estimate(c, &m, cost);
-        st = gd_run_cost_check(c, &m, cost, err);
-    }
-    return st;
-}
-
 int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
@@ -95,20 +76,8 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     for (int i = 0; i < a->nsets; i++)
         if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
             return cli_fail(&err);
-    gd_case probe;
-    if (gd_case_copy(&probe, c, &err) != GD_OK)
-        return cli_fail(&err);
-    gd_status st = probe_cost(&probe, &a->cost, &err);
-    if (st != GD_OK || a->check_only) {  /* check shows the case as probed */
-        gd_case_free(c);
-        *c = probe;
-        return st == GD_OK ? 0 : cli_fail(&err);
-    }
-    gd_case_free(&probe);
-    if (gd_case_resolve(c, &err) != GD_OK)
-        return cli_fail(&err);
-    gd_model m;
-    if (gd_model_build(c, &m, &err) != GD_OK)
+    /* every check before any work (check shows the case as probed, without LTCA) */
+    if (gd_case_prepare(c, a->check_only, &a->cost, &err) != GD_OK)
         return cli_fail(&err);
     return 0;
 }
@@ -124,15 +93,7 @@ int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_cas
     return rc;
 }
 
-int cli_threads(int requested)
-{
-#ifdef _OPENMP
-    return requested > 0 ? requested : omp_get_max_threads();
-#else
-    (void)requested;
-    return 1;
-#endif
-}
+int cli_threads(int requested) { return requested > 0 ? requested : gd_threads_default(); }
 
 void cli_print_defaulted(FILE *f, const gd_case *c, const char *prefix)
 {

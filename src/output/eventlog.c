@@ -171,3 +171,33 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
                        : sum->count[c][GD_EV_SEPARATION] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
     return st;
 }
+
+GD_API gd_status gd_eventlog_select(const char *path, const gd_eventlog_filter *flt, char **csv, size_t *len,
+                                    gd_eventlog_summary *sum, gd_error *err)
+{
+    *csv = NULL;
+    *len = 0;
+    gd_eventlog_filter all;
+    if (!flt) {
+        memset(&all, 0, sizeof all);
+        all.t_from_s = -INFINITY;
+        all.t_to_s = INFINITY;
+        flt = &all;
+    }
+    gd_eventlog_summary own;
+    char *buf = NULL;
+    size_t n = 0;
+    FILE *fp = open_memstream(&buf, &n);
+    if (!fp)
+        return gd_error_set(err, GD_ERR_NOMEM, "%s: out of memory for the selected events", path);
+    gd_status st = gd_eventlog_summarise(path, flt, fp, sum ? sum : &own, err);
+    if (fclose(fp) != 0 && st == GD_OK)
+        st = gd_error_set(err, GD_ERR_NOMEM, "%s: out of memory for the selected events", path);
+    if (st != GD_OK) {
+        free(buf);
+        return st;
+    }
+    *csv = buf;
+    *len = n;
+    return GD_OK;
+}

@@ -6,6 +6,7 @@
 
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_modal.h"
+#include "geardyn/gd_model.h"
 #include "geardyn/gd_output.h"
 
 /* A finite number, or null. */
@@ -23,6 +24,9 @@ json_t *gd_json_halves_int(const int v[2], int halves);
 json_t *gd_json_edge_names(unsigned bits);
 /* derived.modal of a dynamic run: the modes of the case's model (summary_modes.c), or their error. */
 json_t *gd_modal_json(const gd_case *c, const gd_modal *md);
+/* "derived" of a dynamic run: the pair's geometry (when it computes) and the model's scales
+ * (summary_json.c). */
+json_t *gd_json_response_derived(const gd_case *c, const gd_model *m);
 /* The files an analysis wrote, as an array (summary.json's "files"). */
 json_t *gd_json_files(const char *const *files, int nfiles);
 /* Write root as the file name of the run's directory (through gd_run_dir_create/commit) and

@@ -13,6 +13,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_scene.h"
 #include "geardyn/gd_basins.h"
 
 /* A file written under a temporary name and renamed into place on commit (gd_run_dir keeps one
@@ -28,6 +29,11 @@ gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err);
 void gd_atomic_abort(gd_atomic_file *f);
 /* mkdir -p */
 gd_status gd_mkdir_p(const char *dir, gd_error *err);
+
+/* geardyn check's values as JSON text (malloc'd): the case c (resolved as check resolves it), the
+ * derived values of its model m, its modes and the run's cost (check_json.c). */
+gd_status gd_check_json_text(const gd_case *c, const gd_model *m, const gd_run_cost *cost, char **text,
+                             gd_error *err);
 
 /* The event log: one CSV row per event (header with units). */
 void gd_eventlog_header(FILE *fp);

@@ -186,3 +186,6 @@ gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_mo
     json_object_set_new(root, "results", response_results_json(c, m, r));
     return gd_json_write_summary(d, root, err);
 }
+
+/* "derived" of a dynamic run as above, for geardyn check's JSON (check_json.c). */
+json_t *gd_json_response_derived(const gd_case *c, const gd_model *m) { return response_derived_json(c, m); }

@@ -106,17 +106,13 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err)
     return st;
 }
 
-GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
-                                    const char *dir, gd_error *err)
+GD_API gd_status gd_analysis_run_dir(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
+                                     gd_run_dir *out, gd_error *err)
 {
-    gd_run_dir *out = NULL;
     void *res = NULL;
-    gd_status st = gd_run_dir_open(dir, &out, err);
-    if (st == GD_OK) {
-        st = a->run(c, env, out, &res, err);
-        if (env && env->ran)
-            env->ran(env->user, c, st);
-    }
+    gd_status st = a->run(c, env, out, &res, err);
+    if (env && env->ran)
+        env->ran(env->user, c, st);
     if (st == GD_OK)
         st = a->write(c, res, out, err);
     if (st == GD_OK && env && env->pictures)
@@ -124,13 +120,23 @@ GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c,
     if (st == GD_OK)
         st = a->summary(c, res, out, err);
     if (st == GD_OK && env && env->should_stop && env->should_stop(env->user))
-        st = gd_error_set(err, GD_ERR_INTERRUPTED, "%s: interrupted: nothing published", dir);
+        st = gd_error_set(err, GD_ERR_INTERRUPTED, "%s: interrupted: nothing published", gd_run_dir_path(out));
     if (st == GD_OK)
         st = gd_run_dir_publish(out, err);
     if (st == GD_OK && env && env->done)
         env->done(env->user, c, res, out);
     if (res)
         a->free(res);
+    return st;
+}
+
+GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,
+                                    const char *dir, gd_error *err)
+{
+    gd_run_dir *out = NULL;
+    gd_status st = gd_run_dir_open(dir, &out, err);
+    if (st == GD_OK)
+        st = gd_analysis_run_dir(a, c, env, out, err);
     gd_run_dir_close(out);
     return st;
 }

@@ -213,11 +213,12 @@ static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const 
         quiet.pictures = env->pictures;
         quiet.should_stop = env->should_stop;
     }
-    char sdir[GD_PATH_MAX + 64], name[64];
-    st = gd_run_dir_make(out, err); /* the sub-directory is made in out's stage */
-    snprintf(sdir, sizeof sdir, "%s/%s", gd_run_dir_stage(out), sub);
+    char name[64];
+    gd_run_dir *sd = NULL;
+    st = gd_run_dir_open_sub(out, sub, &sd, err); /* made in out's stage (or kept with out's files) */
     if (st == GD_OK)
-        st = gd_analysis_run_in(gd_analysis_find(analysis), &t, &quiet, sdir, err);
+        st = gd_analysis_run_dir(gd_analysis_find(analysis), &t, &quiet, sd, err);
+    gd_run_dir_close(sd);
     gd_case_free(&t);
     snprintf(name, sizeof name, "%s/", sub);
     return st == GD_OK ? gd_run_dir_add(out, name, err) : st;

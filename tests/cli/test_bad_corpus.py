@@ -75,7 +75,9 @@ def snapshot(d):
     return out
 
 
-def run_case(exe, c, work):
+def prepare(c, work):
+    """The case's directory work made, its case file and other files written; returns the path
+    that CASE stands for (also tests/python/test_case.py's)."""
     os.makedirs(work)
     case = os.path.join(work, 'case.ini')
     data = unescape(c['bytes']) if 'bytes' in c else ('\n'.join(c['lines']) + '\n').encode('utf-8')
@@ -99,9 +101,19 @@ def run_case(exe, c, work):
             f.write('[scene]\n' + ('; ' + 'x' * 97 + '\n') * 11000)
     elif kind == 'missing':
         case = os.path.join(work, 'nothing-here.ini')
-    before = snapshot(work)
-    args = [a.replace('CASE', case).replace('OUT', os.path.join(work, 'out')).replace('DIR', work)
+    return case
+
+
+def args_of(c, case, work):
+    """The command line of the case, CASE, OUT and DIR replaced."""
+    return [a.replace('CASE', case).replace('OUT', os.path.join(work, 'out')).replace('DIR', work)
             for a in shlex.split(c['cmd'])]
+
+
+def run_case(exe, c, work):
+    case = prepare(c, work)
+    before = snapshot(work)
+    args = args_of(c, case, work)
     try:
         p = subprocess.run([exe] + args, cwd=work, stdin=subprocess.DEVNULL, capture_output=True, timeout=20)
         rc, err = p.returncode, p.stderr.decode('utf-8', 'replace')

@@ -5,7 +5,10 @@
 # output (times and thread counts masked; `text` blocks are not compared). The runs are the
 # guide's own, not shortened: about 20 s on 2 cores. The `bash` blocks of the guide (installing
 # and building) are not run: this test runs on the build they make. A block that calls mpirun is
-# skipped when geardyn was built without MPI or mpirun is missing. TAP output.
+# skipped when geardyn was built without MPI or mpirun is missing. The Python blocks run as the
+# guide says, from a source tree with its build in build/ (PYTHONPATH=build/python): build/ is this
+# build, examples/ the source tree's, and python3 the interpreter meson found with numpy
+# ($GEARDYN_PYTHON); without one (no numpy, or a build with ASan) they are skipped. TAP output.
 set -u
 G=${GEARDYN:?}
 SRC=${GEARDYN_SOURCE:?}
@@ -14,7 +17,10 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/bin" "$work/blocks"
 ln -s "$SRC/cases" "$work/cases"
+ln -s "$SRC/examples" "$work/examples"
 ln -s "$G" "$work/bin/geardyn"
+ln -s "$(cd "$(dirname "$G")/../.." && pwd)" "$work/build"   # G is BUILD/src/cli/geardyn
+[ -n "${GEARDYN_PYTHON:-}" ] && ln -s "$GEARDYN_PYTHON" "$work/bin/python3"
 
 # the sh blocks, one file each, and the output block after each (NN.out)
 awk -v dir="$work/blocks" '
@@ -40,6 +46,10 @@ for b in "${blocks[@]}"; do
     first=$(grep -m1 . "$b")
     if grep -q '^mpirun' "$b" && [ $mpi = 0 ]; then
         echo "ok $n - $first # SKIP geardyn built without MPI or mpirun missing"
+        continue
+    fi
+    if grep -q 'python3' "$b" && [ -z "${GEARDYN_PYTHON:-}" ]; then
+        echo "ok $n - $first # SKIP no python3 for the module (no numpy, or a build with ASan)"
         continue
     fi
     if ! (cd "$work" && PATH="$work/bin:$PATH" bash -e -o pipefail "$b") > "$work/out" 2>&1; then
