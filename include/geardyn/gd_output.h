@@ -66,7 +66,9 @@ typedef struct gd_eventlog_summary {
     long count[16][4];        /* per clearance and kind */
     double vmin[16], vmax[16], vsum[16], vsum2[16]; /* |relative velocity| at contacts, m/s */
     long ncontacts[16];
-    double t_first_s, t_last_s;
+    double t_first_s, t_last_s; /* of the selected events */
+    double log_t_min_s, log_t_max_s; /* of every event of the log (+inf, -inf: none) */
+    long log_period_min, log_period_max; /* their mesh periods */
     int regime[16];           /* per mesh clearance: gd_impact_regime from the events */
 } gd_eventlog_summary;
 

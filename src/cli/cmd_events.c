@@ -70,7 +70,32 @@ static int parse_events_args(int argc, char **argv, gd_eventlog_filter *f, const
         fprintf(stderr, "geardyn: no event log given (see geardyn --help)\n");
         return 2;
     }
+    if (!(f->t_from_s < f->t_to_s)) {
+        fprintf(stderr, "geardyn: --from %.9g --to %.9g selects nothing (valid: --from before --to)\n", f->t_from_s,
+                f->t_to_s);
+        return 2;
+    }
     return 0;
+}
+
+/* A --from or --to that leaves the window outside the log's events is a usage error: say what the
+ * log holds. Returns 0 or the exit status. */
+static int check_window(const char *path, const gd_eventlog_filter *f, const gd_eventlog_summary *sum)
+{
+    if (isinf(f->t_from_s) && isinf(f->t_to_s))
+        return 0;
+    const char *opt = f->t_from_s > sum->log_t_max_s ? "--from" : f->t_to_s < sum->log_t_min_s ? "--to" : NULL;
+    if (sum->rows == 0) {
+        fprintf(stderr, "geardyn: %s: the log holds no events, a time window selects nothing\n", path);
+        return 2;
+    }
+    if (!opt)
+        return 0;
+    fprintf(stderr, "geardyn: %s %.9g: %s the log's %s event (%s holds %ld events from t = %.9g s to %.9g s, "
+            "mesh periods %ld to %ld; valid: a window that meets them)\n", opt, opt[2] == 'f' ? f->t_from_s : f->t_to_s,
+            opt[2] == 'f' ? "after" : "before", opt[2] == 'f' ? "last" : "first", path, sum->rows, sum->log_t_min_s,
+            sum->log_t_max_s, sum->log_period_min, sum->log_period_max);
+    return 2;
 }
 
 /* Open the --csv file atomically through a run directory (its directory and name from the path);
@@ -144,6 +169,10 @@ int cmd_events(int argc, char **argv)
     gd_status st = csv ? open_csv(csv, &d, &fp, &err) : GD_OK;
     if (st == GD_OK)
         st = gd_eventlog_summarise(path, &f, fp, &sum, &err);
+    if (st == GD_OK && (rc = check_window(path, &f, &sum)) != 0) {
+        gd_run_dir_close(d); /* the export is not published */
+        return rc;
+    }
     if (st == GD_OK && fp)
         st = gd_run_dir_commit(d, fp, &err);
     if (st == GD_OK && d)

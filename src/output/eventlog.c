@@ -99,8 +99,8 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     lineno = 1;
     if (out_csv)
         fprintf(out_csv, "%s\n", EVENTLOG_HEADER);
-    sum->t_first_s = INFINITY;
-    sum->t_last_s = -INFINITY;
+    sum->t_first_s = sum->log_t_min_s = INFINITY;
+    sum->t_last_s = sum->log_t_max_s = -INFINITY;
     while (fgets(line, sizeof line, fp)) {
         lineno++;
         char copy[1024];
@@ -122,6 +122,15 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
         if (*end || !isfinite(t) || kind < 0) {
             st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: malformed row", path, lineno);
             break;
+        }
+        long period = strtol(f[1], NULL, 10);
+        if (sum->rows == 0 || t < sum->log_t_min_s) {
+            sum->log_t_min_s = t;
+            sum->log_period_min = period;
+        }
+        if (sum->rows == 0 || t > sum->log_t_max_s) {
+            sum->log_t_max_s = t;
+            sum->log_period_max = period;
         }
         sum->rows++;
         note_clearance(seen, &nseen, f[3]);
