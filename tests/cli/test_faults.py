@@ -203,6 +203,49 @@ def early_stops(kind, tmp, case, sets, frac=0.2):
             err.strip().splitlines()[-1] if err.strip() else ''))
 
 
+FAKE_GNUPLOT = """#!/bin/sh
+: > "$GEARDYN_TEST_GNUPLOT/started"
+sleep 2
+: > "$GEARDYN_TEST_GNUPLOT/survived"
+: > survived-in-its-directory
+"""
+
+
+def gnuplot_orphan(tmp, args, how):
+    """Run args with a stand-in for gnuplot that draws for 2 s, end the run while it draws (SIGINT
+    and SIGTERM together, or SIGKILL), wait 3 s, run again with the real gnuplot. Returns the exit
+    status of the ended run, whether the stand-in outlived it, and what the next run left (dot
+    names in DIR and stages beside it)."""
+    fake = os.path.join(tmp, 'fake-gnuplot')
+    os.makedirs(fake, exist_ok=True)
+    for n in ('started', 'survived'):
+        if os.path.exists(os.path.join(fake, n)):
+            os.unlink(os.path.join(fake, n))
+    exe = os.path.join(fake, 'gnuplot')
+    with open(exe, 'w') as f:
+        f.write(FAKE_GNUPLOT)
+    os.chmod(exe, 0o755)
+    env = dict(os.environ, PATH=fake + os.pathsep + os.environ.get('PATH', ''), GEARDYN_TEST_GNUPLOT=fake)
+    p = subprocess.Popen([G, 'run'] + args + ['--threads', '1'], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         env=env)
+    t0 = time.monotonic()
+    while not os.path.exists(os.path.join(fake, 'started')) and p.poll() is None and time.monotonic() - t0 < 120:
+        time.sleep(0.01)
+    if how == 'SIGKILL':
+        p.send_signal(signal.SIGKILL)
+    else:
+        p.send_signal(signal.SIGSTOP)
+        p.send_signal(signal.SIGINT)
+        p.send_signal(signal.SIGTERM)
+        p.send_signal(signal.SIGCONT)
+    p.communicate(timeout=600)
+    time.sleep(3)
+    survived = os.path.exists(os.path.join(fake, 'survived'))
+    d = args[args.index('--out') + 1]
+    rc, err = run(args)
+    return p.returncode, survived, state(d)[1] + beside(d) + ([] if rc == 0 and whole_set(d) else ['(no whole set)'])
+
+
 def main():
     tmp = tempfile.mkdtemp(prefix='geardyn-faults-')
     quick = os.path.join(SRC, 'cases', 'quickstart.ini')
@@ -266,6 +309,14 @@ def main():
     rc, err = run(oargs)
     ok(rc == 0 and state(o)[1] == [] and beside(o) == [] and whole_set(o),
        'the next run removes what it left (left %s)' % (state(o)[1] + beside(o)))
+    # a run ended while gnuplot draws (a second signal, SIGKILL) takes gnuplot with it: an orphan
+    # drawing on into the stage would race the next run's removal of it (and leave the stage
+    # beside DIR when it writes between the removal's listing and its rmdir)
+    for how in ('a second signal', 'SIGKILL'):
+        rc, survived, left = gnuplot_orphan(tmp, rargs, how)
+        ok(rc in ((130, 143) if how != 'SIGKILL' else (-9,)) and not survived and left == [],
+           'a run ended by %s while gnuplot draws: exit %d, gnuplot %s, the next run leaves %s' %
+           (how, rc, 'drew on after it' if survived else 'ended with it', left))
     # a killed run's stages (beside DIR, and DIR/.staging where DIR cannot be exchanged) and
     # gnuplot script are removed by the next run
     stage = os.path.join(tmp, '.response.geardyn-stage')
