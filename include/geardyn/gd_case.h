@@ -202,6 +202,9 @@ typedef struct gd_case {
     int *src_line;           /* file line (or --set index) per schema entry */
     int ltca_deferred;       /* 1 (geardyn check): resolving and building run no LTCA; the mesh stiffness of
                               * stiffness = ltca is ISO 6336-1's estimate until a run computes it */
+    gd_stop_hook stop;       /* asked before each position of the LTCA that resolving or building the model
+                              * of this case runs (gd_ltca_settings_from_case hands it on); copies keep it;
+                              * never part of a cache key. {NULL}: never stopped */
 } gd_case;
 
 typedef enum gd_keytype {

@@ -263,8 +263,8 @@ GD_API void gd_sweep_plan_free(gd_sweep_plan *p)
     p->slot_info = NULL;
 }
 
-static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
-                            gd_error *err);
+static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, const gd_stop_hook *stop,
+                            gd_case *out, gd_model *m, gd_error *err);
 
 /* The grid: the values of each axis (one value on an unused second axis), names and units. */
 static gd_status plan_grid(const gd_case *c, gd_sweep_plan *p, gd_error *err)
@@ -376,7 +376,7 @@ static gd_status plan_check_points(const gd_case *c, const gd_sweep_plan *p, gd_
         for (int i1 = 0; i1 < p->npoints[0]; i1++) {
             gd_case pc;
             gd_model pm;
-            gd_status st = point_case(c, p, i1, i2, &pc, &pm, err);
+            gd_status st = point_case(c, p, i1, i2, NULL, &pc, &pm, err);
             if (st != GD_OK) {
                 if (st != GD_ERR_NOMEM) {
                     char w[GD_PATH_MAX + 32];
@@ -544,12 +544,16 @@ GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_poin
     return GD_OK;
 }
 
-static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
-                            gd_error *err)
+/* The case of grid point (i1, i2), resolved, and its model; stop (NULL: the base case's) is asked
+ * by the point's LTCA. */
+static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, const gd_stop_hook *stop,
+                            gd_case *out, gd_model *m, gd_error *err)
 {
     gd_status st = gd_case_copy(out, base, err);
     if (st != GD_OK)
         return st;
+    if (stop)
+        out->stop = *stop;
     out->analysis = GD_ANALYSIS_RESPONSE; /* the copy is one response run */
     int idx[2] = {i1, i2};
     char at[600] = "";
@@ -588,7 +592,7 @@ GD_API gd_status gd_sweep_point_case(const gd_case *base, const gd_sweep_plan *p
 {
     if (slot < 0 || slot >= p->nslots)
         return gd_error_set(err, GD_ERR_INPUT, "sweep slot %d (valid: 0 to %d)", slot, p->nslots - 1);
-    return point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], out, m, err);
+    return point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], NULL, out, m, err);
 }
 
 gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
@@ -656,6 +660,18 @@ static int on_progress(void *user, long done, long total)
     return x->o->should_stop && x->o->should_stop(x->o->user);
 }
 
+/* The stop of a point's LTCA: the sweep's own (another point failed fatally) or the caller's. */
+typedef struct stop_ctx {
+    const gd_sweep_opts *o;
+    atomic_int *stop;
+} stop_ctx;
+
+static int point_should_stop(void *user)
+{
+    stop_ctx *s = user;
+    return atomic_load(s->stop) || (s->o->should_stop && s->o->should_stop(s->o->user));
+}
+
 static int fatal_code(gd_status st)
 {
     return st == GD_ERR_NOMEM || st == GD_ERR_INTERNAL || st == GD_ERR_IO || st == GD_ERR_INTERRUPTED;
@@ -672,7 +688,9 @@ static gd_status run_point(const gd_case *base, const gd_sweep_plan *p, gd_sweep
     gd_case c;
     gd_model m;
     gd_error e = {0};
-    gd_status st = gd_sweep_point_case(base, p, slot, &c, &m, &e);
+    stop_ctx sx = {o, stop};
+    const gd_stop_hook hook = {point_should_stop, &sx};
+    gd_status st = point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], &hook, &c, &m, &e);
     if (st != GD_OK) {
         if (fatal_code(st)) {
             *err = e;

@@ -85,6 +85,17 @@ static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
     return st;
 }
 
+/* results/NAME for a case file NAME.ini */
+static void default_out_dir(const char *case_path, char *out, size_t len)
+{
+    const char *base = strrchr(case_path, '/');
+    base = base ? base + 1 : case_path;
+    size_t l = strlen(base);
+    if (l > 4 && strcmp(base + l - 4, ".ini") == 0)
+        l -= 4;
+    snprintf(out, len, "results/%.*s", (int)l, base);
+}
+
 int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
@@ -95,6 +106,14 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     for (int i = 0; i < a->nsets; i++)
         if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
             return cli_fail(&err);
+    if (a->out_dir)
+        snprintf(a->dir, sizeof a->dir, "%s", a->out_dir);
+    else if (c->directory[0])
+        snprintf(a->dir, sizeof a->dir, "%s", c->directory);
+    else
+        default_out_dir(a->case_path, a->dir, sizeof a->dir);
+    if (!a->check_only)
+        c->stop = (gd_stop_hook){cli_should_stop, NULL}; /* the LTCA of the resolution */
     gd_case probe;
     if (gd_case_copy(&probe, c, &err) != GD_OK)
         return cli_fail(&err);
@@ -106,7 +125,7 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     }
     gd_case_free(&probe);
     if (gd_case_resolve(c, &err) != GD_OK)
-        return cli_fail(&err);
+        return cli_signal_caught() ? cli_interrupted(a->dir) : cli_fail(&err);
     gd_model m;
     if (gd_model_build(c, &m, &err) != GD_OK)
         return cli_fail(&err);

@@ -292,6 +292,16 @@ def main():
                  'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64', 'workprecision.repeats=1',
                  'workprecision.horizon_periods=5', 'run.transient_periods=100', 'run.record_periods=200'])
 
+    # the LTCA that a response's case or a sweep's points need (stiffness = ltca) asks the stop hook
+    # as it goes: in the resolution of the case, in the sweep's check of its points, within a solve
+    early_stops('response-ltca', tmp, 'cases/quickstart.ini',
+                ['excitation.stiffness=ltca', 'solver.ltca_face_slices=201', 'run.transient_periods=5',
+                 'run.record_periods=5'])
+    early_stops('sweep-ltca', tmp, 'cases/paper/sweep-power.ini',
+                ['sweep.parameter=solver.ltca_face_slices', 'sweep.from=21', 'sweep.to=201', 'sweep.points=2',
+                 'sweep.direction=up', 'operating.power_kw=200', 'run.transient_periods=5',
+                 'run.transient_max_periods=5', 'run.record_periods=5', 'run.lyapunov_exponents=0'])
+
     # a second run into a directory being written is refused, the first one ends well
     p = subprocess.Popen([G, 'run'] + rargs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     time.sleep(0.3)
