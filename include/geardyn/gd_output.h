@@ -59,6 +59,9 @@ typedef struct gd_eventlog_filter {
     int recorded_only;
 } gd_eventlog_filter;
 
+/* The filter that selects every event (no window, every clearance and kind): start from it. */
+GD_API gd_eventlog_filter gd_eventlog_filter_all(void);
+
 typedef struct gd_eventlog_summary {
     long rows, selected;
     int nclear;

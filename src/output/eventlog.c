@@ -80,6 +80,11 @@ static void note_clearance(char seen[][24], int *nseen, const char *name)
         snprintf(seen[(*nseen)++], 24, "%s", name);
 }
 
+GD_API gd_eventlog_filter gd_eventlog_filter_all(void)
+{
+    return (gd_eventlog_filter){.t_from_s = -INFINITY, .t_to_s = INFINITY};
+}
+
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err)
 {
