@@ -57,7 +57,8 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
                                  char *bad, size_t badlen)
 {
     char buf[256];
-    snprintf(buf, sizeof buf, "%s", spec[0] ? spec : "lambda_L, lambda_R");
+    int two = m->nmesh > 1; /* the right mesh's responses exist with two meshes only */
+    snprintf(buf, sizeof buf, "%s", spec[0] ? spec : two ? "lambda_L, lambda_R" : "lambda_L");
     int n = 0;
     char *save = NULL;
     for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
@@ -72,15 +73,14 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
         gd_sweep_response r;
         memset(&r, 0, sizeof r);
         r.kind = -1;
-        int rmesh = m->nmesh > 1 ? 1 : 0;
         if (strcmp(tok, "lambda_L") == 0 || strcmp(tok, "lambda") == 0)
             r.kind = GD_RESP_MESH, r.index = 0;
-        else if (strcmp(tok, "lambda_R") == 0)
-            r.kind = GD_RESP_MESH, r.index = rmesh;
+        else if (two && strcmp(tok, "lambda_R") == 0)
+            r.kind = GD_RESP_MESH, r.index = 1;
         else if (strcmp(tok, "lambda_dot_L") == 0 || strcmp(tok, "lambda_dot") == 0)
             r.kind = GD_RESP_MESH_RATE, r.index = 0;
-        else if (strcmp(tok, "lambda_dot_R") == 0)
-            r.kind = GD_RESP_MESH_RATE, r.index = rmesh;
+        else if (two && strcmp(tok, "lambda_dot_R") == 0)
+            r.kind = GD_RESP_MESH_RATE, r.index = 1;
         else {
             size_t l = strlen(tok);
             int rate = l > 4 && strcmp(tok + l - 4, "_dot") == 0;
@@ -93,7 +93,9 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
             }
         }
         if (r.kind < 0 || strlen(tok) >= sizeof r.name) {
-            char valid[512] = "lambda_L, lambda_R, lambda_dot_L, lambda_dot_R";
+            char valid[512];
+            snprintf(valid, sizeof valid, "%s",
+                     two ? "lambda_L, lambda_R, lambda_dot_L, lambda_dot_R" : "lambda_L, lambda_dot_L");
             for (int i = 0; i < m->ndof; i++) {
                 size_t u = strlen(valid);
                 snprintf(valid + u, sizeof valid - u, ", %s", m->dof_name[i]);

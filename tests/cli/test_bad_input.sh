@@ -93,7 +93,7 @@ shift = 0.3" "case.ini:4: optimize.shift: 0.3 for gear-lte \\(valid: 0; " "optim
 check_bad "[scene]
 model = torsional
 [output]
-response_variable = y1L" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, lambda_R, dte_L, dte_R, q\\)" "response variable of another model"
+response_variable = y1L" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, dte_L, q\\)" "response variable of another model"
 check_bad "[run]
 transient_periods = 500
 transient_max_periods = 400" "case.ini:3: run.transient_max_periods: 400 is below run.transient_periods = 500 \\(valid: 0, or at least transient_periods\\)" "adaptive transient shorter than the fixed one"

@@ -53,7 +53,7 @@ ref="$work/ref"
 "$G" run "$case" --out "$ref" --quiet --threads 1 > "$work/ref.txt" 2>&1; ok $? "sweep exits 0 ($(head -c 300 "$work/ref.txt"))"
 head -1 "$ref/sweep.csv" | grep -q "^parameter,direction,rms_accel_mps2,mle,motion,impact_regime"
 ok $? "sweep.csv has the stable columns ($(head -1 "$ref/sweep.csv"))"
-[ "$(head -1 "$ref/bifurcation.csv")" = "parameter,direction,lambda_L,lambda_R" ]
+[ "$(head -1 "$ref/bifurcation.csv")" = "parameter,direction,lambda_L" ]  # the torsional model: one mesh
 ok $? "bifurcation.csv has the stable columns ($(head -1 "$ref/bifurcation.csv"))"
 rows=$(($(wc -l < "$ref/sweep.csv") - 1)); [ "$rows" -eq $((2 * POINTS)) ]; ok $? "sweep.csv: one row per point and direction ($rows)"
 brows=$(($(wc -l < "$ref/bifurcation.csv") - 1)); [ "$brows" -eq $((2 * POINTS * (REC + 1))) ]
