@@ -132,6 +132,7 @@ typedef struct gd_case {
     double lyapunov_separation; /* two-trajectory: initial separation (dimensionless) */
     double periodicity_tol;  /* relative tolerance for equal Poincare points */
     double chaos_threshold_per_period; /* |MLE| per mesh period separating chaos / quasi-periodicity */
+    double max_time_s;       /* a run whose estimated time exceeds this is refused (gd_run_cost_check) */
     /* [output] */
     char directory[GD_PATH_MAX];
     int samples_per_period;

@@ -196,6 +196,8 @@ static const gd_keyspec schema[] = {
       "Poincare points closer than this (relative to 1 + the largest value of each state variable) are equal"),
     D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
       "largest Lyapunov exponent per mesh period above which a non-periodic motion is chaotic (|mle| below: quasi-periodic)"),
+    D("run", "max_time_s", "s", max_time_s, 1, 1e12, 0, 0, 86400,
+      "largest estimated run time, with the run's threads (geardyn check prints the estimate); a longer run is refused"),
 
     /* [output] */
     S("output", "directory", directory, "", "output directory (default: results/<case name>; --out overrides)"),

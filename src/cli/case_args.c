@@ -71,7 +71,7 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
 
 /* Resolve c without LTCA (as geardyn check does), build its model and check the run's estimated
  * cost: every check before any work, whatever the run would compute first. */
-static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
+static gd_status probe_cost(gd_case *c, int threads, gd_run_cost *cost, gd_error *err)
 {
     gd_model m;
     c->ltca_deferred = 1;
@@ -79,7 +79,7 @@ static gd_status probe_cost(gd_case *c, gd_run_cost *cost, gd_error *err)
     if (st == GD_OK)
         st = gd_model_build(c, &m, err);
     if (st == GD_OK) {
-        gd_run_cost_estimate(c, &m, cost);
+        gd_run_cost_estimate(c, &m, threads, cost);
         st = gd_run_cost_check(c, &m, cost, err);
     }
     return st;
@@ -117,7 +117,7 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     gd_case probe;
     if (gd_case_copy(&probe, c, &err) != GD_OK)
         return cli_fail(&err);
-    gd_status st = probe_cost(&probe, &a->cost, &err);
+    gd_status st = probe_cost(&probe, cli_threads(a->threads), &a->cost, &err);
     if (st != GD_OK || a->check_only) {  /* check shows the case as probed */
         gd_case_free(c);
         *c = probe;

@@ -32,7 +32,11 @@ int cmd_check(int argc, char **argv)
         else
             snprintf(where, sizeof where, "%s", gd_source_name(src));
         char lhs[1400];
-        snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "", s[i].unit);
+        if (s[i].type == GD_KEY_DOUBLE && isnan(*(const double *)((const char *)&c + s[i].offset)))
+            snprintf(lhs, sizeof lhs, "%s = none", s[i].key); /* not given and not derived: not used */
+        else
+            snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "",
+                     s[i].unit);
         printf("%-58s ; %s\n", lhs, where);
     }
     gd_geometry g;
@@ -66,8 +70,10 @@ int cmd_check(int argc, char **argv)
             printf("# with stiffness = ltca the mesh stiffness above is ISO 6336-1's; run replaces it by LTCA's mean\n");
     }
     const gd_run_cost *k = &a.cost;
-    printf("\n# estimated cost of the run (check runs no LTCA and no integration)\n");
-    printf("time_class = %s   ; about %.2g s\n", k->time_class, k->seconds);
+    char est[200];
+    gd_run_cost_format(k, est, sizeof est);
+    printf("\n# estimated cost of the run (check runs no LTCA and no integration; docs/performance.md)\n");
+    printf("time_class = %s   ; %s, limit run.max_time_s = %.4g s\n", k->time_class, est, c.max_time_s);
     if (k->points > 0)
         printf("integration = %.4g runs of %.4g mesh periods, about %.2g steps\n", k->points, k->periods, k->steps);
     if (k->ltca_unknowns > 0)

@@ -106,6 +106,11 @@ int cmd_run(int argc, char **argv)
     if (rc)
         return rc;
     const char *dir = a.dir;
+    if (a.cost.seconds > 60 && !a.quiet) { /* a long run says so before it starts */
+        char est[200];
+        gd_run_cost_format(&a.cost, est, sizeof est);
+        fprintf(stderr, "geardyn: this run is estimated at %s (limit run.max_time_s = %.4g s)\n", est, c.max_time_s);
+    }
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
     static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);

@@ -87,12 +87,15 @@ void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void 
 void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
 {
     (void)c;
-    const gd_response_result *res = &((const gd_response_outcome *)result)->res;
+    const gd_response_outcome *o = result;
+    const gd_response_result *res = &o->res;
     if (a->quiet)
         return;
-    printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2 (left %.6g, right %.6g)\n", dir, res->motion,
-           gd_impact_regime_name(res->impact_regime[2]), res->rms_accel_mps2[2], res->rms_accel_mps2[0],
-           res->rms_accel_mps2[1]);
+    printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2", dir, res->motion,
+           gd_impact_regime_name(res->impact_regime[2]), res->rms_accel_mps2[2]);
+    if (o->model.nmesh > 1) /* the meshes' own; one mesh is the combined */
+        printf(" (left %.6g, right %.6g)", res->rms_accel_mps2[0], res->rms_accel_mps2[1]);
+    printf("\n");
     printf("  %ld steps, %ld RHS evaluations, %ld events, %.3f s\n", res->stats.steps, res->stats.rhs_evals,
            res->stats.events, res->wall_s);
 }
