@@ -42,8 +42,9 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                           "with lines lw %d title 'best so far, run %d'", r + 1, r == o->best ? 3 : 1, r + 1);
         n += snprintf(script + n, sizeof script - n, "\nunset output\nunset logscale y\n");
         if (o->gear) {
-            double m[3];
-            for (int j = 0; j < 3; j++)
+            int nl = o->paper ? 4 : 3;
+            double m[4];
+            for (int j = 0; j < nl; j++)
                 m[j] = o->lte[j].lte_mean_arcsec;
             n += snprintf(script + n, sizeof script - n,
                 "set terminal %s\nset output '.lte%s.tmp'\n"
@@ -52,11 +53,16 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                 "plot 'lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 "
                 "title sprintf('unmodified: %.4f arcsec p-p'), "
                 "'' every ::1 using 1:($3 - %.10g) with linespoints pt 5 ps 0.5 lw 2 dt 2 "
-                "title sprintf('paper Table 2: %.4f arcsec p-p'), "
+                "title sprintf('the case''s modification: %.4f arcsec p-p'), "
                 "'' every ::1 using 1:($4 - %.10g) with linespoints pt 9 ps 0.6 lw 3 "
-                "title sprintf('optimum: %.4f arcsec p-p')\nunset output\n",
+                "title sprintf('optimum: %.4f arcsec p-p')",
                 fmt[fi][0], fmt[fi][1], c->torque_nm, m[0], o->lte[0].lte_pp_arcsec, m[1],
                 o->lte[1].lte_pp_arcsec, m[2], o->lte[2].lte_pp_arcsec);
+            if (o->paper)
+                n += snprintf(script + n, sizeof script - n,
+                    ", '' every ::1 using 1:($5 - %.10g) with linespoints pt 4 ps 0.5 lw 1 dt 3 "
+                    "title sprintf('the paper''s Table 2: %.4f arcsec p-p')", m[3], o->lte[3].lte_pp_arcsec);
+            n += snprintf(script + n, sizeof script - n, "\nunset output\n");
         }
     }
     if (n >= (int)sizeof script)
@@ -76,7 +82,9 @@ void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void 
     }
 }
 
-/* The progress report: the best run, its variables and for the gear the LTE of the three pairs. */
+/* The progress report: the best run, its variables and for the gear the LTE of the unmodified pair,
+ * the case's own modification and the optimum (and the paper's Table 2 for the paper's pair), the
+ * variables without effect, and whether the run had converged. */
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
 {
     const gd_optimize_outcome *o = result;
@@ -93,14 +101,27 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
     for (int i = 0; i < o->dim; i++) {
         const char *unit = "", *sym = o->names[i];
         if (o->gear)
-            gd_opt_gear_variable(i, &unit, &sym);
-        printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g\n", sym, o->names[i], b->y[i], unit, o->lower[i],
-               o->upper[i], o->gear ? "Table 2" : "minimiser", o->reference[i]);
+            gd_opt_gear_variable(o->vars.var[i], &unit, &sym);
+        printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g", sym, o->names[i], b->y[i], unit, o->lower[i],
+               o->upper[i], o->gear ? "case" : "minimiser", o->reference[i]);
+        if (o->gear && o->paper)
+            printf(", Table 2 %g", o->table2[i]);
+        if (o->gear && o->no_effect[i][0])
+            printf("   (%s)", o->no_effect[i]);
+        printf("\n");
     }
-    if (o->gear)
-        printf("  LTE peak-to-peak: unmodified %.6g, Table 2 %.6g, optimum %.6g arcsec (%+.1f %% against the "
-               "unmodified pair; the paper: 4.194 -> 1.157, -72.41 %%)\n", o->lte[0].lte_pp_arcsec,
+    if (o->gear) {
+        printf("  LTE peak-to-peak: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec (%+.1f %% "
+               "against the unmodified pair, %+.1f %% against the case's)\n", o->lte[0].lte_pp_arcsec,
                o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
-               100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec);
+               100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec,
+               100 * (o->lte[2].lte_pp_arcsec - o->lte[1].lte_pp_arcsec) / o->lte[1].lte_pp_arcsec);
+        if (o->paper)
+            printf("  the paper's pair: its Table 2 gives %.6g arcsec here; the paper: 4.194 -> 1.157, -72.41 %%\n",
+                   o->lte[3].lte_pp_arcsec);
+    }
+    if (!o->converged)
+        printf("  not converged: the best value fell by %.3g %% over the last tenth of the evaluations (best at "
+               "evaluation %ld of %ld); more iterations may lower it\n", 100 * o->last_tenth_improvement, b->best_at,
+               b->evaluations);
 }
-

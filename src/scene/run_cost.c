@@ -294,12 +294,37 @@ static double contin_seconds(const gd_case *c, const gd_model *m, double w, doub
     return transient_periods(c) * per * step_s + points * 17 * nper * per * step_s * (1 + 0.4 * m->n) + 2 * PICTURE_S;
 }
 
+/* Basins: every initial state (the picture's cells and the random sample, at each value of the
+ * parameter) a trajectory until the recurrences stop it, the states spread over the threads. On a
+ * full section (a one-coordinate model: basin hits on) a trajectory ends after about 14 mesh periods
+ * (12 on the shipped Kahraman & Singh picture, 14 on its sample), on a larger state (no basin hits)
+ * after about 90 (89 on the paper's pair at 4750 rpm), at most basins.max_periods (docs/basins.md
+ * section 9). The memory: the tessellation (4 bytes a cell), the picture's labels and the sample's
+ * states; the files: basins.csv 33 bytes a cell, the attractors and fractions about 2 kB a value. */
+static double basins_cost(const gd_case *c, const gd_model *m, double w, gd_run_cost *cost, double *parallel,
+                          double *files, double *window)
+{
+    double per, step_s;
+    solver_steps(c, m, w, &per, &step_s);
+    double ry = c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution, m2 = 1.0 + 2.0 * c->bas_margin;
+    double cells = c->bas_picture && !c->bas_parameter[0] ? (double)c->bas_resolution * ry : 0.0;
+    double values = c->bas_parameter[0] ? c->bas_points : 1;
+    cost->points = (cells + c->bas_samples) * values;
+    cost->periods = fmin(m->n == 2 ? 14 : 90, c->bas_max_periods);
+    cost->steps = cost->points * cost->periods * per;
+    *parallel = cost->points;
+    *window = 4.0 * (c->bas_resolution * m2) * (ry * m2) + 4.0 * cells + (8.0 * m->n + 4.0) * c->bas_samples +
+              16.0 * c->bas_max_periods;
+    *files = 33.0 * cells + values * 2000.0 + 1.5e5; /* summary.json about 35 kB, the pictures about 110 kB */
+    return cost->steps * step_s + (c->plots ? 2 * PICTURE_S + 2e-6 * cells : 0);
+}
+
 GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, int threads, gd_run_cost *cost)
 {
     memset(cost, 0, sizeof *cost);
     double w = highest_frequency(m);
     double run_cpu = 0, run_bytes = 0, run_steps = 0, parallel = 1, cpu = 0, files = 0, window = 0;
-    int ltca = c->stiffness == GD_STIFF_LTCA || c->impact;
+    int ltca = c->stiffness == GD_STIFF_LTCA || c->impact || (c->ste_source == GD_STE_LTCA && c->error_excitation);
     cost->ltca_unknowns = ltca || c->analysis == GD_ANALYSIS_LTCA || c->analysis == GD_ANALYSIS_OPTIMIZE ||
                           (c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS && strstr(c->opt_objective, "gear-lte"))
                         ? ltca_points(c) : 0;
@@ -349,6 +374,9 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, int thread
         break;
     case GD_ANALYSIS_CONTINUATION:
         cpu = contin_seconds(c, m, w, &files) + dyn_ltca;
+        break;
+    case GD_ANALYSIS_BASINS:
+        cpu = basins_cost(c, m, w, cost, &parallel, &files, &window) + dyn_ltca;
         break;
     default:
         break;
@@ -408,7 +436,15 @@ GD_API void gd_run_cost_format(const gd_run_cost *cost, char *buf, size_t len)
 static void time_sources(const gd_case *c, const gd_model *m, const gd_run_cost *cost, char *buf, size_t len)
 {
     buf[0] = '\0';
-    if (cost->steps > 0)
+    if (c->analysis == GD_ANALYSIS_BASINS)
+        snprintf(buf, len, "%.3g integration steps: %.4g initial states (basins.resolution = %d, resolution_y = %d, "
+                 "picture = %s, samples = %d, points = %d) of about %.3g mesh periods (at most basins.max_periods = %d) "
+                 "at about %.3g steps each (from solver.method, solver.rtol, solver.max_step_fraction = %g and the "
+                 "frequency ratio %.3g of operating.speed_rpm = %g)", cost->steps, cost->points, c->bas_resolution,
+                 c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution, c->bas_picture ? "on" : "off",
+                 c->bas_samples, c->bas_parameter[0] ? c->bas_points : 1, cost->periods, c->bas_max_periods,
+                 cost->steps / fmax(cost->points * cost->periods, 1), c->max_step_fraction, m->Omega, c->speed_rpm);
+    else if (cost->steps > 0)
         snprintf(buf, len, "%.3g integration steps: %.4g runs of %.4g mesh periods at about %.3g steps each (from "
                  "solver.method, solver.rtol, solver.max_step_fraction = %g and the frequency ratio %.3g of "
                  "operating.speed_rpm = %g)", cost->steps, cost->points, cost->periods,
@@ -478,6 +514,16 @@ GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd
                             "natural frequency %.4g Hz, a run would not end (valid: a mesh frequency of at least "
                             "1e-4 of the natural one: speed_rpm >= %.3g)", w, m->mesh_freq_hz, c->speed_rpm,
                             c->teeth_pinion, m->Omega, m->omega_n / (2 * M_PI), c->speed_rpm * 1e-4 / m->Omega);
+    }
+    if (c->analysis == GD_ANALYSIS_BASINS && (cost->disk_bytes > c->max_bytes || cost->memory_bytes > c->max_bytes)) {
+        int disk = cost->disk_bytes > c->max_bytes;
+        gd_case_key_where(c, "output", "max_bytes", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: output.max_bytes: the basins would %s about %.3g bytes (from "
+                            "basins.resolution = %d, resolution_y = %d, margin = %g, samples = %d, max_periods = %d), "
+                            "above output.max_bytes = %.4g (valid: raise output.max_bytes, or fewer cells or samples)",
+                            w, disk ? "write" : "hold in memory", disk ? cost->disk_bytes : cost->memory_bytes,
+                            c->bas_resolution, c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution,
+                            c->bas_margin, c->bas_samples, c->bas_max_periods, c->max_bytes);
     }
     if (cost->disk_bytes > c->max_bytes || cost->memory_bytes > c->max_bytes) {
         int disk = cost->disk_bytes > c->max_bytes;
