@@ -41,6 +41,14 @@ ok $? "a run estimated above a minute says so when it starts: $(head -1 "$work/l
     --set output.plots=off > "$work/s.txt" 2>&1
 ! grep -q "estimated at" "$work/s.txt"; ok $? "a short run does not"
 
+# a basins run is estimated from its initial states too (the picture's cells and the sample, each a
+# trajectory of about 14 mesh periods on a one-coordinate model) and refused above the limit
+"$G" run "$SRC/cases/basins/ks-hysteresis.ini" --out "$work/basins" --set run.max_time_s=2 > "$work/b.txt" 2>&1; rc=$?
+[ $rc -eq 2 ]; ok $? "basins estimated above run.max_time_s = 2: exit status 2 (got $rc)"
+grep -q "run.max_time_s: the run is estimated at about .* from .* integration steps: 5e+04 initial states (basins.resolution = 200, resolution_y = 200, picture = on, samples = 10000" \
+    "$work/b.txt"; ok $? "and names its states and keys: $(head -c 400 "$work/b.txt")"
+[ ! -e "$work/basins" ]; ok $? "and writes nothing"
+
 # check prints no NaN: a key unset and not derived reads "none"; every shipped case has an estimate
 nan=""; noest=""
 for f in "$SRC"/cases/*.ini "$SRC"/cases/*/*.ini; do
