@@ -247,6 +247,12 @@ def gnuplot_orphan(tmp, args, how):
 
 
 def main():
+    # a test started in the background of a script (SIGINT ignored) or under nohup (SIGHUP ignored)
+    # hands the ignored signals to every run, and geardyn rightly leaves an ignored signal ignored:
+    # the runs would go on through the signals sent to them. The runs get the default actions.
+    for s in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM, signal.SIGQUIT):
+        if signal.getsignal(s) == signal.SIG_IGN:
+            signal.signal(s, signal.SIG_DFL)
     tmp = tempfile.mkdtemp(prefix='geardyn-faults-')
     quick = os.path.join(SRC, 'cases', 'quickstart.ini')
     # response: small tables, so that a limit between the tables and the pictures truncates a picture
