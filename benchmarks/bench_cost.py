@@ -24,8 +24,14 @@ import time
 FACTOR = 3.0
 
 
+def overlay(case):
+    """A continuation that overlays a sweep's results runs without them (they are another case's)."""
+    with open(case) as f:
+        return ['--set', 'continuation.overlay_sweep='] if re.search(r'^overlay_sweep\s*=', f.read(), re.M) else []
+
+
 def estimate(g, case):
-    out = subprocess.run([g, 'check', case], capture_output=True, text=True)
+    out = subprocess.run([g, 'check', case] + overlay(case), capture_output=True, text=True)
     if out.returncode != 0:
         return None
     est = {}
@@ -53,7 +59,7 @@ def du(d):
 def measure(g, case, out, threads):
     r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
-    args = [g, 'run', case, '--out', out, '--quiet']
+    args = [g, 'run', case, '--out', out, '--quiet'] + overlay(case)
     if threads:
         args += ['--threads', str(threads)]
     p = subprocess.run(args, capture_output=True, text=True)

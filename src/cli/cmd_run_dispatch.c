@@ -107,6 +107,8 @@ int cmd_run(int argc, char **argv)
     if (rc)
         return rc;
     const char *dir = a.dir;
+    if (!a.quiet)
+        cli_print_defaulted(stderr, &c, "geardyn: ");
     if (a.cost.seconds > 60 && !a.quiet) { /* a long run says so before it starts */
         char est[200];
         gd_run_cost_format(&a.cost, est, sizeof est);

@@ -20,17 +20,19 @@ static resp_cols response_columns(int response, int n, int nmesh)
     /* branch.csv: branch, period_n, point, key, p, stable, mu_max, 2n multipliers, then the measures;
      * bifurcations.csv: branch, period_n, kind, key, lo, hi, p, mu_re, mu_im, clearance, the measures
      * (rms_accel_mps2, rms_accel_L_mps2, [rms_accel_R_mps2,] lambda_min_L_um, lambda_max_L_um,
-     * [lambda_min_R_um, lambda_max_R_um,] lambda_L: the _R columns with two meshes only) */
-    const int two = nmesh > 1, offset[] = {0, 3 + two, 2 + two, 4 + 3 * two};
+     * [lambda_min_R_um, lambda_max_R_um,] lambda_L, dynamic_load_factor: the _R columns with two meshes only) */
+    const int two = nmesh > 1, offset[] = {0, 3 + two, 2 + two, 4 + 3 * two, 5 + 3 * two};
     static const char *label[] = {"RMS mesh acceleration (m/s^2)", "largest mesh deflection lambda_L (um)",
                                   "smallest mesh deflection lambda_L (um)",
-                                  "lambda_L at mesh phase 0 (dimensionless)"};
+                                  "lambda_L at mesh phase 0 (dimensionless)",
+                                  "dynamic load factor (largest mesh force / static, -)"};
     resp_cols r;
     r.branch_col = 8 + 2 * n + offset[response];
     r.bif_col = 11 + offset[response];
     r.label = label[response];
     r.sweep_file = response == GD_CONT_RESP_POINCARE ? "bifurcation.csv" : "sweep.csv";
-    r.sweep_col = response == GD_CONT_RESP_POINCARE ? "lambda_L" : "rms_accel_mps2";
+    r.sweep_col = response == GD_CONT_RESP_POINCARE ? "lambda_L"
+                : response == GD_CONT_RESP_DYNAMIC_LOAD_FACTOR ? "dynamic_load_factor" : "rms_accel_mps2";
     return r;
 }
 

@@ -27,8 +27,9 @@ static void num(FILE *fp, double v)
 static void measure_header(FILE *fp, const gd_contin_result *res)
 {
     int two = res->nmesh > 1;
-    fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2%s,lambda_min_L_um,lambda_max_L_um%s,lambda_L",
-            two ? ",rms_accel_R_mps2" : "", two ? ",lambda_min_R_um,lambda_max_R_um" : "");
+    fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2%s,lambda_min_L_um,lambda_max_L_um%s,lambda_L,dynamic_load_factor,"
+            "dynamic_load_factor_L%s", two ? ",rms_accel_R_mps2" : "", two ? ",lambda_min_R_um,lambda_max_R_um" : "",
+            two ? ",dynamic_load_factor_R" : "");
 }
 
 static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_measure *m)
@@ -45,6 +46,10 @@ static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_m
         num(fp, m->lambda_max_um[1]);
     }
     num(fp, m->lambda_poincare);
+    num(fp, two ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0]);
+    num(fp, m->dynamic_load_factor[0]);
+    if (two)
+        num(fp, m->dynamic_load_factor[1]);
 }
 
 static gd_status write_branch(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
