@@ -11,46 +11,33 @@
  * comparison the program prints the ISO 6336-1 mesh stiffness c_gamma b of the same pair
  * (gd_iso6336_mesh_stiffness), an independent estimate from a formula fitted to measurements.
  *
- * Every field of the pair and the settings is set here; a field the drawing does not give takes
- * the default of its case key (`geardyn keys`), so that this pair is the one `geardyn run
- * cases/guide/spur.ini --set scene.analysis=ltca` analyses. The test `example_ltca`
- * (tests/test_examples.py) checks the mean stiffness against that run's summary.json. */
+ * The pair and the settings start from their defaults (gd_pair_defaults, gd_ltca_settings_defaults:
+ * the defaults of their case keys, `geardyn keys`) and set what the drawing and the load give, so
+ * that this pair is the one `geardyn run cases/guide/spur.ini --set scene.analysis=ltca` analyses.
+ * The test `example_ltca` (tests/test_examples.py) checks the mean stiffness against that run's
+ * summary.json. */
 #include <geardyn/geardyn.h>
 
 #include <stdio.h>
 
 int main(void)
 {
-    gd_pair pair = {
-        .arrangement = GD_ARR_SPUR,
-        .pinion_hand = GD_HAND_RIGHT,           /* no helix: irrelevant for a spur pair */
-        .normal_module_mm = 3.0,
-        .helix_angle_deg = 0.0,
-        .normal_pressure_angle_deg = 20.0,
-        .teeth_pinion = 25,
-        .teeth_gear = 60,
-        .profile_shift_pinion = 0.2,
-        .profile_shift_gear = -0.2,
-        .addendum_coefficient = 1.0,            /* the standard basic rack (ISO 53) */
-        .dedendum_coefficient = 1.25,
-        .face_width_pinion_mm = 30.0,
-        .face_width_gear_mm = 30.0,
-        .groove_width_mm = 50.0,                /* the key's default; a single pair has no groove */
-        .bore_diameter_pinion_mm = 30.0,
-        .bore_diameter_gear_mm = 60.0,
-        .youngs_modulus_gpa = 206.0,            /* steel */
-        .poisson_ratio = 0.3,
-        .density_kg_per_m3 = 7850.0,
-        /* the modification amounts and the misalignment: zero (designated initialisation) */
-    };
-    gd_ltca_settings set = {
-        .torque_nm = 120.0,                     /* at the pinion */
-        .pinion_axial = GD_PINION_FLOATING,     /* matters for a herringbone pair only */
-        .positions_per_cycle = 32,
-        .face_slices = 21,
-        .profile_points = 15,                   /* the TCA grid under the LTCA */
-        .refine = 1,
-    };
+    gd_pair pair = gd_pair_defaults();          /* steel, ISO 53 rack, unmodified, aligned */
+    pair.arrangement = GD_ARR_SPUR;
+    pair.normal_module_mm = 3.0;
+    pair.helix_angle_deg = 0.0;
+    pair.normal_pressure_angle_deg = 20.0;
+    pair.teeth_pinion = 25;
+    pair.teeth_gear = 60;
+    pair.profile_shift_pinion = 0.2;
+    pair.profile_shift_gear = -0.2;
+    pair.face_width_pinion_mm = 30.0;
+    pair.face_width_gear_mm = 30.0;
+    pair.bore_diameter_pinion_mm = 30.0;
+    pair.bore_diameter_gear_mm = 60.0;
+
+    gd_ltca_settings set = gd_ltca_settings_defaults(); /* 32 positions, 21 slices; no load */
+    set.torque_nm = 120.0;                      /* at the pinion */
 
     gd_error err = {0};
     gd_ltca_result r;

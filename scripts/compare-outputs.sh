@@ -68,6 +68,9 @@ SHORTEN=(
   'basins.points=4 basins.samples=300'
   'cases/basins/*.ini'
   'basins.resolution=50 basins.samples=1000'
+  # a continuation drawn over another case's sweep, whose results a fresh tree lacks: without them.
+  'cases/guide/*-continuation.ini'
+  'continuation.overlay_sweep='
 )
 
 # Allowed to differ. JSON keys (any depth): geardyn_version; wall_s (solver/optimiser/LTCA/TCA/

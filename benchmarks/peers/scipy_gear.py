@@ -339,7 +339,7 @@ def read_poincare(path):
     rows = []
     with open(path) as f:
         head = f.readline().strip().split(",")
-        first = head.index("lambda_R") + 2
+        first = max(head.index(c) for c in ("lambda_dot_L", "lambda_dot_R") if c in head) + 1
         for line in f:
             v = line.strip().split(",")
             rows.append([float(x) for x in v[first:]])

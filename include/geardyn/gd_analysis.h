@@ -128,11 +128,13 @@ GD_API gd_status gd_case_resolve(gd_case *c, gd_error *err);
 
 /* Every check geardyn run makes before any work, in its order, so that a program gets the same
  * refusal with the same message: c resolved without LTCA (gd_case.ltca_deferred), its model built,
- * the run's cost estimated into *cost (may be NULL) and checked (gd_run_cost_check); then, unless
+ * the run's cost on `threads` threads (0: gd_threads_default) estimated into *cost (may be NULL)
+ * and checked (gd_run_cost_check); then, unless
  * check_only, c itself resolved and its model built (which computes the case's LTCA when it asks
  * for it). check_only: c becomes the case resolved without LTCA, as geardyn check shows it. On a
  * refusal c may be partly resolved: free it. */
-GD_API gd_status gd_case_prepare(gd_case *c, int check_only, gd_run_cost *cost, gd_error *err);
+GD_API gd_status gd_case_prepare(gd_case *c, int check_only, int threads, gd_run_cost *cost,
+                                 gd_error *err);
 /* What geardyn check shows of c (loaded, not resolved), as JSON text in *json (gd_free it):
  * {"analysis", "case": {"path", "parameters"}, "derived": {"geometry", "model", "modal",
  * "mesh_stiffness_estimated"}, "cost": {...}}; the refusals of gd_case_prepare. */

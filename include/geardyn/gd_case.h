@@ -150,6 +150,7 @@ typedef struct gd_case {
     double lyapunov_separation; /* two-trajectory: initial separation (dimensionless) */
     double periodicity_tol;  /* relative tolerance for equal Poincare points */
     double chaos_threshold_per_period; /* |MLE| per mesh period separating chaos / quasi-periodicity */
+    double max_time_s;       /* a run whose estimated time exceeds this is refused (gd_run_cost_check) */
     /* [output] */
     char directory[GD_PATH_MAX];
     int samples_per_period;
@@ -243,6 +244,9 @@ typedef struct gd_case {
     int *src_line;           /* file line (or --set index) per schema entry */
     int ltca_deferred;       /* 1 (geardyn check): resolving and building run no LTCA; the mesh stiffness of
                               * stiffness = ltca is ISO 6336-1's estimate until a run computes it */
+    gd_stop_hook stop;       /* asked before each position of the LTCA that resolving or building the model
+                              * of this case runs (gd_ltca_settings_from_case hands it on); copies keep it;
+                              * never part of a cache key. {NULL}: never stopped */
 } gd_case;
 
 typedef enum gd_keytype {

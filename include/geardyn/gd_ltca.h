@@ -98,6 +98,11 @@ typedef struct gd_ltca_settings {
                                 solved (not part of the LTCA's cache key: it does not change the result) */
 } gd_ltca_settings;
 
+/* Every field the default of its case key (support.pinion_axial, [solver] ltca_* and tca_*), no
+ * stop hook, and no load: torque_nm is NaN, which gd_ltca_create and gd_ltca_run refuse until the
+ * caller sets it. */
+GD_API gd_ltca_settings gd_ltca_settings_defaults(void);
+
 /* Workspace of one pair: TCA workspace, tooth compliance tables, matrices; create once, solve
  * many positions (not thread-safe: one per thread). set->face_slices sets the slices per half (the
  * TCA face grid), set->pinion_axial the axial support of the pinion; the torque of a solve is its

@@ -74,6 +74,9 @@ typedef struct gd_eventlog_filter {
     int recorded_only;
 } gd_eventlog_filter;
 
+/* The filter that selects every event (no window, every clearance and kind): start from it. */
+GD_API gd_eventlog_filter gd_eventlog_filter_all(void);
+
 typedef struct gd_eventlog_summary {
     long rows, selected;
     int nclear;
@@ -81,12 +84,16 @@ typedef struct gd_eventlog_summary {
     long count[16][4];        /* per clearance and kind */
     double vmin[16], vmax[16], vsum[16], vsum2[16]; /* |relative velocity| at contacts, m/s */
     long ncontacts[16];
-    double t_first_s, t_last_s;
+    double t_first_s, t_last_s; /* of the selected events */
+    double log_t_min_s, log_t_max_s; /* of every event of the log (+inf, -inf: none) */
+    long log_period_min, log_period_max; /* their mesh periods */
     int regime[16];           /* per mesh clearance: gd_impact_regime from the events */
 } gd_eventlog_summary;
 
 /* Read an event log, filter it, summarise it; rows that pass the filter are copied to
- * out_csv when not NULL (with the header). */
+ * out_csv when not NULL (with the header). A time window (t_from_s, t_to_s not both infinite)
+ * that can select nothing is refused (GD_ERR_INPUT, saying what the log holds): from at or after
+ * to, a window wholly before the log's first event or after its last, any window on an empty log. */
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err);
 /* The same with the selected rows (and the header) as CSV text in *csv (malloc'd: gd_free), *len

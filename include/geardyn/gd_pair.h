@@ -37,6 +37,12 @@ typedef struct gd_pair {
     double axis_in_plane_arcmin, axis_cross_plane_arcmin, centre_distance_error_mm;
 } gd_pair;
 
+/* The pair of a case that gives none of these keys: every field the default of its case key (the
+ * schema's, `geardyn keys`: the paper's herringbone pair, unmodified and aligned). A C caller
+ * starts from it and sets what its drawing gives:
+ *     gd_pair p = gd_pair_defaults(); p.arrangement = GD_ARR_SPUR; p.teeth_pinion = 25; ... */
+GD_API gd_pair gd_pair_defaults(void);
+
 #ifdef __cplusplus
 }
 #endif

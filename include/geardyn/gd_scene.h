@@ -42,24 +42,30 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err);
 GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err);
 
 /* What a run of a resolved case will cost, estimated from its keys and its built model before
- * any work (docs/architecture.md): the mesh periods integrated and the integration steps (from
- * the frequency ratio: about 170 steps per natural period, at least 1 / max_step_fraction per
- * mesh period; measured on the quickstart case), the memory the recorded window holds and the
- * bytes of the files, the size and time of an LTCA. Estimates within a factor of a few. */
+ * any work (docs/performance.md, "The cost estimate", gives the model and how close it comes on
+ * the shipped cases: benchmarks/bench_cost.py): the integration steps (from the model's highest
+ * natural frequency and the frequency ratio, the method, rtol and max_step_fraction), the LTCA,
+ * TCA, optimiser evaluations and continuation points, the pictures, the memory the recorded window
+ * holds and the bytes of every file the analysis writes. threads: the threads the run will use
+ * (its sweep points, optimiser evaluations and runs go in parallel); <= 0: 1. */
 typedef struct gd_run_cost {
-    double points;           /* dynamic runs (sweep points, 1 for a response; 0: no integration) */
+    double points;           /* dynamic runs (sweep points, 1 for a response; 0: none of its own) */
     double periods;          /* mesh periods integrated per run */
     double steps;            /* integration steps, all runs */
     double memory_bytes;     /* held at once by the recorded window (and the LTCA matrices) */
-    double disk_bytes;       /* written */
+    double disk_bytes;       /* written: every table, summary.json and the pictures */
     double ltca_unknowns;    /* contact points of one LTCA position (0: no LTCA) */
-    double seconds;          /* order of magnitude of the run time */
-    const char *time_class;  /* "seconds", "minutes", "hours", "days or more" */
+    double cpu_seconds;      /* CPU time, all threads and gnuplot's */
+    double seconds;          /* wall time with `threads` threads on an otherwise idle machine */
+    int threads;             /* the threads assumed */
+    const char *time_class;  /* of seconds: "seconds", "minutes", "hours", "days or more" */
 } gd_run_cost;
-GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cost *cost);
+GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, int threads, gd_run_cost *cost);
+/* "about 3.2e+08 s (10 years) on 2 threads (6.4e+08 s (20 years) of CPU)" */
+GD_API void gd_run_cost_format(const gd_run_cost *cost, char *buf, size_t len);
 /* The derived values checked before any work: a mesh frequency at least 1e-4 of the natural one
- * (a slower run would never end), memory and files within output.max_bytes. The messages name
- * the keys the value comes from; GD_ERR_INPUT. */
+ * (a slower run would never end), memory and files within output.max_bytes, the estimated time
+ * within run.max_time_s. The messages name the keys the value comes from; GD_ERR_INPUT. */
 GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd_run_cost *cost, gd_error *err);
 
 /* The modal analysis of the model m of the resolved case c (docs/model.md section 9.7): m linearised

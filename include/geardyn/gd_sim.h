@@ -51,6 +51,10 @@ typedef struct gd_solver_opts {
                               * interp_degree); custom systems always use ARKODE's */
 } gd_solver_opts;
 
+/* The options of a case's default [solver] keys (gd_solver_opts_from_case of a case that gives
+ * none): ERK order 8, rtol 1e-8, events located, the compiled RHS; no tangent vectors. */
+GD_API gd_solver_opts gd_solver_opts_defaults(void);
+
 
 typedef enum gd_event_kind {
     GD_EV_CONTACT = 0,       /* into drive-side contact (bearing: positive side) */

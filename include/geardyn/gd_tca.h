@@ -51,6 +51,9 @@ typedef struct gd_tca_settings {
     gd_stop_hook stop;               /* gd_tca_run: asked before each pinion position of each half */
 } gd_tca_settings;
 
+/* Every field the default of its case key ([solver] tca_*), no stop hook. */
+GD_API gd_tca_settings gd_tca_settings_defaults(void);
+
 /* The first contact of one half at one pinion position. */
 typedef struct gd_tca_contact {
     double phi1;          /* pinion angle */

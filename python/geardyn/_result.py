@@ -223,7 +223,9 @@ def events(path, t_from=None, t_to=None, clearance=None, kind=None, recorded=Fal
     with the filters of geardyn events: the rows with t_from <= t_s <= t_to, of one clearance
     ('mesh-L', 'bearing-1R', ...), of one kind (contact, separation, back-contact,
     back-separation), of the recorded window only. The library reads and checks the log
-    (gd_eventlog_select): CaseError for a file that is not an event log or a clearance it lacks."""
+    (gd_eventlog_select): CaseError for a file that is not an event log, a clearance it lacks, or
+    a time window that selects nothing (the message names t_from and t_to as geardyn events' --from
+    and --to)."""
     path = os.fspath(path)
     if os.path.isdir(path) and os.path.isfile(os.path.join(path, 'events.csv')):
         path = os.path.join(path, 'events.csv')

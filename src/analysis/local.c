@@ -16,10 +16,11 @@ gd_status gd_local_resolve(const gd_case *c, const gd_model *m, gd_local *v, gd_
     memset(v, 0, sizeof *v);
     const char *name = c->response_variable[0] ? c->response_variable : "lambda_L";
     snprintf(v->name, sizeof v->name, "%s", name);
-    if (strcmp(name, "lambda_L") == 0 || strcmp(name, "lambda_R") == 0 || strcmp(name, "dte_L") == 0 ||
-        strcmp(name, "dte_R") == 0) {
+    int two = m->nmesh > 1; /* the right mesh's variables exist with two meshes only */
+    if (strcmp(name, "lambda_L") == 0 || strcmp(name, "dte_L") == 0 ||
+        (two && (strcmp(name, "lambda_R") == 0 || strcmp(name, "dte_R") == 0))) {
         v->kind = name[0] == 'l' ? VAR_LAMBDA : VAR_DTE;
-        v->index = name[strlen(name) - 1] == 'R' && m->nmesh > 1 ? 1 : 0;
+        v->index = name[strlen(name) - 1] == 'R' ? 1 : 0;
         return GD_OK;
     }
     for (int i = 0; i < m->ndof; i++)
@@ -28,7 +29,8 @@ gd_status gd_local_resolve(const gd_case *c, const gd_model *m, gd_local *v, gd_
             v->index = i;
             return GD_OK;
         }
-    char valid[512] = "lambda_L, lambda_R, dte_L, dte_R";
+    char valid[512];
+    snprintf(valid, sizeof valid, "%s", two ? "lambda_L, lambda_R, dte_L, dte_R" : "lambda_L, dte_L");
     for (int i = 0; i < m->ndof; i++) {
         size_t l = strlen(valid);
         snprintf(valid + l, sizeof valid - l, ", %s", m->dof_name[i]);

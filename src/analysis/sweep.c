@@ -57,7 +57,8 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
                                  char *bad, size_t badlen)
 {
     char buf[256];
-    snprintf(buf, sizeof buf, "%s", spec[0] ? spec : "lambda_L, lambda_R");
+    int two = m->nmesh > 1; /* the right mesh's responses exist with two meshes only */
+    snprintf(buf, sizeof buf, "%s", spec[0] ? spec : two ? "lambda_L, lambda_R" : "lambda_L");
     int n = 0;
     char *save = NULL;
     for (char *tok = strtok_r(buf, ",", &save); tok; tok = strtok_r(NULL, ",", &save)) {
@@ -72,15 +73,14 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
         gd_sweep_response r;
         memset(&r, 0, sizeof r);
         r.kind = -1;
-        int rmesh = m->nmesh > 1 ? 1 : 0;
         if (strcmp(tok, "lambda_L") == 0 || strcmp(tok, "lambda") == 0)
             r.kind = GD_RESP_MESH, r.index = 0;
-        else if (strcmp(tok, "lambda_R") == 0)
-            r.kind = GD_RESP_MESH, r.index = rmesh;
+        else if (two && strcmp(tok, "lambda_R") == 0)
+            r.kind = GD_RESP_MESH, r.index = 1;
         else if (strcmp(tok, "lambda_dot_L") == 0 || strcmp(tok, "lambda_dot") == 0)
             r.kind = GD_RESP_MESH_RATE, r.index = 0;
-        else if (strcmp(tok, "lambda_dot_R") == 0)
-            r.kind = GD_RESP_MESH_RATE, r.index = rmesh;
+        else if (two && strcmp(tok, "lambda_dot_R") == 0)
+            r.kind = GD_RESP_MESH_RATE, r.index = 1;
         else {
             size_t l = strlen(tok);
             int rate = l > 4 && strcmp(tok + l - 4, "_dot") == 0;
@@ -93,7 +93,9 @@ static gd_status parse_responses(const char *spec, const gd_model *m, gd_sweep_r
             }
         }
         if (r.kind < 0 || strlen(tok) >= sizeof r.name) {
-            char valid[512] = "lambda_L, lambda_R, lambda_dot_L, lambda_dot_R";
+            char valid[512];
+            snprintf(valid, sizeof valid, "%s",
+                     two ? "lambda_L, lambda_R, lambda_dot_L, lambda_dot_R" : "lambda_L, lambda_dot_L");
             for (int i = 0; i < m->ndof; i++) {
                 size_t u = strlen(valid);
                 snprintf(valid + u, sizeof valid - u, ", %s", m->dof_name[i]);
@@ -229,7 +231,7 @@ static uint64_t fingerprint(const gd_case *c)
     const gd_keyspec *s = gd_case_schema(&n);
     uint64_t h = gd_fnv1a_str(GD_FNV1A_OFFSET_BASIS, "geardyn sweep " GD_VERSION_STRING "\n");
     static const char *skip[] = {"output.directory", "output.time_history", "output.event_log", "output.plots",
-                                 "scene.title"};
+                                 "scene.title", "run.max_time_s"}; /* none changes a point's result */
     for (size_t i = 0; i < n; i++) {
         char name[200], val[1300];
         snprintf(name, sizeof name, "%s.%s", s[i].section, s[i].key);
@@ -263,8 +265,8 @@ GD_API void gd_sweep_plan_free(gd_sweep_plan *p)
     p->slot_info = NULL;
 }
 
-static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
-                            gd_error *err);
+static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, const gd_stop_hook *stop,
+                            gd_case *out, gd_model *m, gd_error *err);
 
 /* The grid: the values of each axis (one value on an unused second axis), names and units. */
 static gd_status plan_grid(const gd_case *c, gd_sweep_plan *p, gd_error *err)
@@ -376,7 +378,7 @@ static gd_status plan_check_points(const gd_case *c, const gd_sweep_plan *p, gd_
         for (int i1 = 0; i1 < p->npoints[0]; i1++) {
             gd_case pc;
             gd_model pm;
-            gd_status st = point_case(c, p, i1, i2, &pc, &pm, err);
+            gd_status st = point_case(c, p, i1, i2, NULL, &pc, &pm, err);
             if (st != GD_OK) {
                 if (st != GD_ERR_NOMEM) {
                     char w[GD_PATH_MAX + 32];
@@ -582,12 +584,16 @@ GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_poin
     return GD_OK;
 }
 
-static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, gd_case *out, gd_model *m,
-                            gd_error *err)
+/* The case of grid point (i1, i2), resolved, and its model; stop (NULL: the base case's) is asked
+ * by the point's LTCA. */
+static gd_status point_case(const gd_case *base, const gd_sweep_plan *p, int i1, int i2, const gd_stop_hook *stop,
+                            gd_case *out, gd_model *m, gd_error *err)
 {
     gd_status st = gd_case_copy(out, base, err);
     if (st != GD_OK)
         return st;
+    if (stop)
+        out->stop = *stop;
     out->analysis = GD_ANALYSIS_RESPONSE; /* the copy is one response run */
     int idx[2] = {i1, i2};
     char at[600] = "";
@@ -626,7 +632,7 @@ GD_API gd_status gd_sweep_point_case(const gd_case *base, const gd_sweep_plan *p
 {
     if (slot < 0 || slot >= p->nslots)
         return gd_error_set(err, GD_ERR_INPUT, "sweep slot %d (valid: 0 to %d)", slot, p->nslots - 1);
-    return point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], out, m, err);
+    return point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], NULL, out, m, err);
 }
 
 gd_status gd_sweep_start_state(const gd_case *c, const gd_model *m, const gd_sweep_point *prev, double *y0,
@@ -694,6 +700,18 @@ static int on_progress(void *user, long done, long total)
     return x->o->should_stop && x->o->should_stop(x->o->user);
 }
 
+/* The stop of a point's LTCA: the sweep's own (another point failed fatally) or the caller's. */
+typedef struct stop_ctx {
+    const gd_sweep_opts *o;
+    atomic_int *stop;
+} stop_ctx;
+
+static int point_should_stop(void *user)
+{
+    stop_ctx *s = user;
+    return atomic_load(s->stop) || (s->o->should_stop && s->o->should_stop(s->o->user));
+}
+
 static int fatal_code(gd_status st)
 {
     return st == GD_ERR_NOMEM || st == GD_ERR_INTERNAL || st == GD_ERR_IO || st == GD_ERR_INTERRUPTED;
@@ -710,7 +728,9 @@ static gd_status run_point(const gd_case *base, const gd_sweep_plan *p, gd_sweep
     gd_case c;
     gd_model m;
     gd_error e = {0};
-    gd_status st = gd_sweep_point_case(base, p, slot, &c, &m, &e);
+    stop_ctx sx = {o, stop};
+    const gd_stop_hook hook = {point_should_stop, &sx};
+    gd_status st = point_case(base, p, p->slot_info[4 * slot + 2], p->slot_info[4 * slot + 3], &hook, &c, &m, &e);
     if (st != GD_OK) {
         if (fatal_code(st)) {
             *err = e;

@@ -244,6 +244,8 @@ static const gd_keyspec schema[] = {
       "rtol; 1e-6 with fixed steps)"),
     D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
       "largest Lyapunov exponent per mesh period above which a non-periodic motion is chaotic (|mle| below: quasi-periodic)"),
+    D("run", "max_time_s", "s", max_time_s, 1, 1e12, 0, 0, 86400,
+      "largest estimated run time, with the run's threads (geardyn check prints the estimate); a longer run is refused"),
 
     /* [output] */
     S("output", "directory", directory, "", "output directory (default: results/<case name>; --out overrides)"),
@@ -255,7 +257,8 @@ static const gd_keyspec schema[] = {
       "largest estimated memory or output files of a run (geardyn check prints the estimate); a larger run is refused"),
     S("output", "response_variable", response_variable, "lambda_L",
       "variable of the local analysis (time history, phase portrait, spectrum, Poincare section): lambda_L, "
-      "lambda_R (mesh deflection), dte_L, dte_R, or a degree of freedom (y1L, z1L, y2L, z2L, qL, ..., q)"),
+      "lambda_R (mesh deflection), dte_L, dte_R (the _R ones with two meshes only), or a degree of freedom (y1L, "
+      "z1L, y2L, z2L, qL, ..., q)"),
     D("output", "paint_thickness_um", "um", paint_thickness_um, 0, 1000, 1, 0, 6.32,
       "TCA: flank points whose separation from the mating flank stays below this form the contact pattern"),
 
@@ -275,7 +278,8 @@ static const gd_keyspec schema[] = {
     I("sweep", "points2", sweep_points2, 1, 100000, 11, "number of values of parameter2"),
     E("sweep", "spacing2", sweep_spacing2, 0, "linear|log", "spacing of the values of parameter2"),
     S("sweep", "response", sweep_response, "",
-      "Poincare responses, comma-separated: lambda_L, lambda_R (default), lambda_dot_L, lambda_dot_R, DOF names, DOF_dot"),
+      "Poincare responses, comma-separated: lambda_L, lambda_R (default; lambda_L with one mesh), lambda_dot_L, "
+      "lambda_dot_R (the _R ones with two meshes only), DOF names, DOF_dot"),
 
     /* [continuation] (analysis = continuation; docs/continuation.md) */
     S("continuation", "parameter", cont_parameter, "",

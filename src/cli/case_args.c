@@ -66,6 +66,17 @@ int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out)
     return 0;
 }
 
+/* results/NAME for a case file NAME.ini */
+static void default_out_dir(const char *case_path, char *out, size_t len)
+{
+    const char *base = strrchr(case_path, '/');
+    base = base ? base + 1 : case_path;
+    size_t l = strlen(base);
+    if (l > 4 && strcmp(base + l - 4, ".ini") == 0)
+        l -= 4;
+    snprintf(out, len, "results/%.*s", (int)l, base);
+}
+
 int cli_load_case(cli_case_args *a, gd_case *c)
 {
     gd_error err = {0};
@@ -76,9 +87,17 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     for (int i = 0; i < a->nsets; i++)
         if (gd_case_set(c, a->sets[i], i, &err) != GD_OK)
             return cli_fail(&err);
+    if (a->out_dir)
+        snprintf(a->dir, sizeof a->dir, "%s", a->out_dir);
+    else if (c->directory[0])
+        snprintf(a->dir, sizeof a->dir, "%s", c->directory);
+    else
+        default_out_dir(a->case_path, a->dir, sizeof a->dir);
+    if (!a->check_only)
+        c->stop = (gd_stop_hook){cli_should_stop, NULL}; /* the LTCA of the resolution */
     /* every check before any work (check shows the case as probed, without LTCA) */
-    if (gd_case_prepare(c, a->check_only, &a->cost, &err) != GD_OK)
-        return cli_fail(&err);
+    if (gd_case_prepare(c, a->check_only, cli_threads(a->threads), &a->cost, &err) != GD_OK)
+        return cli_signal_caught() ? cli_interrupted(a->dir) : cli_fail(&err);
     return 0;
 }
 

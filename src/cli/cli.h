@@ -19,12 +19,15 @@ typedef struct cli_case_args {
     int threads;             /* run: --threads N (0: the OpenMP default) */
     int check_only;          /* geardyn check: no LTCA, no integration (gd_case.ltca_deferred) */
     gd_run_cost cost;        /* estimated by cli_load_case */
+    char dir[GD_PATH_MAX];   /* run: the output directory (--out, output.directory, results/NAME) */
 } cli_case_args;
 
 /* Parse CASE [--set s.k=v ...] [--out DIR] [--quiet]; returns 0 or the exit status. */
 int cli_parse_case_args(int argc, char **argv, cli_case_args *a, int allow_out);
 /* Load, apply --set, resolve, build the model and estimate the run's cost (a->cost), refusing a
- * run above output.max_bytes; prints the error and returns the exit status on failure. */
+ * run above output.max_bytes; prints the error and returns the exit status on failure. For a run,
+ * the LTCA of the resolution asks the signals (cli_should_stop): a signal caught meanwhile ends it
+ * with the line of an interrupted run and 128 + the signal. */
 int cli_load_case(cli_case_args *a, gd_case *c);
 /* Parse the arguments of `run` (allow_out) or `check` and load the case they name: 0 with *c loaded
  * (the caller frees it), else the exit status with nothing left to free. */

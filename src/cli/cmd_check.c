@@ -100,7 +100,11 @@ int cmd_check(int argc, char **argv)
             snprintf(where + u, sizeof where - u, ", %s", unused);
         }
         char lhs[1400];
-        snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "", s[i].unit);
+        if (s[i].type == GD_KEY_DOUBLE && isnan(*(const double *)((const char *)&c + s[i].offset)))
+            snprintf(lhs, sizeof lhs, "%s = none", s[i].key); /* not given and not derived: not used */
+        else
+            snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "",
+                     s[i].unit);
         printf("%-58s ; %s\n", lhs, where);
     }
     printf("\n");
@@ -150,8 +154,10 @@ int cmd_check(int argc, char **argv)
         cli_check_modes(&c, &m);
     }
     const gd_run_cost *k = &a.cost;
-    printf("\n# estimated cost of the run (check runs no LTCA and no integration)\n");
-    printf("time_class = %s   ; about %.2g s\n", k->time_class, k->seconds);
+    char est[200];
+    gd_run_cost_format(k, est, sizeof est);
+    printf("\n# estimated cost of the run (check runs no LTCA and no integration; docs/performance.md)\n");
+    printf("time_class = %s   ; %s, limit run.max_time_s = %.4g s\n", k->time_class, est, c.max_time_s);
     if (k->points > 0)
         printf("integration = %.4g runs of %.4g mesh periods, about %.2g steps\n", k->points, k->periods, k->steps);
     if (k->ltca_unknowns > 0)

@@ -23,9 +23,7 @@ static int parse_time(const char *opt, const char *s, double *v)
  * or the exit status. */
 static int parse_events_args(int argc, char **argv, gd_eventlog_filter *f, const char **path, const char **csv)
 {
-    memset(f, 0, sizeof *f);
-    f->t_from_s = -INFINITY;
-    f->t_to_s = INFINITY;
+    *f = gd_eventlog_filter_all();
     *path = NULL;
     *csv = NULL;
     for (int i = 1; i < argc; i++) {

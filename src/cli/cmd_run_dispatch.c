@@ -98,36 +98,25 @@ static int run_row(const cli_case_args *a, const gd_case *c, const gd_analysis_t
     return st == GD_OK ? 0 : cli_fail(&err);
 }
 
-static void default_out_dir(const char *case_path, char *out, size_t len)
-{
-    const char *base = strrchr(case_path, '/');
-    base = base ? base + 1 : case_path;
-    size_t l = strlen(base);
-    if (l > 4 && strcmp(base + l - 4, ".ini") == 0)
-        l -= 4;
-    snprintf(out, len, "results/%.*s", (int)l, base);
-}
-
 int cmd_run(int argc, char **argv)
 {
     cli_case_args a;
     gd_case c;
+    cli_signals_catch(); /* from the start: the case's resolution may run an LTCA */
     int rc = cli_open_case(argc, argv, 1, &a, &c);
     if (rc)
         return rc;
-    char dir[GD_PATH_MAX];
-    if (a.out_dir)
-        snprintf(dir, sizeof dir, "%s", a.out_dir);
-    else if (c.directory[0])
-        snprintf(dir, sizeof dir, "%s", c.directory);
-    else
-        default_out_dir(a.case_path, dir, sizeof dir);
+    const char *dir = a.dir;
     if (!a.quiet)
         cli_print_defaulted(stderr, &c, "geardyn: ");
+    if (a.cost.seconds > 60 && !a.quiet) { /* a long run says so before it starts */
+        char est[200];
+        gd_run_cost_format(&a.cost, est, sizeof est);
+        fprintf(stderr, "geardyn: this run is estimated at %s (limit run.max_time_s = %.4g s)\n", est, c.max_time_s);
+    }
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
     static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);
-    cli_signals_catch();
     if (r && r->own)
         rc = r->own(&a, &c, dir);
     else

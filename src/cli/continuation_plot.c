@@ -15,11 +15,13 @@ typedef struct resp_cols {
     const char *label, *sweep_file, *sweep_col;
 } resp_cols;
 
-static resp_cols response_columns(int response, int n)
+static resp_cols response_columns(int response, int n, int nmesh)
 {
     /* branch.csv: branch, period_n, point, key, p, stable, mu_max, 2n multipliers, then the measures;
-     * bifurcations.csv: branch, period_n, kind, key, lo, hi, p, mu_re, mu_im, clearance, the measures */
-    static const int offset[] = {0, 4, 3, 7, 8};
+     * bifurcations.csv: branch, period_n, kind, key, lo, hi, p, mu_re, mu_im, clearance, the measures
+     * (rms_accel_mps2, rms_accel_L_mps2, [rms_accel_R_mps2,] lambda_min_L_um, lambda_max_L_um,
+     * [lambda_min_R_um, lambda_max_R_um,] lambda_L, dynamic_load_factor: the _R columns with two meshes only) */
+    const int two = nmesh > 1, offset[] = {0, 3 + two, 2 + two, 4 + 3 * two, 5 + 3 * two};
     static const char *label[] = {"RMS mesh acceleration (m/s^2)", "largest mesh deflection lambda_L (um)",
                                   "smallest mesh deflection lambda_L (um)",
                                   "lambda_L at mesh phase 0 (dimensionless)",
@@ -37,7 +39,7 @@ static resp_cols response_columns(int response, int n)
 static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c, const gd_contin_result *res,
                      const char *term, const char *ext)
 {
-    resp_cols rc = response_columns(c->cont_response, res->n);
+    resp_cols rc = response_columns(c->cont_response, res->n, res->nmesh);
     const char *key = strchr(res->parameter, '.') + 1;
     gd_gnuplot_printf(s, "set terminal %s\nset output '.continuation%s.tmp'\n", term, ext);
     gd_gnuplot_printf(s, "set title \"%s%scontinuation in %s: solid stable, dashed unstable\" noenhanced\n",

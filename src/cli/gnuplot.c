@@ -6,7 +6,9 @@
 #include <errno.h>
 #include <stdarg.h>
 #include <fcntl.h>
-#include <spawn.h>
+#include <pthread.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -37,6 +39,49 @@ int gd_gnuplot_available(void)
     return find_gnuplot(p, sizeof p);
 }
 
+/* The gnuplot drawing now (0: none), for gd_gnuplot_end_running. */
+static volatile sig_atomic_t running = 0;
+
+void gd_gnuplot_end_running(void)
+{
+    pid_t pid = running;
+    if (pid > 0) {
+        kill(pid, SIGKILL);
+        while (waitpid(pid, NULL, 0) < 0 && errno == EINTR)
+            ;
+    }
+}
+
+/* Start exe with argv in dir, stdin and stdout /dev/null, stderr into logpath; the child gets
+ * SIGKILL when this process ends, however it ends (a SIGKILL too): a gnuplot drawing on into the
+ * stage of a run that is gone would race the next run's removal of that stage. Signals are blocked
+ * across the fork, so that the pid is recorded for gd_gnuplot_end_running before a handler can
+ * ask for it. -1 and errno when it cannot start; the exec's failure shows as exit status 127. */
+static pid_t spawn(const char *exe, char *const argv[], const char *dir, const char *logpath)
+{
+    sigset_t all, old;
+    sigfillset(&all);
+    pthread_sigmask(SIG_SETMASK, &all, &old);
+    pid_t parent = getpid();
+    pid_t pid = fork();
+    if (pid == 0) { /* async-signal-safe calls only until the exec */
+        int in = open("/dev/null", O_RDONLY | O_CLOEXEC), out = open("/dev/null", O_WRONLY | O_CLOEXEC),
+            log = open(logpath, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent || in < 0 || out < 0 || log < 0 ||
+            dup2(in, 0) < 0 || dup2(out, 1) < 0 || dup2(log, 2) < 0 || chdir(dir) != 0)
+            _exit(127);
+        pthread_sigmask(SIG_SETMASK, &old, NULL);
+        execve(exe, argv, environ);
+        _exit(127);
+    }
+    int e = errno;
+    if (pid > 0)
+        running = pid;
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    errno = e;
+    return pid;
+}
+
 gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
 {
     char exe[4200];
@@ -55,25 +100,9 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
     }
     close(fd);
     snprintf(logpath, sizeof logpath, "%s.log", spath);
-    posix_spawn_file_actions_t fa;
-    pid_t pid = -1;
-    int rc = posix_spawn_file_actions_init(&fa);
-    if (rc == 0) {
-        rc = posix_spawn_file_actions_addopen(&fa, 0, "/dev/null", O_RDONLY, 0);
-        if (rc == 0)
-            rc = posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
-        if (rc == 0)
-            rc = posix_spawn_file_actions_addopen(&fa, 2, logpath, O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        /* gnuplot runs in dir and the script names every file relative to it: a picture names
-         * its data files (an SVG in the <title> of each data set) without the directory they
-         * were drawn in */
-        if (rc == 0)
-            rc = posix_spawn_file_actions_addchdir_np(&fa, dir);
-        char *argv[] = {exe, strrchr(spath, '/') + 1, NULL}; /* the script by its name in dir */
-        if (rc == 0)
-            rc = posix_spawn(&pid, exe, &fa, NULL, argv, environ);
-        posix_spawn_file_actions_destroy(&fa);
-    }
+    char *argv[] = {exe, strrchr(spath, '/') + 1, NULL}; /* the script by its name in dir */
+    pid_t pid = spawn(exe, argv, dir, logpath);
+    int rc = pid < 0 ? errno : 0;
     gd_status st = GD_OK;
     if (rc != 0) {
         st = gd_error_set(err, GD_ERR_IO, "cannot start gnuplot: %s", strerror(rc));
@@ -81,6 +110,7 @@ gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err)
         int status = 0;
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             ;
+        running = 0;
         if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
             char msg[400] = "";
             FILE *lf = fopen(logpath, "r");

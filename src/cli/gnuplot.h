@@ -12,6 +12,10 @@ int gd_gnuplot_available(void);
 /* Run gnuplot on a script in dir, quietly, with dir its working directory: the script names the
  * files it reads and writes relative to dir. */
 gd_status gd_gnuplot_run(const char *dir, const char *script, gd_error *err);
+/* End the gnuplot that gd_gnuplot_run is waiting for, if any, and reap it (async-signal-safe: for
+ * the handler that ends the process at once). Whatever way the process ends, its gnuplot ends with
+ * it (gd_gnuplot_run starts it so); this makes sure it is gone before the process is. */
+void gd_gnuplot_end_running(void);
 /* gd_gnuplot_run on a script that writes each picture of names[] as .NAME.png.tmp and
  * .NAME.svg.tmp (in dir); when it succeeded and every picture is whole (a PNG to its IEND chunk, an SVG to
  * its </svg>) they move into place (NAME.png, NAME.svg), else the run gets a note. The temporary

@@ -42,8 +42,8 @@ static const cli_help commands[] = {
      "Prints the number of events per clearance and kind, the impact regime (no impact, single-sided, "
      "double-sided) and the statistics of the relative velocity at contact, for the rows that pass "
      "the filters.",
-     {{"--from S", "only events at or after time S (seconds)"},
-      {"--to S", "only events at or before time S (seconds)"},
+     {{"--from S", "only events at or after time S (seconds); before --to, and not after the log's last event"},
+      {"--to S", "only events at or before time S (seconds); not before the log's first event"},
       {"--clearance NAME", "only one clearance, as named in the log: mesh (torsional), mesh-L, mesh-R, bearing-1L, bearing-1R, bearing-2L, bearing-2R"},
       {"--kind KIND", "only one kind: contact, separation, back-contact or back-separation"},
       {"--recorded", "only the recorded window (no transient)"},

@@ -87,13 +87,16 @@ void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void 
 void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
 {
     (void)c;
-    const gd_response_result *res = &((const gd_response_outcome *)result)->res;
+    const gd_response_outcome *o = result;
+    const gd_response_result *res = &o->res;
     if (a->quiet)
         return;
-    printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2 (left %.6g, right %.6g)\n", dir, res->motion,
-           gd_impact_regime_name(res->impact_regime[2]), res->rms_accel_mps2[2], res->rms_accel_mps2[0],
-           res->rms_accel_mps2[1]);
-    const gd_model *m = &((const gd_response_outcome *)result)->model;
+    printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2", dir, res->motion,
+           gd_impact_regime_name(res->impact_regime[2]), res->rms_accel_mps2[2]);
+    if (o->model.nmesh > 1) /* the meshes' own; one mesh is the combined */
+        printf(" (left %.6g, right %.6g)", res->rms_accel_mps2[0], res->rms_accel_mps2[1]);
+    printf("\n");
+    const gd_model *m = &o->model;
     if (m->nmesh > 1 && res->dynamic_load_factor[0] != res->dynamic_load_factor[1])
         printf("  dynamic load factor left %.4g, right %.4g (largest mesh force %.5g N, %.5g N; static %.5g N)\n",
                res->dynamic_load_factor[0], res->dynamic_load_factor[1], res->force_max_n[0], res->force_max_n[1],

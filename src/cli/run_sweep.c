@@ -314,10 +314,11 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
             first = 0;
         }
     gd_gnuplot_printf(b, "\n");
-    /* sweep.csv's columns: mle, rms_accel_mps2, dynamic_load_factor (the larger of the meshes) */
+    /* sweep.csv's columns: mle, rms_accel_mps2, dynamic_load_factor (the larger of the meshes; after
+     * rms_accel_R_mps2 and impact_regime_R, which exist with two meshes only) */
     const char *what[3] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s^2)",
                            "dynamic load factor (-)"};
-    int col[3] = {4, 3, 15};
+    int col[3] = {4, 3, p->nmesh > 1 ? 15 : 13};
     for (int q = mle ? 0 : 1; q < 3; q++) {
         gd_gnuplot_printf(b, q == 0 ? "set xzeroaxis lt -1\n" : "unset xzeroaxis\n");
         if (q == 2)

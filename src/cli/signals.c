@@ -1,8 +1,10 @@
 /* SIGINT, SIGTERM and SIGHUP during a run: the handler only records the signal; the run's hooks
  * (gd_run_env progress and should_stop) turn it into GD_ERR_INTERRUPTED, the run's directory
  * removes its stage, and the command exits 128 + the signal with one line. A second signal ends
- * the process at once (what it staged is removed by the next run into the directory). */
+ * the process at once, and the gnuplot drawing for it (what it staged is removed by the next run
+ * into the directory). */
 #include "cli.h"
+#include "gnuplot.h"
 
 #include <signal.h>
 #include <stdio.h>
@@ -17,6 +19,7 @@ static void on_signal(int sig)
         static const char msg[] = "geardyn: second signal: stopping at once\n";
         ssize_t w = write(2, msg, sizeof msg - 1);
         (void)w;
+        gd_gnuplot_end_running();
         _exit(128 + sig);
     }
     g_caught = sig;

@@ -69,6 +69,7 @@ GD_API gd_status gd_ltca_create(const gd_pair *pair, const gd_ltca_settings *set
     gd_ltca *w = calloc(1, sizeof *w);
     if (!w)
         return gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory");
+    w->stop = set->stop;
     /* the TCA face grid is the LTCA slicing */
     const gd_tca_settings ts = {.profile_points = set->profile_points, .face_points = set->face_slices,
                                 .refine = set->refine};
@@ -499,7 +500,7 @@ static gd_status solve_qp(gd_ltca *w, int *iters, double *residual, gd_error *er
             st = gd_contact_solve(&pb, w->hint, w->cws, &sol, err);
         }
     } else {
-        st = ltca_qp_solve(w->qp, &pb, w->nb, w->bstart, any ? w->hint : NULL, &sol, err);
+        st = ltca_qp_solve(w->qp, &pb, w->nb, w->bstart, any ? w->hint : NULL, &w->stop, &sol, err);
     }
     if (st != GD_OK)
         return st;

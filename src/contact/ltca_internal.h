@@ -42,8 +42,11 @@ void ltca_qp_free(ltca_qp *q);
  * floating pinion, mere independence of the rows gives a load of the wrong sign: the cold start
  * of gd_contact_solve fails there). Returns 1 and marks them, or 0. */
 int ltca_qp_start(const gd_contact_problem *pb, unsigned char *loaded);
+/* stop (may be NULL) is asked at every active-set iteration: a cold start on a fine face grid takes
+ * seconds. */
 gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
-                        const unsigned char *hint, gd_contact_solution *sol, gd_error *err);
+                        const unsigned char *hint, const gd_stop_hook *stop, gd_contact_solution *sol,
+                        gd_error *err);
 
 struct gd_ltca {
     gd_tca *t;
@@ -77,6 +80,7 @@ struct gd_ltca {
     ltca_qp *qp;
     gd_contact_workspace *cws;
     int cws_n;
+    gd_stop_hook stop;       /* the settings' (gd_ltca_settings.stop), asked inside a solve */
 };
 
 /* ltca_assemble.c */

@@ -397,10 +397,12 @@ static gd_status enter_point(ltca_qp *q, const gd_contact_problem *pb, int nb, c
 /* The active-set iterations from the start: the most penetrating free point enters until none
  * penetrates beyond the tolerance. */
 static gd_status active_set(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart, double wmax,
-                            double *p, double *d, double *z, int *it, gd_error *err)
+                            const gd_stop_hook *stop, double *p, double *d, double *z, int *it, gd_error *err)
 {
     int n = pb->n, maxit = 10 * n + 50;
     for (;;) {
+        if (gd_stop_asked(stop))
+            return gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped in the contact solve");
         gaps(pb, nb, bstart, q->in_free, p, z, q->Lp, d);
         double lmax = 0;
         for (int i = 0; i < n; i++)
@@ -457,7 +459,8 @@ static void report_solution(const ltca_qp *q, const gd_contact_problem *pb, doub
 }
 
 gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const int *bstart,
-                        const unsigned char *hint, gd_contact_solution *sol, gd_error *err)
+                        const unsigned char *hint, const gd_stop_hook *stop, gd_contact_solution *sol,
+                        gd_error *err)
 {
     double z[GD_CONTACT_MAX_FREEDOMS] = {0};
     double wmax = 0;
@@ -471,7 +474,7 @@ gd_status ltca_qp_solve(ltca_qp *q, const gd_contact_problem *pb, int nb, const 
     memcpy(sol->p, q->q, sizeof(double) * (size_t)n);
     memset(q->tabu, 0, (size_t)n);
     int it = 0;
-    st = active_set(q, pb, nb, bstart, wmax, sol->p, sol->d, z, &it, err);
+    st = active_set(q, pb, nb, bstart, wmax, stop, sol->p, sol->d, z, &it, err);
     if (st != GD_OK)
         return st;
     report_solution(q, pb, wmax, z, it, sol);

@@ -46,9 +46,11 @@ typedef struct entry_eval {
 /* The incoming pair's least rigid gap: its gaps less the rigid approach, without its own
  * deflection. L is block diagonal, so while the pair is open this is its least deformed gap, and
  * once loaded it is minus its own deflection there: smooth across the touch, zero at it. */
-static gd_status eval_entry(gd_ltca *w, double phi1, double torque, int half, int pair, gd_ltca_position *pos,
-                            entry_eval *e, gd_error *err)
+static gd_status eval_entry(gd_ltca *w, double phi1, double torque, int half, int pair, const gd_stop_hook *stop,
+                            gd_ltca_position *pos, entry_eval *e, gd_error *err)
 {
+    if (gd_stop_asked(stop))
+        return gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped in the mesh-in search");
     gd_status st = gd_ltca_solve_at(w, phi1, torque, pos, err);
     if (st != GD_OK)
         return st;
@@ -92,8 +94,8 @@ static gd_status eval_entry(gd_ltca *w, double phi1, double torque, int half, in
 
 /* Load-approach curve of the incoming pair alone at its mesh-in geometry: a one-freedom contact
  * problem (gd_contact_solve) for forces F_j, giving its approach delta_j beyond first touch. */
-static gd_status pair_curve(gd_ltca *w, int half, int pair, double fref, double *F, double *delta, int nf,
-                            gd_error *err)
+static gd_status pair_curve(gd_ltca *w, int half, int pair, double fref, const gd_stop_hook *stop, double *F,
+                            double *delta, int nf, gd_error *err)
 {
     int lo = -1, hi = -1;
     for (int b = 0; b < w->nb; b++) {
@@ -122,6 +124,10 @@ static gd_status pair_curve(gd_ltca *w, int half, int pair, double fref, double 
     gd_contact_workspace *ws;
     gd_status st = gd_contact_workspace_alloc(k, 1, &ws, err);
     for (int j = 0; j < nf && st == GD_OK; j++) {
+        if (gd_stop_asked(stop)) {
+            st = gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped on the mesh-in load-approach curve");
+            break;
+        }
         double f = fref * ldexp(1.0, -j);
         gd_contact_problem pb = {k, 1, L, wv, G, &f};
         gd_contact_solution sol = {0};
@@ -175,14 +181,14 @@ static gd_status entry_pair(const gd_ltca_result *r, int half, int *pair, int *k
 }
 
 /* The moment the pair touches, bracketed in [*a, *b] (*a: still open, *b: loaded). */
-static gd_status bracket_touch(gd_ltca *w, double tau, int half, int pair, double torque, double *a_io,
-                               double *b_io, gd_ltca_position *pos, gd_error *err)
+static gd_status bracket_touch(gd_ltca *w, double tau, int half, int pair, double torque, const gd_stop_hook *stop,
+                               double *a_io, double *b_io, gd_ltca_position *pos, gd_error *err)
 {
     double a = *a_io, b = *b_io;
     entry_eval ea, eb, ec;
-    gd_status st = eval_entry(w, a, torque, half, pair, pos, &ea, err);
+    gd_status st = eval_entry(w, a, torque, half, pair, stop, pos, &ea, err);
     if (st == GD_OK)
-        st = eval_entry(w, b, torque, half, pair, pos, &eb, err);
+        st = eval_entry(w, b, torque, half, pair, stop, pos, &eb, err);
     if (st != GD_OK)
         return st;
     if (!(ea.s > 0) || eb.s > 0)
@@ -195,7 +201,7 @@ static gd_status bracket_touch(gd_ltca *w, double tau, int half, int pair, doubl
         double c = b - fb * (b - a) / (fb - fa);
         if (!(c > a && c < b))
             c = 0.5 * (a + b);
-        st = eval_entry(w, c, torque, half, pair, pos, &ec, err);
+        st = eval_entry(w, c, torque, half, pair, stop, pos, &ec, err);
         if (st != GD_OK)
             return st;
         if (ec.s > 0) {
@@ -252,7 +258,8 @@ enum { NF = 10 }; /* solves on the incoming pair's load-approach curve */
 /* k_s: secant stiffness of the incoming pair at delta_m, from its own load-approach curve, and the
  * power law fitted to that curve. */
 static gd_status impact_stiffness(gd_ltca *w, const gd_ltca_result *r, int half, int pair, double torque,
-                                  const gd_ltca_position *pos, gd_ltca_impact *imp, gd_error *err)
+                                  const gd_stop_hook *stop, const gd_ltca_position *pos, gd_ltca_impact *imp,
+                                  gd_error *err)
 {
     double F[NF], D[NF];
     double pairs = r->pairs_mean[half] > 0 ? r->pairs_mean[half] : 1.0;
@@ -260,7 +267,9 @@ static gd_status impact_stiffness(gd_ltca *w, const gd_ltca_result *r, int half,
     if (!(fref > 0))
         fref = gd_ltca_normal_force(w, torque);
     for (int tries = 0; tries < 30; tries++) {
-        gd_status st = pair_curve(w, half, pair, fref, F, D, NF, err);
+        gd_status st = pair_curve(w, half, pair, fref, stop, F, D, NF, err);
+        if (st == GD_ERR_INTERRUPTED)
+            return st;
         if (st != GD_OK)
             return gd_error_prefix(err, "LTCA mesh-in stiffness");
         if (D[0] >= imp->delta_m)
@@ -299,8 +308,8 @@ static gd_status impact_stiffness(gd_ltca *w, const gd_ltca_result *r, int half,
     return GD_OK;
 }
 
-static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double torque, gd_ltca_impact *imp,
-                         gd_error *err)
+static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double torque, const gd_stop_hook *stop,
+                         gd_ltca_impact *imp, gd_error *err)
 {
     memset(imp, 0, sizeof *imp);
     double nan = NAN;
@@ -314,12 +323,12 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
         return st;
     double a = r->phi1[kin - 1], b = kin < npos ? r->phi1[kin] : tau;
     gd_ltca_position pos;
-    st = bracket_touch(w, tau, half, pair, torque, &a, &b, &pos, err);
+    st = bracket_touch(w, tau, half, pair, torque, stop, &a, &b, &pos, err);
     if (st != GD_OK)
         return st;
     /* the state just before the touch: the mesh-in point is the pair's least deformed gap */
     entry_eval ea;
-    st = eval_entry(w, a, torque, half, pair, &pos, &ea, err);
+    st = eval_entry(w, a, torque, half, pair, stop, &pos, &ea, err);
     if (st != GD_OK)
         return st;
     if (ea.imin < 0)
@@ -333,7 +342,7 @@ static gd_status mesh_in(gd_ltca *w, const gd_ltca_result *r, int half, double t
     impact_geometry(w, &w->pts[ea.imin], imp);
     /* how early the pair meets: the loaded deflection of the half at that moment */
     imp->delta_m = pos.approach_half[half] - pos.geometric[half];
-    return impact_stiffness(w, r, half, pair, torque, &pos, imp, err);
+    return impact_stiffness(w, r, half, pair, torque, stop, &pos, imp, err);
 }
 
 /* ---- the analysis ------------------------------------------------------------------------------ */
@@ -507,8 +516,7 @@ GD_API gd_status gd_ltca_run_opts(const gd_pair *pair, const gd_ltca_settings *s
     cycle_statistics(r);
     if (with_impact)
         for (int h = 0; h < H; h++) {
-            st = gd_stop_asked(&set->stop) ? gd_error_set(err, GD_ERR_INTERRUPTED, "LTCA: stopped before the mesh-in")
-                                           : mesh_in(w, r, h, set->torque_nm, &r->impact[h], err);
+            st = mesh_in(w, r, h, set->torque_nm, &set->stop, &r->impact[h], err);
             if (st != GD_OK)
                 goto fail;
         }

@@ -97,17 +97,67 @@ void tca_pair_range(const gd_tca *t, int half, double phi1, int *lo, int *hi);
 gd_status tca_newton(gd_tca *t, int n, tca_fdf_fn fn, void *p, double *x, double xtol, int maxit, int *conv,
                      int *iters, gd_error *err);
 
-/* tca_separation.c: formulation (b) */
+/* Formulation (b), surface separation: a candidate minimum of the gap of one pair on the pinion
+ * flank, its position (u1, z1), gap g (gear rotation), the boundaries it lies on (edge bits) and
+ * whether it is feasible. */
+typedef struct tca_cand {
+    double u, z, g;
+    unsigned bits;
+    int ok;
+} tca_cand;
+
+static inline void tca_keep_best(tca_cand *best, const tca_cand *c)
+{
+    if (c->ok && (!best->ok || c->g < best->g))
+        *best = *c;
+}
+
+/* tca_line_min.c: the exact minimum along a line of the flank. */
+/* Exact minimum over rho in the transverse slice z, within the feasible run of profile nodes that
+ * holds node i0 (or the least node when i0 < 0). gv/fv: the pair's node values in this slice when
+ * z is a grid slice, else NULL (computed here). Also the slope m' = dm/dz of the slice minimum
+ * m(z) there (envelope theorem; along the boundary when the minimum sits on one) and, when the
+ * minimum is interior or on a pinion profile edge, its curvature m'' (else NaN). */
+gd_status tca_slice_min_hint(gd_tca *t, int half, const tca_pose *P, double z, const double *gv,
+                             const unsigned char *fv, int i0, const double *gp, const unsigned char *fp, int jh,
+                             double rho_hint, tca_cand *out, double *mp, double *mpp, int *iters, gd_error *err);
+/* tca_slice_min_hint without a neighbouring slice's hint */
+gd_status tca_slice_min_z(gd_tca *t, int half, const tca_pose *P, double z, const double *gv,
+                          const unsigned char *fv, int i0, tca_cand *out, double *mp, double *mpp, int *iters,
+                          gd_error *err);
+/* Exact minimum in grid slice j from node i0 (the pair's node values gv, fv). */
+gd_status tca_slice_min(gd_tca *t, int half, const tca_pose *P, int j, int i0, const double *gv,
+                        const unsigned char *fv, tca_cand *out, int *iters, gd_error *err);
+/* Exact minimum along a pinion profile line rho = const (the tip or root edge), starting at z0. */
+gd_status tca_along_min(gd_tca *t, int half, const tca_pose *P, double rho, double z0, tca_cand *out, int *iters,
+                        gd_error *err);
+/* Exact minimum on the gear boundary k (tip, root or end face) crossing the pinion flank. */
+gd_status tca_lagrange_min(gd_tca *t, int half, const tca_pose *P, int k, double rho0, double z0, tca_cand *out,
+                           int *iters, gd_error *err);
+
+/* tca_pair_min.c: the exact minimum of one pair over the flank, with the edges touched with it. */
+typedef struct tca_pair_out {
+    tca_cand best;
+    unsigned tie_bits;       /* boundary bits of candidates within tol_edge of the pair minimum */
+    double tie_g[8];
+    unsigned tie_b[8];
+    int ntie;
+} tca_pair_out;
+gd_status tca_refine_from_grid(gd_tca *t, int half, const tca_pose *P, const double *gv, const unsigned char *fv,
+                               int i0, int j0, int all_edges, const tca_cand *pre, double pre_mp, tca_pair_out *po,
+                               int *iters, gd_error *err);
+
+/* tca_separation.c: one position; accumulate: into the topography; *gstar (may be NULL): the least gap */
+gd_status tca_scan(gd_tca *t, int half, double phi1, int accumulate, gd_tca_contact *out,
+                   double *gstar_out, gd_error *err);
 gd_status tca_separation(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);
+/* tca_lines.c: the contact lines of one position within max_gap of its contact (t->lines) */
 gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *err);
-/* exact minimum of the gap of one pair near (u0, z0): interior, edges, corners; returns the best */
-gd_status tca_refine_pair(gd_tca *t, int half, const tca_pose *P, double u0, double z0, double *u, double *z,
-                          double *g, unsigned *edge, int *iters, gd_error *err);
 
 /* tca_tangency.c: formulation (a) */
 gd_status tca_tangency(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);
 
-/* fill the geometric fields of a contact from (pair, u1, z1) and the gear rotation */
+/* tca_pair.c: fill the geometric fields of a contact from (pair, u1, z1) and the gear rotation */
 void tca_fill_contact(const gd_tca *t, int half, double phi1, int pair, double u1, double z1, double te,
                       gd_tca_contact *out);
 

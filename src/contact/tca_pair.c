@@ -1,6 +1,6 @@
-/* Kinematics of one tooth pair of one half: the frames, the misaligned gear axis, and the gap of
- * a pinion flank point to the gear flank (the gear rotation that closes it) with its derivatives
- * (docs/tca.md, section 3). */
+/* Kinematics of one tooth pair of one half: the frames, the misaligned gear axis, the gap of a
+ * pinion flank point to the gear flank (the gear rotation that closes it) with its derivatives
+ * (docs/tca.md, section 3), and the geometric fields of a contact at a pinion point. */
 #include "tca_internal.h"
 
 #include <math.h>
@@ -214,3 +214,29 @@ int tca_feasible(const gd_tca *t, int half, const tca_local *L, double tol)
 }
 
 unsigned tca_edge_bit(int constraint) { return 1u << constraint; }
+
+/* The geometric fields of a contact from (pair, u1, z1) and the nominal gear rotation. */
+void tca_fill_contact(const gd_tca *t, int half, double phi1, int pair, double u1, double z1, double te,
+                      gd_tca_contact *out)
+{
+    const tca_half *H = &t->h[half];
+    gd_flank_eval e;
+    gd_flank_eval_at(&H->f1, u1, z1, 1, &e);
+    double n[3];
+    gd_flank_normal(&e, n);
+    out->phi1 = phi1;
+    out->te = te;
+    out->pair = pair;
+    out->u1 = u1;
+    out->z1 = z1;
+    tca_fixed_point(t, half, phi1, pair, e.r, out->pos);
+    tca_fixed_vector(t, phi1, pair, n, out->normal);
+    out->alpha_op = atan2(out->normal[0], out->normal[1]);
+    tca_pose P;
+    tca_pose_at(t, half, phi1, tca_phi2_nominal(t, phi1), pair, &P);
+    tca_local L;
+    tca_local_eval(t, half, &P, u1, z1, 0, &L);
+    double rb2 = H->f2.rb;
+    out->u2 = L.R > rb2 ? sqrt(L.R * L.R - rb2 * rb2) / rb2 : 0;
+    out->z2 = L.Z;
+}

@@ -23,26 +23,33 @@ static void num(FILE *fp, double v)
         fprintf(fp, ",NaN");
 }
 
-static void measure_header(FILE *fp)
+/* The measures of an orbit; the right mesh's (_R) only in a model with two meshes. */
+static void measure_header(FILE *fp, const gd_contin_result *res)
 {
-    fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2,rms_accel_R_mps2,lambda_min_L_um,lambda_max_L_um,"
-                "lambda_min_R_um,lambda_max_R_um,lambda_L,dynamic_load_factor,dynamic_load_factor_L,"
-                "dynamic_load_factor_R");
+    int two = res->nmesh > 1;
+    fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2%s,lambda_min_L_um,lambda_max_L_um%s,lambda_L,dynamic_load_factor,"
+            "dynamic_load_factor_L%s", two ? ",rms_accel_R_mps2" : "", two ? ",lambda_min_R_um,lambda_max_R_um" : "",
+            two ? ",dynamic_load_factor_R" : "");
 }
 
 static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_measure *m)
 {
+    int two = res->nmesh > 1;
     num(fp, m->rms_accel_mps2[2]);
     num(fp, m->rms_accel_mps2[0]);
-    num(fp, res->nmesh > 1 ? m->rms_accel_mps2[1] : NAN);
+    if (two)
+        num(fp, m->rms_accel_mps2[1]);
     num(fp, m->lambda_min_um[0]);
     num(fp, m->lambda_max_um[0]);
-    num(fp, res->nmesh > 1 ? m->lambda_min_um[1] : NAN);
-    num(fp, res->nmesh > 1 ? m->lambda_max_um[1] : NAN);
+    if (two) {
+        num(fp, m->lambda_min_um[1]);
+        num(fp, m->lambda_max_um[1]);
+    }
     num(fp, m->lambda_poincare);
-    num(fp, res->nmesh > 1 ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0]);
+    num(fp, two ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0]);
     num(fp, m->dynamic_load_factor[0]);
-    num(fp, res->nmesh > 1 ? m->dynamic_load_factor[1] : NAN);
+    if (two)
+        num(fp, m->dynamic_load_factor[1]);
 }
 
 static gd_status write_branch(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
@@ -54,7 +61,7 @@ static gd_status write_branch(gd_run_dir *d, const gd_contin_result *res, gd_err
     fprintf(fp, "branch,period_n,point,%s,continuation_p,stable,mu_max", key_column(res));
     for (int j = 0; j < res->n; j++)
         fprintf(fp, ",mu%d_re,mu%d_im", j + 1, j + 1);
-    measure_header(fp);
+    measure_header(fp, res);
     for (int j = 0; j < res->nclear; j++)
         fprintf(fp, ",events_%s", res->clear_name[j]);
     fprintf(fp, ",newton_iterations,residual,ds");
@@ -90,7 +97,7 @@ static gd_status write_bifurcations(gd_run_dir *d, const gd_contin_result *res, 
         return st;
     const char *k = key_column(res);
     fprintf(fp, "branch,period_n,kind,%s,%s_lo,%s_hi,continuation_p,mu_re,mu_im,clearance", k, k, k);
-    measure_header(fp);
+    measure_header(fp, res);
     for (int j = 0; j < res->n; j++)
         fprintf(fp, ",%s", res->state_name[j]);
     fprintf(fp, ",location\n");

@@ -80,10 +80,38 @@ static void note_clearance(char seen[][24], int *nseen, const char *name)
         snprintf(seen[(*nseen)++], 24, "%s", name);
 }
 
+GD_API gd_eventlog_filter gd_eventlog_filter_all(void)
+{
+    return (gd_eventlog_filter){.t_from_s = -INFINITY, .t_to_s = INFINITY};
+}
+
+/* A time window that leaves the log's events outside is a usage error: say what the log holds
+ * (the options' names are geardyn events'; the Python module's t_from and t_to are the same). */
+static gd_status check_window(const char *path, const gd_eventlog_filter *f, const gd_eventlog_summary *sum,
+                              gd_error *err)
+{
+    if (isinf(f->t_from_s) && isinf(f->t_to_s))
+        return GD_OK;
+    if (sum->rows == 0)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: the log holds no events, a time window selects nothing", path);
+    const char *opt = f->t_from_s > sum->log_t_max_s ? "--from" : f->t_to_s < sum->log_t_min_s ? "--to" : NULL;
+    if (!opt)
+        return GD_OK;
+    return gd_error_set(err, GD_ERR_INPUT,
+                        "%s %.9g: %s the log's %s event (%s holds %ld events from t = %.9g s to %.9g s, "
+                        "mesh periods %ld to %ld; valid: a window that meets them)",
+                        opt, opt[2] == 'f' ? f->t_from_s : f->t_to_s, opt[2] == 'f' ? "after" : "before",
+                        opt[2] == 'f' ? "last" : "first", path, sum->rows, sum->log_t_min_s, sum->log_t_max_s,
+                        sum->log_period_min, sum->log_period_max);
+}
+
 GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filter *flt, FILE *out_csv,
                                        gd_eventlog_summary *sum, gd_error *err)
 {
     memset(sum, 0, sizeof *sum);
+    if (!(flt->t_from_s < flt->t_to_s))
+        return gd_error_set(err, GD_ERR_INPUT, "--from %.9g --to %.9g selects nothing (valid: --from before --to)",
+                            flt->t_from_s, flt->t_to_s);
     FILE *fp = open_regular(path, err);
     if (!fp)
         return GD_ERR_INPUT;
@@ -99,8 +127,8 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     lineno = 1;
     if (out_csv)
         fprintf(out_csv, "%s\n", EVENTLOG_HEADER);
-    sum->t_first_s = INFINITY;
-    sum->t_last_s = -INFINITY;
+    sum->t_first_s = sum->log_t_min_s = INFINITY;
+    sum->t_last_s = sum->log_t_max_s = -INFINITY;
     while (fgets(line, sizeof line, fp)) {
         lineno++;
         char copy[1024];
@@ -122,6 +150,15 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
         if (*end || !isfinite(t) || kind < 0) {
             st = gd_error_set(err, GD_ERR_INPUT, "%s:%ld: malformed row", path, lineno);
             break;
+        }
+        long period = strtol(f[1], NULL, 10);
+        if (sum->rows == 0 || t < sum->log_t_min_s) {
+            sum->log_t_min_s = t;
+            sum->log_period_min = period;
+        }
+        if (sum->rows == 0 || t > sum->log_t_max_s) {
+            sum->log_t_max_s = t;
+            sum->log_period_max = period;
         }
         sum->rows++;
         note_clearance(seen, &nseen, f[3]);
@@ -169,6 +206,8 @@ GD_API gd_status gd_eventlog_summarise(const char *path, const gd_eventlog_filte
     for (int c = 0; c < sum->nclear; c++)
         sum->regime[c] = sum->count[c][GD_EV_BACK_CONTACT] ? GD_IMPACT_DOUBLE
                        : sum->count[c][GD_EV_SEPARATION] ? GD_IMPACT_SINGLE : GD_IMPACT_NONE;
+    if (st == GD_OK)
+        st = check_window(path, flt, sum, err);
     return st;
 }
 

@@ -1,5 +1,7 @@
 /* The tables of a response run: time_history.csv and poincare.csv row by row as the run goes,
- * then the local analysis's variable.csv, variable_poincare.csv and spectrum.csv. */
+ * then the local analysis's variable.csv, variable_poincare.csv and spectrum.csv. The right
+ * mesh's columns (_R) exist only in a model with two meshes: a single pair and the one-coordinate
+ * torsional model have one mesh, whose columns are the _L ones. */
 #include "output_internal.h"
 
 #include <string.h>
@@ -7,7 +9,7 @@
 void gd_time_history_header(FILE *fp, const gd_model *m)
 {
     fprintf(fp, "t_s,period");
-    for (int j = 0; j < 2; j++) {
+    for (int j = 0; j < (m->nmesh > 1 ? 2 : 1); j++) {
         char h = j ? 'R' : 'L';
         fprintf(fp, ",lambda_%c_um,lambda_dot_%c_mps,accel_%c_mps2,dte_%c_um,force_%c_n", h, h, h, h, h);
     }
@@ -19,7 +21,7 @@ void gd_time_history_header(FILE *fp, const gd_model *m)
 void gd_time_history_row(FILE *fp, const gd_model *m, const gd_sample *s)
 {
     fprintf(fp, "%.12g,%ld", s->t_s, s->period);
-    for (int j = 0; j < 2; j++)
+    for (int j = 0; j < (m->nmesh > 1 ? 2 : 1); j++)
         fprintf(fp, ",%.9g,%.9g,%.9g,%.9g,%.9g", s->lambda_um[j], s->lambda_dot_mps[j], s->accel_mps2[j],
                 s->dte_um[j], s->force_n[j]);
     double um = m->bc_m * 1e6;
@@ -30,7 +32,7 @@ void gd_time_history_row(FILE *fp, const gd_model *m, const gd_sample *s)
 
 void gd_poincare_header(FILE *fp, const gd_model *m)
 {
-    fprintf(fp, "period,t_s,lambda_L,lambda_dot_L,lambda_R,lambda_dot_R");
+    fprintf(fp, "period,t_s,lambda_L,lambda_dot_L%s", m->nmesh > 1 ? ",lambda_R,lambda_dot_R" : "");
     for (int i = 0; i < m->n; i++)
         fprintf(fp, ",%s%s", m->dof_name[i % m->ndof], i < m->ndof ? "" : "_dot");
     fprintf(fp, "\n");
@@ -42,8 +44,8 @@ void gd_poincare_row(FILE *fp, const gd_model *m, long period, double t_s, const
     memset(&md, 0, sizeof md);
     double t = t_s * m->omega_n;
     fprintf(fp, "%ld,%.12g", period, t_s);
-    for (int j = 0; j < 2; j++) {
-        int c = m->mesh_clear[j < m->nmesh ? j : 0];
+    for (int j = 0; j < (m->nmesh > 1 ? 2 : 1); j++) {
+        int c = m->mesh_clear[j];
         double x, xd;
         gd_model_clearance(m, c, t, y, &md, &x, &xd);
         fprintf(fp, ",%.12g,%.12g", x, xd);

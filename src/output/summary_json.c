@@ -163,6 +163,14 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     json_object_set_new(ir, "left", json_string(gd_impact_regime_name(r->impact_regime[0])));
     json_object_set_new(ir, "right", json_string(gd_impact_regime_name(r->impact_regime[1])));
     json_object_set_new(res, "impact_regime_by_mesh", ir);
+    if (m->nmesh < 2) { /* one mesh (a single pair, the torsional model): no right one */
+        const char *key;
+        json_t *v;
+        json_object_foreach(res, key, v) {
+            if (json_is_object(v) && json_object_get(v, "right"))
+                json_object_set_new(v, "right", json_null());
+        }
+    }
     json_object_set_new(res, "recorded_events", json_integer(r->record_events));
     char choice[32];
     gd_case_key_choice("run", "lyapunov_method", c->lyapunov_method, choice, sizeof choice);

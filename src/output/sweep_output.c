@@ -501,11 +501,12 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
         gd_run_dir_discard(d, sw);
         return st;
     }
-    int map = p->naxes > 1;
+    int map = p->naxes > 1, two = p->nmesh > 1; /* the right mesh's columns only where there is one */
     fprintf(sw, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
-                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,transient_periods,"
-                   "dynamic_load_factor,dynamic_load_factor_L,dynamic_load_factor_R,status,error\n",
-            map ? ",parameter2" : "");
+                   "rms_accel_L_mps2%s,impact_regime_L%s,mle_per_s,transient_periods,dynamic_load_factor,"
+                   "dynamic_load_factor_L%s,status,error\n",
+            map ? ",parameter2" : "", two ? ",rms_accel_R_mps2" : "", two ? ",impact_regime_R" : "",
+            two ? ",dynamic_load_factor_R" : "");
     fprintf(bf, "parameter,direction%s", map ? ",parameter2" : "");
     for (int r = 0; r < p->nresp; r++)
         fprintf(bf, ",%s", p->resp[r].name);
@@ -525,16 +526,19 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
         fprintf(sw, ",%s,%s%s,%d,%d,", pt->status == GD_POINT_PENDING ? "pending" : pt->motion,
                 done ? gd_impact_regime_name(pt->impact_regime[2]) : "", v2, pt->period_n, pt->poincare_distinct);
         fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[0] : NAN);
-        fputc(',', sw);
-        fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[1] : NAN);
-        fprintf(sw, ",%s,%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "",
-                done ? gd_impact_regime_name(pt->impact_regime[1]) : "");
+        if (two) {
+            fputc(',', sw);
+            fmt_num(sw, "%.9g", done ? pt->rms_accel_mps2[1] : NAN);
+        }
+        fprintf(sw, ",%s,", done ? gd_impact_regime_name(pt->impact_regime[0]) : "");
+        if (two)
+            fprintf(sw, "%s,", done ? gd_impact_regime_name(pt->impact_regime[1]) : "");
         fmt_num(sw, "%.9g", done ? pt->mle_per_s : NAN);
         if (done)
             fprintf(sw, ",%ld", pt->transient_periods);
         else
             fputc(',', sw);
-        for (int i = -1; i < 2; i++) { /* the larger of the meshes, then each */
+        for (int i = -1; i < (two ? 2 : 1); i++) { /* the larger of the meshes, then each */
             fputc(',', sw);
             fmt_num(sw, "%.9g", !done ? NAN : i >= 0 ? pt->dynamic_load_factor[i] : gd_sweep_point_dlf(pt));
         }

@@ -129,7 +129,8 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     j->ran = 1;
     if (atomic_load(&j->stop))
         return gd_error_set(err, GD_ERR_INTERRUPTED, "stopped before the run");
-    gd_status st = gd_case_prepare(&j->c, 0, NULL, err);
+    j->c.stop = (gd_stop_hook){should_stop, j}; /* the LTCA of the resolution */
+    gd_status st = gd_case_prepare(&j->c, 0, j->threads, NULL, err);
     if (st != GD_OK)
         return st;
     const gd_analysis_type *a = gd_analysis_find(j->c.analysis); /* gd_case_resolve refused a case without one */

@@ -11,20 +11,22 @@
 
 /* Resolve c without LTCA (as geardyn check does), build its model and check the run's estimated
  * cost: every check before any work, whatever the run would compute first. */
-static gd_status probe_cost(gd_case *c, gd_model *m, gd_run_cost *cost, gd_error *err)
+static gd_status probe_cost(gd_case *c, gd_model *m, int threads, gd_run_cost *cost,
+                            gd_error *err)
 {
     c->ltca_deferred = 1;
     gd_status st = gd_case_resolve(c, err);
     if (st == GD_OK)
         st = gd_model_build(c, m, err);
     if (st == GD_OK) {
-        gd_run_cost_estimate(c, m, cost);
+        gd_run_cost_estimate(c, m, threads > 0 ? threads : gd_threads_default(), cost);
         st = gd_run_cost_check(c, m, cost, err);
     }
     return st;
 }
 
-GD_API gd_status gd_case_prepare(gd_case *c, int check_only, gd_run_cost *cost, gd_error *err)
+GD_API gd_status gd_case_prepare(gd_case *c, int check_only, int threads, gd_run_cost *cost,
+                                 gd_error *err)
 {
     gd_run_cost own;
     if (!cost)
@@ -38,7 +40,7 @@ GD_API gd_status gd_case_prepare(gd_case *c, int check_only, gd_run_cost *cost, 
         gd_case_free(&probe);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     }
-    st = probe_cost(&probe, m, cost, err);
+    st = probe_cost(&probe, m, threads, cost, err);
     if (st == GD_OK && check_only) { /* check shows the case as probed */
         gd_case_free(c);
         *c = probe;
@@ -66,7 +68,7 @@ GD_API gd_status gd_case_check_json(const gd_case *c, char **json, gd_error *err
     if (!m)
         st = gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     if (st == GD_OK)
-        st = gd_case_prepare(&probe, 1, &cost, err);
+        st = gd_case_prepare(&probe, 1, 0, &cost, err);
     if (st == GD_OK)
         st = gd_model_build(&probe, m, err);
     if (st == GD_OK)

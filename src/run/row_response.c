@@ -96,6 +96,8 @@ gd_status gd_row_response_run(const gd_case *cp, const gd_run_env *env, gd_run_d
 {
     *result = NULL;
     gd_case c = *cp;
+    if (!c.stop.should_stop)
+        c.stop = gd_row_stop(env); /* the LTCA of the model, when the resolution did not cache it */
     gd_response_outcome *r = calloc(1, sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");

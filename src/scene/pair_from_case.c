@@ -82,5 +82,6 @@ GD_API gd_ltca_settings gd_ltca_settings_from_case(const gd_case *c)
         .face_slices = c->ltca_face_slices,
         .profile_points = c->tca_profile_points,
         .refine = c->tca_refine,
+        .stop = c->stop,
     };
 }

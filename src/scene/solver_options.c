@@ -6,7 +6,7 @@
 
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
 {
-    memset(o, 0, sizeof *o);
+    *o = gd_solver_opts_defaults(); /* what no key sets: refine_events, max_separated_periods */
     o->method = c->method;
     o->order = c->order;
     snprintf(o->table, sizeof o->table, "%s", c->table);
@@ -14,7 +14,6 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->atol = c->atol;
     o->steps_per_period = c->steps_per_period;
     o->fixed_step = c->fixed_step;
-    o->refine_events = 1;
     o->root_finding = c->root_finding;
     o->grazing_watch = c->grazing_watch;
     o->library_vector_ops = c->vector_kernels == GD_VECTOR_KERNELS_SUNDIALS;
@@ -22,5 +21,4 @@ GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o)
     o->ungated_roots = !c->gated_roots;
     o->max_step_fraction = c->max_step_fraction;
     o->max_events_per_period = c->max_events_per_period;
-    o->max_separated_periods = 1000;
 }

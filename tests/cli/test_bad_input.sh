@@ -114,7 +114,7 @@ model = torsional
 response_variable = y1L
 [operating]
 speed_rpm = 4000
-torque_nm = 500" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, lambda_R, dte_L, dte_R, q\\)" "response variable of another model"
+torque_nm = 500" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, dte_L, q\\)" "response variable of another model"
 check_bad "[run]
 transient_periods = 500
 transient_max_periods = 400" "case.ini:3: run.transient_max_periods: 400 is below run.transient_periods = 500 \\(valid: 0, or at least transient_periods\\)" "adaptive transient shorter than the fixed one"

@@ -203,7 +203,56 @@ def early_stops(kind, tmp, case, sets, frac=0.2):
             err.strip().splitlines()[-1] if err.strip() else ''))
 
 
+FAKE_GNUPLOT = """#!/bin/sh
+: > "$GEARDYN_TEST_GNUPLOT/started"
+sleep 2
+: > "$GEARDYN_TEST_GNUPLOT/survived"
+: > survived-in-its-directory
+"""
+
+
+def gnuplot_orphan(tmp, args, how):
+    """Run args with a stand-in for gnuplot that draws for 2 s, end the run while it draws (SIGINT
+    and SIGTERM together, or SIGKILL), wait 3 s, run again with the real gnuplot. Returns the exit
+    status of the ended run, whether the stand-in outlived it, and what the next run left (dot
+    names in DIR and stages beside it)."""
+    fake = os.path.join(tmp, 'fake-gnuplot')
+    os.makedirs(fake, exist_ok=True)
+    for n in ('started', 'survived'):
+        if os.path.exists(os.path.join(fake, n)):
+            os.unlink(os.path.join(fake, n))
+    exe = os.path.join(fake, 'gnuplot')
+    with open(exe, 'w') as f:
+        f.write(FAKE_GNUPLOT)
+    os.chmod(exe, 0o755)
+    env = dict(os.environ, PATH=fake + os.pathsep + os.environ.get('PATH', ''), GEARDYN_TEST_GNUPLOT=fake)
+    p = subprocess.Popen([G, 'run'] + args + ['--threads', '1'], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         env=env)
+    t0 = time.monotonic()
+    while not os.path.exists(os.path.join(fake, 'started')) and p.poll() is None and time.monotonic() - t0 < 120:
+        time.sleep(0.01)
+    if how == 'SIGKILL':
+        p.send_signal(signal.SIGKILL)
+    else:
+        p.send_signal(signal.SIGSTOP)
+        p.send_signal(signal.SIGINT)
+        p.send_signal(signal.SIGTERM)
+        p.send_signal(signal.SIGCONT)
+    p.communicate(timeout=600)
+    time.sleep(3)
+    survived = os.path.exists(os.path.join(fake, 'survived'))
+    d = args[args.index('--out') + 1]
+    rc, err = run(args)
+    return p.returncode, survived, state(d)[1] + beside(d) + ([] if rc == 0 and whole_set(d) else ['(no whole set)'])
+
+
 def main():
+    # a test started in the background of a script (SIGINT ignored) or under nohup (SIGHUP ignored)
+    # hands the ignored signals to every run, and geardyn rightly leaves an ignored signal ignored:
+    # the runs would go on through the signals sent to them. The runs get the default actions.
+    for s in (signal.SIGINT, signal.SIGHUP, signal.SIGTERM, signal.SIGQUIT):
+        if signal.getsignal(s) == signal.SIG_IGN:
+            signal.signal(s, signal.SIG_DFL)
     tmp = tempfile.mkdtemp(prefix='geardyn-faults-')
     quick = os.path.join(SRC, 'cases', 'quickstart.ini')
     # response: small tables, so that a limit between the tables and the pictures truncates a picture
@@ -256,6 +305,16 @@ def main():
                  'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64', 'workprecision.repeats=1',
                  'workprecision.horizon_periods=5', 'run.transient_periods=100', 'run.record_periods=200'])
 
+    # the LTCA that a response's case or a sweep's points need (stiffness = ltca) asks the stop hook
+    # as it goes: in the resolution of the case, in the sweep's check of its points, within a solve
+    early_stops('response-ltca', tmp, 'cases/quickstart.ini',
+                ['excitation.stiffness=ltca', 'solver.ltca_face_slices=201', 'run.transient_periods=5',
+                 'run.record_periods=5'])
+    early_stops('sweep-ltca', tmp, 'cases/paper/sweep-power.ini',
+                ['sweep.parameter=solver.ltca_face_slices', 'sweep.from=21', 'sweep.to=201', 'sweep.points=2',
+                 'sweep.direction=up', 'operating.power_kw=200', 'run.transient_periods=5',
+                 'run.transient_max_periods=5', 'run.record_periods=5', 'run.lyapunov_exponents=0'])
+
     # a second run into a directory being written is refused, the first one ends well
     p = subprocess.Popen([G, 'run'] + rargs, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     time.sleep(0.3)
@@ -273,6 +332,14 @@ def main():
     rc, err = run(oargs)
     ok(rc == 0 and state(o)[1] == [] and beside(o) == [] and whole_set(o),
        'the next run removes what it left (left %s)' % (state(o)[1] + beside(o)))
+    # a run ended while gnuplot draws (a second signal, SIGKILL) takes gnuplot with it: an orphan
+    # drawing on into the stage would race the next run's removal of it (and leave the stage
+    # beside DIR when it writes between the removal's listing and its rmdir)
+    for how in ('a second signal', 'SIGKILL'):
+        rc, survived, left = gnuplot_orphan(tmp, rargs, how)
+        ok(rc in ((130, 143) if how != 'SIGKILL' else (-9,)) and not survived and left == [],
+           'a run ended by %s while gnuplot draws: exit %d, gnuplot %s, the next run leaves %s' %
+           (how, rc, 'drew on after it' if survived else 'ended with it', left))
     # a killed run's stages (beside DIR, and DIR/.staging where DIR cannot be exchanged) and
     # gnuplot script are removed by the next run
     stage = os.path.join(tmp, '.response.geardyn-stage')

@@ -74,7 +74,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         st = gd_model_build(&c, &m, &err);
     if (st == GD_OK) {
         gd_run_cost cost;
-        gd_run_cost_estimate(&c, &m, &cost);
+        gd_run_cost_estimate(&c, &m, 2, &cost);
         gd_run_cost_check(&c, &m, &cost, &err);
     }
     gd_case_free(&c);

@@ -117,14 +117,18 @@ def test_check_is_geardyn_check(rel, sets):
     model = k['derived']['model']
     for name in ('mesh_frequency_hz', 'natural_frequency_hz', 'frequency_ratio', 'static_mesh_force_n',
                  'static_deflection_um', 'normal_equivalent_mass_kg'):
-        assert '%.6g' % model[name] == v[name], name
+        if model[name] is None:   # check prints no line for what the analysis has no speed or torque for
+            assert name not in v, name
+        else:
+            assert '%.6g' % model[name] == v[name], name
     assert model['degrees_of_freedom'] == int(v['degrees_of_freedom'])
     geo = k['derived']['geometry']
     for name in ('transverse_module_mm', 'centre_distance_mm', 'contact_ratio_transverse', 'contact_ratio_overlap'):
         assert '%.6g' % geo[name] == v[name], name
     assert k['cost']['time_class'] == v['time_class']
     assert '%.3g' % k['cost']['memory_bytes'] == v['memory_bytes']
-    assert k['case']['parameters']['operating']['speed_rpm']['value'] == c['operating.speed_rpm']
+    speed = k['case']['parameters']['operating']['speed_rpm']['value']   # JSON null: a key unset (NaN)
+    assert speed == c['operating.speed_rpm'] or (speed is None and math.isnan(c['operating.speed_rpm']))
     assert c.source('excitation.mesh_stiffness_n_per_m')[0] != 'derived'  # the case itself is not resolved
 
 
