@@ -62,7 +62,8 @@ SHORTEN = [
                                            'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64',
                                            'workprecision.repeats=1', 'workprecision.horizon_periods=5',
                                            'run.transient_periods=100', 'run.record_periods=10']),
-    ('cases/accuracy/period1-7000rpm.ini', ['workprecision.families=rk4,erk5,erk8', 'workprecision.rtol_tightest=1e-6',
+    ('cases/accuracy/period1-7000rpm.ini', ['workprecision.families=rk4,erk2,erk4,erk5,erk8',
+                                            'workprecision.rtol_tightest=1e-6',
                                             'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64',
                                             'workprecision.repeats=1', 'workprecision.horizon_periods=5',
                                             'run.transient_periods=100', 'run.record_periods=10']),
@@ -331,6 +332,7 @@ WORDS = [
     (re.compile(r'\(\s*\)'), 'empty parentheses'),
     (re.compile(r'\b(\w[\w-]*) \(\1\)'), 'a word repeated in parentheses'),
     (re.compile(r':\s*-\s*$'), 'a value missing ("-")'),
+    (re.compile(r'\bmean [-\u2212]?\d[\d.]*\s*\)'), 'a value without its unit'),
 ]
 
 
@@ -473,8 +475,8 @@ def check_texts(fig, bad):
     for i in range(len(ts)):
         for j in range(i + 1, len(ts)):
             a, b = ts[i], ts[j]
-            # an axis title keeps half a character clear of the tick labels beside it
-            gap = 0.25 * a.size if (a.rotated and b.role == 'tick') or (b.rotated and a.role == 'tick') else 0
+            # an axis title keeps 0.6 of a character clear of the tick labels beside it
+            gap = 0.3 * a.size if (a.rotated and b.role == 'tick') or (b.rotated and a.role == 'tick') else 0
             if a.box.grow(gap).overlaps(b.box.grow(gap), shrink=0.3):
                 if a.s == b.s and abs(a.x - b.x) < 0.5 and abs(a.y - b.y) < 0.5:
                     continue   # drawn twice at the same place (a key redrawn opaque)
@@ -760,6 +762,46 @@ def check_regime_map(fig, summary, bad):
         bad.append('regime map: %d classes listed where %d occur' % (len(set(listed)), len(classes)))
 
 
+def check_mle_scale(fig, outdir, bad):
+    """The exponent's colour scale of a regime map set by the bulk of the cells, not by a few:
+    its end (read off the colour box and its ticks) at most 1.5 times the 90th percentile of the
+    exponent's magnitude over the points (sweep.csv)."""
+    try:
+        import csv
+        vals = sorted(abs(float(r['mle'])) for r in csv.DictReader(open(os.path.join(outdir, 'sweep.csv')))
+                      if r.get('mle') not in (None, '', 'nan', 'NaN'))
+    except (OSError, ValueError, KeyError):
+        return
+    if len(vals) < 5:
+        return
+    p90 = vals[int(0.9 * (len(vals) - 1))]
+    # the continuous colour box: a column of many colours outside the frames
+    cols = {}
+    for e in fig.loose:
+        if e.kind == 'fill' and e.fill:
+            pts = list(e.points())
+            if pts and not any(pn.frame and pn.frame.contains(*pts[0]) for pn in fig.panels):
+                cols.setdefault(round(min(x for x, _ in pts) / 5), []).append(e)
+    for es in cols.values():
+        if len({e.fill for e in es}) <= 20:
+            continue
+        pts = [q for e in es for q in e.points()]
+        x1 = max(x for x, _ in pts)
+        y0, y1 = min(y for _, y in pts), max(y for _, y in pts)
+        ticks = [t for t in fig.texts if t.number is not None and x1 <= t.x <= x1 + 60 and y0 - 5 <= t.y <= y1 + 10]
+        if len(ticks) < 2 or p90 <= 0:
+            continue
+        a, b = ticks[0], ticks[-1]
+        if abs(b.y - a.y) < 1:
+            continue
+        slope = (b.number - a.number) / (b.y - a.y)
+        # a tick label's baseline sits a third of the font below its value's position
+        end = max(abs(a.number + slope * (y - (a.y - 0.32 * a.size))) for y in (y0, y1))
+        if end > 1.5 * p90:
+            bad.append('regime map: the colour scale of the exponent reaches %.3g, %.1f times the 90th percentile '
+                       '%.3g of its magnitude: a few cells set it' % (end, end / p90, p90))
+
+
 def check_flat(fig, bad):
     for pn in fig.panels:
         for side in ('left', 'right'):
@@ -771,15 +813,24 @@ def check_flat(fig, bad):
                     bad.append('round-off: ticks %g apart on the %s axis of %r' % (step, side, title))
 
 
+# the shapes of gnuplot's markers (an open and a filled one alike)
+SHAPES = {'gpPt0': 'plus', 'gpPt1': 'cross', 'gpPt2': 'star', 'gpPt3': 'square', 'gpPt4': 'square',
+          'gpPt5': 'circle', 'gpPt6': 'circle', 'gpPt7': 'triangle up', 'gpPt8': 'triangle up',
+          'gpPt9': 'triangle down', 'gpPt10': 'triangle down', 'gpPt11': 'diamond', 'gpPt12': 'diamond',
+          'gpPt13': 'pentagon', 'gpPt14': 'pentagon'}
+
+
 def check_continuation(fig, bad):
+    """Every kind of marker in the key of its own shape (a sweep's points are not bifurcations)."""
     marks = {}
     for p in fig.plots.values():
         for e in p.key_samples:
             if e.kind == 'use' and p.key_texts:
-                marks.setdefault((e.marker.split('@')[0], e.colour), []).append(p.key_texts[0].s)
+                shape = e.marker.split('@')[0]
+                marks.setdefault(SHAPES.get(shape, shape), []).append(p.key_texts[0].s)
     for k, v in marks.items():
         if len(v) > 1:
-            bad.append('continuation: %s drawn with the same marker' % ' and '.join(repr(s) for s in v))
+            bad.append('continuation: %s drawn with the same shape of marker (%s)' % (' and '.join(repr(s) for s in v), k))
 
 
 def check_bands(fig, bad):
@@ -838,6 +889,7 @@ def check_picture(path, outdir, keys, single, summary):
         check_bifurcation(fig, bad)
     if name == 'regime_map.svg':
         check_regime_map(fig, summary, bad)
+        check_mle_scale(fig, os.path.dirname(path), bad)
     if name in ('gte.svg', 'lte.svg', 'contact_pattern.svg'):
         check_flat(fig, bad)
     if name == 'contact_pattern.svg':
