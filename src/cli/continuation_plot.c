@@ -278,11 +278,19 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                 gd_gnuplot_printf(s, "%.12g,%.12g\n", bx[i], by[i]);
         gd_gnuplot_printf(s, "EOD\n");
     }
-    /* obstacles of the labels: the markers, the branches' points, the sweep's points */
-    int nobst = nb;
-    for (int b = 0; b < res->nbranches; b++)
-        nobst += res->branch[b].br.npoints;
-    nobst += sp->n;
+    /* obstacles of the labels: the markers, the branches (a point every 4 pixels along them), the
+     * sweep's points */
+    int nobst = nb + sp->n;
+    for (int b = 0; b < res->nbranches; b++) {
+        const gd_contin_branch *cb = &res->branch[b];
+        for (int i = 0; i + 1 < cb->br.npoints; i++) {
+            double len = hypot(px_x(f, gd_contin_value(res, cb->br.pt[i + 1].orbit.p)) -
+                                   px_x(f, gd_contin_value(res, cb->br.pt[i].orbit.p)),
+                               px_y(f, resp_value(r, &cb->meas[i + 1])) - px_y(f, resp_value(r, &cb->meas[i])));
+            nobst += (int)ceil(len / 4) + 1;
+        }
+        nobst += 1;
+    }
     double *obst = malloc(sizeof(double) * 2 * (size_t)(nobst + 1));
     cli_label *lab = malloc(sizeof(cli_label) * (size_t)(nb + 1));
     char (*text)[24] = malloc(sizeof *text * (size_t)(nb + 1));
@@ -293,11 +301,23 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
             obst[2 * o] = px_x(f, bx[i]);
             obst[2 * o++ + 1] = px_y(f, by[i]);
         }
-        for (int b = 0; b < res->nbranches; b++)
-            for (int i = 0; i < res->branch[b].br.npoints; i++) {
-                obst[2 * o] = px_x(f, gd_contin_value(res, res->branch[b].br.pt[i].orbit.p));
-                obst[2 * o++ + 1] = px_y(f, resp_value(r, &res->branch[b].meas[i]));
+        for (int b = 0; b < res->nbranches; b++) {
+            const gd_contin_branch *cb = &res->branch[b];
+            for (int i = 0; i < cb->br.npoints; i++) {
+                double ax = px_x(f, gd_contin_value(res, cb->br.pt[i].orbit.p)), ay = px_y(f, resp_value(r, &cb->meas[i]));
+                obst[2 * o] = ax;
+                obst[2 * o++ + 1] = ay;
+                if (i + 1 == cb->br.npoints)
+                    break;
+                double bx2 = px_x(f, gd_contin_value(res, cb->br.pt[i + 1].orbit.p)),
+                       by2 = px_y(f, resp_value(r, &cb->meas[i + 1]));
+                int k = (int)ceil(hypot(bx2 - ax, by2 - ay) / 4);
+                for (int j = 1; j < k && o < nobst; j++) {
+                    obst[2 * o] = ax + (bx2 - ax) * j / k;
+                    obst[2 * o++ + 1] = ay + (by2 - ay) * j / k;
+                }
             }
+        }
         for (int i = 0; i < sp->n; i++) {
             obst[2 * o] = px_x(f, sp->x[i]);
             obst[2 * o++ + 1] = px_y(f, sp->y[i]);
