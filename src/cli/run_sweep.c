@@ -421,21 +421,24 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
         gd_gnuplot_printf(b, "set label 1 '%.3g%s%s' at %.12g,%.12g offset 1.3,0 left front\n", off_v,
                           strcmp(r.unit, "-") ? " " : "", strcmp(r.unit, "-") ? r.unit : "", off_x, edge);
     }
+    /* the points inside the range (its ends widened by a millionth: the table's digits are
+     * fewer than those the range was found with) */
+    double tol = 1e-6 * (yhi - ylo > 0 ? yhi - ylo : 1);
     gd_gnuplot_printf(b, "plot ");
     int first = 1;
     for (int br = 0; br < 3; br++)
         if (has[br]) {
             gd_gnuplot_printf(b, "%s'bifurcation.csv' using 'parameter':(strcol('direction') eq '%s' && %s >= %.12g && "
                                  "%s <= %.12g ? %s : 1/0) with points %s lc rgb '%s' title '%s'",
-                              first ? "" : ", ", gd_sweep_branch_name(br), rc, ylo, rc, yhi, rc, branch_point[br],
-                              branch_colour[br], branch_key[br]);
+                              first ? "" : ", ", gd_sweep_branch_name(br), rc, ylo - tol, rc, yhi + tol, rc,
+                              branch_point[br], branch_colour[br], branch_key[br]);
             first = 0;
         }
     if (off >= 0)
         gd_gnuplot_printf(b, ", 'bifurcation.csv' using 'parameter':(abs(column('parameter') - %.12g) < %.6g && "
                              "(%s < %.12g || %s > %.12g) ? %.12g : 1/0) with points pt %d ps 1.3 lc rgb '#000000' "
                              "title 'beyond the axis'",
-                          off_x, 1e-9 * fmax(1, fabs(off_x)), rc, ylo, rc, yhi, edge, off_v < ylo ? 11 : 9);
+                          off_x, 1e-9 * fmax(1, fabs(off_x)), rc, ylo - tol, rc, yhi + tol, edge, off_v < ylo ? 11 : 9);
     gd_gnuplot_printf(b, "\nunset label 1\nunset key\nset yrange [*:*]\n");
     const char *what[2] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s²)"};
     const char *col[2] = {"mle", "rms_accel_mps2"};

@@ -738,6 +738,31 @@ def check_bifurcation(fig, bad):
                    (100 * worst / pn.frame.h))
 
 
+def check_bifurcation_points(fig, outdir, bad):
+    """Every row of bifurcation.csv drawn once in the top panel (inside the axis, or as the marker of
+    a value beyond it)."""
+    import csv
+    try:
+        rows = list(csv.reader(open(os.path.join(outdir, 'bifurcation.csv'), encoding='utf-8')))
+    except OSError:
+        return
+    if len(rows) < 2 or len(rows[0]) < 3:
+        return
+    col = 3 if rows[0][2] == 'parameter2' else 2
+    n = 0
+    for r in rows[1:]:
+        try:
+            n += math.isfinite(float(r[col]))
+        except (ValueError, IndexError):
+            pass
+    pn = fig.panels[0] if fig.panels else None
+    if pn is None:
+        return
+    drawn = sum(1 for p in pn.plots for e in p.elements if e.kind == 'use' for _ in e.points())
+    if drawn != n:
+        bad.append('bifurcation: %d Poincaré points drawn of the %d in bifurcation.csv' % (drawn, n))
+
+
 def check_regime_map(fig, summary, bad):
     sw = summary.get('sweep', {}) if summary else {}
     axes = [sw.get('parameter') or {}, sw.get('parameter2') or {}]
@@ -887,6 +912,7 @@ def check_picture(path, outdir, keys, single, summary):
                 bad.append('variable: %s draws %r, response.svg %r' % (name, got, want))
     if name == 'bifurcation.svg':
         check_bifurcation(fig, bad)
+        check_bifurcation_points(fig, os.path.dirname(path), bad)
     if name == 'regime_map.svg':
         check_regime_map(fig, summary, bad)
         check_mle_scale(fig, os.path.dirname(path), bad)
