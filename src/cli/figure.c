@@ -228,3 +228,14 @@ void cli_log_tics(gd_gnuplot_script *s, const char *axis, double lo, double hi)
         }
     gd_gnuplot_printf(s, ")\n");
 }
+
+void cli_flank_panel(gd_gnuplot_script *s, int h, int halves)
+{
+    double l = halves > 1 ? (h ? 0.525 : 0.06) : 0.11, r = halves > 1 ? (h ? 0.875 : 0.41) : 0.80;
+    gd_gnuplot_printf(s, "set lmargin at screen %.4f\nset rmargin at screen %.4f\nset tmargin at screen 0.86\n"
+                         "set bmargin at screen 0.12\n", l, r);
+    if (h + 1 < halves)
+        gd_gnuplot_printf(s, "unset colorbox\n");
+    else
+        gd_gnuplot_printf(s, "set colorbox user origin screen %.4f,0.12 size screen 0.018,0.74\n", r + 0.015);
+}

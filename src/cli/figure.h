@@ -41,6 +41,10 @@ double cli_nice_step(double span, int n);
  * round one. */
 void cli_pad(double lo, double hi, double frac, int logscale, double *a, double *b);
 
+/* The frame of the flank panel of half h of halves (TCA's and LTCA's pictures): both of one width,
+ * the colour bar beside the last. */
+void cli_flank_panel(gd_gnuplot_script *s, int h, int halves);
+
 /* The ticks of a log axis ("x", "y") over [lo, hi]: 1, 2 and 5 times the powers of ten when it
  * spans less than two decades, else the powers of ten, written 10^{k}. */
 void cli_log_tics(gd_gnuplot_script *s, const char *axis, double lo, double hi);

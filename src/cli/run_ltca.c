@@ -41,7 +41,8 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
         gd_gnuplot_printf(&s, "unset key\nset xrange [%.6g:%.6g]\nset yrange [%.6g:%.6g]\nset cbrange [0:%.6g]\n", za, zb,
                           ra, rb, qmax > 0 ? qmax : 1);
         for (int h = 0; h < H; h++) {
-            gd_gnuplot_printf(&s, "%s\n", h + 1 < H ? "unset colorbox" : "set colorbox");
+            /* panels of one width, one colour scale: its bar beside the last */
+            cli_flank_panel(&s, h, H);
             gd_gnuplot_printf(&s, "set title '%s: load share %.3f, largest pressure %.0f MPa%s'\n",
                               H > 1 ? cli_half_words(h, H) : "the pair", r->load_share[h], r->pressure_max[h] * 1e-6,
                               r->edge_kinds[h] ? ", edge loading" : "");

@@ -42,8 +42,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_tca_result *r,
                           face, 8 * p, p, p * 1.0001, 8 * p);
         for (int h = 0; h < H; h++) {
             char gte[160];
-            /* one colour scale for both halves, its bar beside the last */
-            gd_gnuplot_printf(&s, "%s\n", h + 1 < H ? "unset colorbox" : "set colorbox");
+            /* panels of one width, one colour scale: its bar beside the last */
+            cli_flank_panel(&s, h, H);
             if (gte_flat(c, r, h))
                 snprintf(gte, sizeof gte, "GTE zero to round-off, line contact");
             else
