@@ -1,34 +1,48 @@
 #!/usr/bin/env python3
 """Every picture of every shipped case read back from its SVG and judged as a figure in a report
 (tests/cli/svgfig.py reads the SVG; the checks are below). Each shipped case runs once, as shipped
-or shortened with --set where it is long (the table CASES says how, and why the shortening keeps
-what the picture shows); a few variants add the pictures no shipped case draws as written (a
-regime map, TCA and LTCA of single pairs, a response variable other than the default).
+or shortened with --set where it is long (the table SHORTEN says how; the shortenings keep what
+the pictures show); the variants (VARIANTS) add the pictures no shipped case draws as written: a
+regime map, TCA and LTCA of single pairs, other response variables, the paper's 25-point speed
+sweep (its resonance off the Poincare panel's scale), a continuation with a sweep over it.
 
 The checks of every picture:
   frame     no drawn point on or beyond a panel's frame, unless a curve ends there because its
-            range ends there (a time history over its own window);
+            range ends there (a time history over its own window), an impulse stands on its
+            axis, or a map's cell fills to the range's end;
   span      the curves of a panel span at least half of its x axis;
-  units     every axis label ends in a unit, "(unit)", that the run's tables name (their column
-            suffixes, summary.json's units) or a count; "(-)" only for a dimensionless quantity;
+  band      no time series so dense (turning every 3 px or less) that it draws a solid band;
+  units     every axis label names its quantity (two words at least) and ends in a unit, "(unit)",
+            that the run's tables name (their column suffixes, summary.json's units) or is a
+            count; "(-)" only for a dimensionless quantity;
   words     no key name, no underscore, no "lambda" spelt out, no number of an equation, figure
-            or table of a paper the picture does not name, no "1 points";
-  key       a legend covers no drawn point; every entry's plot draws something visible (not all
-            under later plots); no legend of three or more entries repeated in several panels;
-  texts     no two texts overlap (labels, titles, ticks, legends);
-  ticks     tick labels at round values (three significant digits at most);
+            or table of a paper the picture does not name, no "1 points", no word repeated in
+            parentheses ("chaotic (chaotic)"), no value missing (": -") or without its unit;
+            on a single pair no halves (left, right, half, λL);
+  key       a legend covers no drawn point; every entry's series draws something a reader sees
+            (more than a stub of 12 px, not all under plots drawn later); no legend of three or
+            more entries repeated in several panels;
+  texts     no two texts overlap, an axis title 0.6 of a character clear of its ticks; no key or
+            label text runs over a frame;
+  ticks     tick labels at round values (a step of 1, 2, 2.5 or 5 times a power of ten, every
+            value a multiple of it; or 1, 2, 5 times the powers of ten on a log axis);
   colour    no line or marker too light for white (contrast below 1.7: yellow); the series of a
-            panel told apart by colour (for colour-blind eyes too: CIE76 difference of at least 12
-            under protanopia and deuteranopia) or by dash or marker;
+            panel, and the colours of a categorical key, told apart by colour (for colour-blind
+            eyes too: CIE76 difference of at least 12 under protanopia and deuteranopia) or by
+            dash or marker;
   type      no text smaller than 9 px; panels at least 280 x 160 px; no two panels of a picture
-            with the same title;
+            with the same title; no empty slot in a grid of panels;
 and the checks of a kind: response.png's spectrum shows its largest component with room to its
 right and its phase portrait is a curve, not a polygon; time_history.png and phase.png draw
-output.response_variable as response.png does; bifurcation.png's Poincare panel is not squashed
-by one column; regime_map.png's axes stay inside the swept ranges and its legend names the
-classes that occur; gte.png of a pair whose GTE is round-off says so and draws it flat; single
-pairs show no halves; continuation.png's sweep markers are not its bifurcation markers; the
-optimiser comparison draws no overlapping translucent bands.
+output.response_variable as response.png does; bifurcation.png draws every row of
+bifurcation.csv and its Poincare panel is not squashed by one column; regime_map.png's axes stay
+inside the swept ranges, its key names the classes that occur and its exponent's colour scale is
+set by the bulk of the cells; gte.png of a pair whose GTE is round-off says so and draws it flat;
+contact_pattern.png draws a path, not a scatter; continuation.png's markers each of their own
+shape (a sweep's points are not bifurcations); the optimiser comparison draws no overlapping
+translucent bands.
+
+The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its layout is the PNG's.
 
   test_pictures.py                 (GEARDYN names the executable, GEARDYN_SOURCE the source tree)
   test_pictures.py --keep DIR      runs and keeps the outputs in DIR
