@@ -16,6 +16,12 @@
 #define CLI_FIG_PT 10.0
 #define CLI_FIG_PX (1.25 * CLI_FIG_PT)
 
+/* The line height of a key with spacing s, as a 'spacing' for the terminal: the SVG terminal's
+ * line is 1.5 times its font size (18.75 px), pngcairo's that of its font (15.55 px); the SVG's
+ * keys are set to the PNG's lines, or gnuplot breaks a long key into columns there and not in the
+ * PNG (and drops the columns that leave the picture). */
+#define CLI_KEY_SPACING(svg, s) ((svg) ? (s) * 15.55 / 18.75 : (s))
+
 /* Begin picture NAME (written as .NAME.png.tmp or .NAME.svg.tmp) of w x h pixels: terminal,
  * UTF-8, the common style (grid, border, no key box, autoscaled ranges fixed to the data with
  * margins of 4 % in x and 7 % in y, so that nothing sits on a frame). */

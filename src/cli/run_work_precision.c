@@ -120,7 +120,9 @@ static int base_index(const gd_wp_result *res, int f)
     return k;
 }
 
-static const int markers[] = {7, 5, 9, 13, 11, 15, 3};
+/* filled markers whose open twin is the next lower type (root finding off); six of them against the
+ * seven colours, so that no two of 42 families share colour and marker */
+static const int markers[] = {7, 5, 9, 11, 13, 15};
 
 /* The data blocks of the script: $Fi per family (the columns of column()), $Ok per order study. */
 static void script_data(gd_gnuplot_script *b, const gd_wp_result *res)
@@ -267,8 +269,9 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
                     kx = (30 + (cells % 2) * pw + 60) / Wd;
                     ky = 1 - (70 + (cells / 2) * ph + 30) / Hd;
                 }
-                gd_gnuplot_printf(&b, "set key at screen %.5f,%.5f left top vertical Left reverse samplen 3 spacing 1.15 "
-                                      "title 'method (solid: events located; dashed: not)'\n", kx, ky);
+                gd_gnuplot_printf(&b, "set key at screen %.5f,%.5f left top vertical Left reverse samplen 3 spacing %.4f "
+                                      "title 'method (solid: events located; dashed: not)'\n", kx, ky,
+                                  CLI_KEY_SPACING(fm, 1.15));
             } else {
                 gd_gnuplot_printf(&b, "unset key\n");
             }
@@ -307,7 +310,7 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_wp_result *res
                 const gd_wp_family *F = &res->families[f];
                 int bi = base_index(res, f);
                 const char *colour = cli_colour[bi % CLI_NCOLOURS];
-                int pt = markers[bi % 7] - (F->root_finding ? 0 : 1);
+                int pt = markers[bi % 6] - (F->root_finding ? 0 : 1);
                 char words[120], key[200];
                 family_words(F, words, sizeof words);
                 /* the measured order in the key, when there is one */

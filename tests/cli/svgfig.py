@@ -303,6 +303,18 @@ class Plot:
             return (e.colour if e.kind != 'fill' else e.fill, e.dash or '', e.marker or '')
         return None
 
+    def look(self):
+        """(colour, dash, marker shape) of the plot as its key shows it: a line's dash and a
+        marker's shape together (style() gives the first sample's alone)."""
+        els = self.key_samples or self.elements
+        if not els:
+            return None
+        e = els[0]
+        colour = e.colour if e.kind != 'fill' else e.fill
+        dash = next((x.dash or '' for x in els if x.kind == 'path'), '')
+        marker = next(((x.marker or '').split('@')[0] for x in els if x.kind == 'use'), '')
+        return colour, dash, marker
+
 
 class Panel:
     def __init__(self, key, frame):

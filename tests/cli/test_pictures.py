@@ -70,13 +70,14 @@ import svgfig  # noqa: E402
 # shipped. The shortenings keep the motion each picture shows (a sweep's bands, a chaotic
 # attractor) while cutting transients, windows, points and budgets.
 SHORTEN = [
-    # work-precision: three families (and their root-finding-off twins), rtol to 1e-6, RK4 and the
-    # order study to 64 steps a period, a short transient and window
+    # work-precision: three families (and their root-finding-off twins; all eight in one scene, so
+    # that their colours and markers are told apart), rtol to 1e-6, RK4 and the order study to 64
+    # steps a period, a short transient and window
     ('cases/accuracy/stiff-supports.ini', ['workprecision.families=rk4,erk4,dirk3', 'workprecision.rtol_tightest=1e-6',
                                            'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64',
                                            'workprecision.repeats=1', 'workprecision.horizon_periods=5',
                                            'run.transient_periods=100', 'run.record_periods=10']),
-    ('cases/accuracy/period1-7000rpm.ini', ['workprecision.families=rk4,erk2,erk4,erk5,erk8',
+    ('cases/accuracy/period1-7000rpm.ini', ['workprecision.families=rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8',
                                             'workprecision.rtol_tightest=1e-6',
                                             'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64',
                                             'workprecision.repeats=1', 'workprecision.horizon_periods=5',
@@ -560,11 +561,11 @@ def check_colour(fig, bad):
                            (p.title or (p.key_texts[0].s if p.key_texts else p.id), c, svgfig.contrast_on_white(c)))
                 break
     for pn in fig.panels:
-        keyed = [p for p in pn.plots if p.key_texts and p.style()]
+        keyed = [p for p in pn.plots if p.key_texts and p.look()]
         for i in range(len(keyed)):
             for j in range(i + 1, len(keyed)):
-                (ca, da, ma), (cb, db, mb) = keyed[i].style(), keyed[j].style()
-                if da != db or ma.split('@')[0] != mb.split('@')[0] or ca is None or cb is None:
+                (ca, da, ma), (cb, db, mb) = keyed[i].look(), keyed[j].look()
+                if da != db or ma != mb or ca is None or cb is None:
                     continue
                 de = svgfig.delta_e(ca, cb)
                 if de < 12:
