@@ -60,11 +60,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "case: %s\n", err.msg);
         return 1;
     }
-    double x[6];
-    gd_opt_gear_table2(x);
     gd_pair t = gd_pair_from_case(&c);
     const gd_ltca_settings set = gd_ltca_settings_from_case(&c);
-    gd_opt_gear_apply(&t, x);
+    gd_opt_gear_table2(&t);
     double best_create = 1e300, best_eval = 1e300, f = 0;
     for (int r = 0; r < repeats; r++) {
         double t0 = now();
@@ -117,9 +115,11 @@ int main(int argc, char **argv)
     if (full) {
         gd_opt_gear *g;
         const gd_pair pair = gd_pair_from_case(&c);
-        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
-        gd_opt_gear_bounds(&c, lower, upper);
-        if (gd_opt_gear_create(&pair, &set, lower, upper, &g, &err) != GD_OK) {
+        double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
+        gd_opt_gear_vars v;
+        gd_opt_gear_vars_paper(&v);
+        gd_opt_gear_bounds(&c, &v, lower, upper);
+        if (gd_opt_gear_create(&pair, &set, &v, lower, upper, &g, &err) != GD_OK) {
             fprintf(stderr, "%s\n", err.msg);
             return 1;
         }

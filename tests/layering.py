@@ -68,12 +68,13 @@ PUBLIC = {
     'gd_contact.h': 'contact', 'gd_compliance.h': 'contact', 'gd_tca.h': 'contact',
     'gd_ltca.h': 'contact',
     'gd_excitation.h': 'excitation',
-    'gd_model.h': 'dynamics', 'gd_sim.h': 'dynamics',
+    'gd_model.h': 'dynamics', 'gd_modal.h': 'dynamics', 'gd_sim.h': 'dynamics',
     'gd_scene.h': 'scene',
     'gd_optimize.h': 'optimisation',
     'gd_analysis.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
     'gd_workprec.h': 'analysis', 'gd_spectrum.h': 'analysis', 'gd_periodic.h': 'analysis',
     'gd_continuation.h': 'analysis',
+    'gd_basins.h': 'analysis',
     'gd_output.h': 'output',
     'geardyn.h': 'cli',            # the umbrella: the command line only
     'gd_version.h': ANY,           # generated from gd_version.h.in

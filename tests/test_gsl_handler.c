@@ -13,6 +13,7 @@
 #include "geardyn/gd_compliance.h"
 #include "geardyn/gd_contact.h"
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_model.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_sim.h"
@@ -195,6 +196,21 @@ static int ep_sim_create(void)
     return rc;
 }
 
+static int ep_modal(void)
+{
+    gd_model m; /* one mass on one spring, built by hand: no other library call reaches GSL first */
+    memset(&m, 0, sizeof m);
+    m.ndof = 1;
+    m.n = 2;
+    m.mass[0] = m.inv_mass[0] = m.omega_n = 1.0;
+    m.nk = 1;
+    m.K0[0] = (gd_nz){0, 0, 4.0};
+    gd_modes md = {0};
+    gd_modal out;
+    gd_error e = {0};
+    return handler_is_off(gd_modal_analyse(&m, &md, NULL, &out, &e), &e);
+}
+
 static int ep_testfn(void)
 {
     gd_opt_testfn t;
@@ -282,6 +298,7 @@ int main(void)
         {ep_contact_workspace, "gd_contact_workspace_alloc"},
         {ep_spectrum, "gd_amplitude_spectrum"},
         {ep_sim_create, "gd_sim_create (a custom model)"},
+        {ep_modal, "gd_modal_analyse (a model of the caller's)"},
         {ep_testfn, "gd_opt_testfn_init"},
         {ep_opt_run, "gd_opt_run (a problem of the caller's)"},
         {ep_opt_compare, "gd_opt_compare (a problem of the caller's)"},

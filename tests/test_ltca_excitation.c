@@ -6,7 +6,8 @@
  *     before, loaded just after); the relative normal velocity from the rigid-body kinematics
  *     equals the rate at which the gap of that flank point closes (finite differences of TCA's
  *     gap at the ideal gear position); the stiffness k_s and the power law of the incoming pair;
- *     mirror symmetry of the halves of an aligned pair;
+ *     mirror symmetry of the halves of an aligned pair; an aligned spur pair (the NASA rig's) meshes
+ *     in along a line, reported at its middle, and converges in the number of face slices;
  *  3. the cache key: unchanged by the speed, changed by everything LTCA reads;
  *  4. bad arguments are refused. */
 #include "ltca_util.h"
@@ -208,10 +209,60 @@ static void refusals(void)
     gd_case_free(&c);
 }
 
+/* An aligned spur pair (the NASA Glenn gear-noise-rig pair: 28/28, m 3.175 mm, 6.35 mm face, 72 N m):
+ * the incoming pair touches along the whole face at once, so the mesh-in is a line, reported at
+ * the middle of the face without a face end's edge, and what the impact pulse takes from it
+ * (phase, velocity, loaded deflection, k_s) does not depend on the number of face slices. */
+static void line_touch(void)
+{
+    static const int slices[] = {11, 21, 41, 81};
+    double ph[4], vs[4], dm[4], ks[4];
+    int mid = 1, ends = 0;
+    for (int k = 0; k < 4; k++) {
+        char ns[64];
+        snprintf(ns, sizeof ns, "solver.ltca_face_slices=%d", slices[k]);
+        gd_case c;
+        if (lt_case(&c, 0, "gear.arrangement=spur", "gear.normal_module_mm=3.175", "gear.teeth_pinion=28",
+                    "gear.teeth_gear=28", "gear.helix_angle_deg=0", "gear.face_width_pinion_mm=6.35",
+                    "gear.face_width_gear_mm=6.35", "operating.torque_nm=72", ns, NULL))
+            return;
+        gd_error e = {0};
+        gd_ltca_excitation x;
+        if (gd_ltca_excitation_compute(PAIR_OF(&c), LTCA_SET_OF(&c), 32, &x, &e) != GD_OK) {
+            tap_ok(0, "NASA pair excitation: %s", e.msg);
+            gd_case_free(&c);
+            return;
+        }
+        const gd_ltca_impact *im = &x.impact[0];
+        ph[k] = im->phase, vs[k] = im->vs_per_omega, dm[k] = im->delta_m, ks[k] = im->ks;
+        printf("# NASA spur pair, %d slices: mesh-in at phase %.9f, face %.4f mm, edges 0x%x, v_s/omega1 %.9g mm, "
+               "delta_m %.6f um, k_s %.9g N/m\n", slices[k], im->phase, im->z1 * 1e3, im->edge,
+               im->vs_per_omega * 1e3, im->delta_m * 1e6, im->ks);
+        mid &= im->found && fabs(im->z1) < 1e-9;
+        ends |= (int)(im->edge & (GD_EDGE_PINION_END_LO | GD_EDGE_PINION_END_HI | GD_EDGE_GEAR_END_LO |
+                                  GD_EDGE_GEAR_END_HI));
+        gd_ltca_excitation_free(&x);
+        gd_case_free(&c);
+    }
+    tap_ok(mid && !ends, "NASA spur pair: the mesh-in is a line along the face, reported at its middle without a face "
+           "end's edge, at 11 to 81 slices");
+    double sp = 0, sv = 0, sd = 0, sk = 0;
+    for (int k = 1; k < 4; k++) {
+        sp = fmax(sp, fabs(ph[k] - ph[3]));
+        sv = fmax(sv, fabs(vs[k] / vs[3] - 1));
+        sd = fmax(sd, fabs(dm[k] / dm[3] - 1));
+        sk = fmax(sk, fabs(ks[k] / ks[3] - 1));
+    }
+    tap_ok(sp < 1e-6 && sv < 1e-5 && sd < 1e-5 && sk < 1e-5,
+           "and converged in the slices: from 21 slices on, phase within %.2g of the cycle, velocity %.2g, loaded "
+           "deflection %.2g, k_s %.2g of 81 slices'", sp, sv, sd, sk);
+}
+
 int main(void)
 {
     stiffness_api();
     impact();
+    line_touch();
     cache_key();
     refusals();
     return tap_done();

@@ -6,7 +6,7 @@
  *    and not to this table fails here.
  * 2. gd_tca_settings_from_case and gd_ltca_settings_from_case in the same way, with every field
  *    covered; their stop hook, which is the caller's and no key's, is left empty.
- * 3. gd_pair_modification_to_case writes the seven [modification] amounts and lengths of a pair
+ * 3. gd_pair_modification_to_case writes the nine [modification] amounts and lengths of a pair
  *    into a case and nothing else: every other key keeps its value. */
 #include "geardyn/gd_scene.h"
 #include "tap.h"
@@ -51,6 +51,8 @@ static const field pair_fields[] = {
     F(gd_pair, "modification.lead_relief_inner_um", lead_relief_inner_um, 0),
     F(gd_pair, "modification.lead_relief_outer_um", lead_relief_outer_um, 0),
     F(gd_pair, "modification.lead_unmodified_length_mm", lead_unmodified_length_mm, 0),
+    F(gd_pair, "modification.lead_unmodified_centre_mm", lead_unmodified_centre_mm, 0),
+    F(gd_pair, "modification.helix_slope_um", helix_slope_um, 0),
     F(gd_pair, "misalignment.axis_in_plane_arcmin", axis_in_plane_arcmin, 0),
     F(gd_pair, "misalignment.axis_cross_plane_arcmin", axis_cross_plane_arcmin, 0),
     F(gd_pair, "misalignment.centre_distance_error_mm", centre_distance_error_mm, 0),
@@ -164,7 +166,7 @@ static void modification_back(void)
         return;
     }
     gd_pair p = gd_pair_from_case(&c);
-    const double y[7] = {11, 1.25, 13, 2.5, 17, 19, 23};
+    const double y[9] = {11, 1.25, 13, 2.5, 17, 19, 23, -1.5, 3.25};
     p.root_relief_amount_um = y[0];
     p.root_relief_length_mm = y[1];
     p.tip_relief_amount_um = y[2];
@@ -172,6 +174,8 @@ static void modification_back(void)
     p.lead_relief_inner_um = y[4];
     p.lead_relief_outer_um = y[5];
     p.lead_unmodified_length_mm = y[6];
+    p.lead_unmodified_centre_mm = y[7];
+    p.helix_slope_um = y[8];
     p.normal_module_mm = 7; /* not a modification: must not reach the case */
     gd_pair_modification_to_case(&p, &d);
     size_t n;
@@ -190,10 +194,10 @@ static void modification_back(void)
         }
     }
     const gd_pair q = gd_pair_from_case(&d);
-    const double back[7] = {q.root_relief_amount_um, q.root_relief_length_mm, q.tip_relief_amount_um,
+    const double back[9] = {q.root_relief_amount_um, q.root_relief_length_mm, q.tip_relief_amount_um,
                             q.tip_relief_length_mm, q.lead_relief_inner_um, q.lead_relief_outer_um,
-                            q.lead_unmodified_length_mm};
-    tap_ok(mod == 7 && memcmp(back, y, sizeof y) == 0, "gd_pair_modification_to_case: the 7 modification keys "
+                            q.lead_unmodified_length_mm, q.lead_unmodified_centre_mm, q.helix_slope_um};
+    tap_ok(mod == 9 && memcmp(back, y, sizeof y) == 0, "gd_pair_modification_to_case: the 9 modification keys "
            "take the pair's values (%d changed)", mod);
     tap_ok(other == 0 && q.normal_module_mm == c.normal_module_mm, "gd_pair_modification_to_case: no other key "
            "changes (%d did)", other);

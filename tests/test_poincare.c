@@ -46,17 +46,78 @@ static int on_sample(void *user, const gd_sample *s)
     return 0;
 }
 
-/* max over components of |a - b| / (1 + max_k |y_k|), the metric of gd_poincare_period */
+/* max over components of |a - b| / (1 + max over points and components |y|), the metric of
+ * gd_poincare_period: the size of the orbit */
 static double pdist(const collect *c, long i, long j)
 {
-    double d = 0;
-    for (int q = 0; q < c->n; q++) {
-        double s = 0;
-        for (long k = 0; k < c->count && k < MAXP; k++)
+    double d = 0, s = 0;
+    for (long k = 0; k < c->count && k < MAXP; k++)
+        for (int q = 0; q < c->n; q++)
             s = fmax(s, fabs(c->y[k][q]));
-        d = fmax(d, fabs(c->y[i][q] - c->y[j][q]) / (1.0 + s));
+    for (int q = 0; q < c->n; q++)
+        d = fmax(d, fabs(c->y[i][q] - c->y[j][q]));
+    return d / (1.0 + s);
+}
+
+/* Sequences written out here, one orbit classed once (docs/numerics.md section 8):
+ * - a period-p orbit of size 81 whose small axial components (size 6.5) still carry a decaying
+ *   mode (74 deg per period, decay e^-0.028 per period, 1e-4 at the start of the window: the gear
+ *   axial mode of the single-helical guide pair at 13000 rpm): classed period-p, by the settled
+ *   half of the window, where the mode has decayed to 6e-6;
+ * - a component of size 0.5 with a spread of 3e-6 beside a mesh deflection of 80: the same point
+ *   (3.7e-8 of the orbit's size), though 2e-6 of its own size;
+ * - a quasi-periodic sequence: no period;
+ * - run.periodicity_tol follows solver.rtol: 100 rtol, 1e-6 with fixed steps, a given value kept. */
+static void synthetic(void)
+{
+    enum { N = 201, D = 4 };
+    static double pts[N * D];
+    for (int per = 1; per <= 2; per++) {
+        for (int k = 0; k < N; k++) {
+            double a = 1e-4 * exp(-0.028 * k), th = k * 74.0 * M_PI / 180.0;
+            double alt = per == 2 && k % 2 ? 0.8 : 0.0;
+            pts[k * D + 0] = 80.7 + alt;
+            pts[k * D + 1] = 6.5 + a * cos(th);
+            pts[k * D + 2] = -12.1;
+            pts[k * D + 3] = 3.4 + a * sin(th);
+        }
+        int p = gd_poincare_period(pts, N, D, 1e-6, 8);
+        tap_ok(p == per, "a period-%d orbit still converging at the start of the window (a decaying mode of 1e-4 "
+               "on components of size 6.5): period %d", per, p);
     }
-    return d;
+    for (int k = 0; k < N; k++) {
+        pts[k * D + 0] = 80.0;
+        pts[k * D + 1] = 0.5 + 3e-6 * sin(1.7 * k);
+        pts[k * D + 2] = -12.1;
+        pts[k * D + 3] = 3.4;
+    }
+    int p1 = gd_poincare_period(pts, N, D, 1e-6, 8), n1 = gd_poincare_distinct(pts, N, D, 1e-6);
+    tap_ok(p1 == 1 && n1 == 1, "a spread of 3e-6 on a component of size 0.5 beside one of 80: period %d, %d distinct", p1,
+           n1);
+    for (int k = 0; k < N; k++) {
+        double th = 2 * M_PI * 0.381966 * k;
+        pts[k * D + 0] = 80.0 + 5 * cos(th);
+        pts[k * D + 1] = 5 * sin(th);
+        pts[k * D + 2] = -12.1;
+        pts[k * D + 3] = 3.4;
+    }
+    int pq = gd_poincare_period(pts, N, D, 1e-6, 8);
+    tap_ok(pq == 0, "a quasi-periodic sequence: no period (%d)", pq);
+
+    const char *rt[][3] = {{"solver.rtol=1e-6", NULL, NULL}, {"solver.rtol=1e-10", NULL, NULL},
+                           {"solver.method=rk4", NULL, NULL}, {"solver.rtol=1e-6", "run.periodicity_tol=3e-7", NULL}};
+    const double want[] = {1e-4, 1e-8, 1e-6, 3e-7};
+    for (int i = 0; i < 4; i++) {
+        gd_case c;
+        gd_error e = {0};
+        gd_case_init(&c, &e);
+        for (int j = 0; rt[i][j]; j++)
+            gd_case_set(&c, rt[i][j], j + 1, &e);
+        gd_status st = gd_case_check(&c, &e);
+        tap_ok(st == GD_OK && fabs(c.periodicity_tol - want[i]) <= 1e-12 * want[i], "%s%s%s: run.periodicity_tol = %g "
+               "(%g)", rt[i][0], rt[i][1] ? ", " : "", rt[i][1] ? rt[i][1] : "", c.periodicity_tol, want[i]);
+        gd_case_free(&c);
+    }
 }
 
 static void run(double Omega, collect *col, gd_response_result *r)
@@ -109,6 +170,7 @@ static collect col;
 int main(void)
 {
     gd_response_result r;
+    synthetic();
 
     run(1.2, &col, &r);
     double d1 = 0;

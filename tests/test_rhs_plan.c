@@ -3,7 +3,8 @@
  * (gd_model_rhs, gd_model_tangent): the same function written twice in different orders of the
  * floating-point operations, so they must agree to rounding, in every combination of contact
  * modes, with the mesh-in impact pulse on and off, with damping that acts always or only in
- * contact, with harmonic, tabulated, rectangular and constant stiffness, for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
+ * contact, with harmonic, tabulated, rectangular and constant stiffness, with a tabulated error
+ * (excitation.ste = ltca), for every model size (bta 10, torsional-lr 2, torsional 1 degrees of freedom: the
  * sizes compiled with a constant) and for a hand-built five-degree-of-freedom model (the
  * general size). A wrong sign or a missing term (a bearing contact's offset, the mesh damping of
  * an open mesh, the pulse, the mass scaling) shows as a difference of the order of the term,
@@ -36,8 +37,8 @@ static void compare(const char *name, const gd_model *m, gsl_rng *r, double *dr,
         for (int c = 0, k = code; c < nc; c++, k /= 3)
             md.mode[c] = k % 3 - 1;
         for (int rep = 0; rep < 4; rep++) {
-            for (int j = 0; j < m->nmesh; j++)
-                md.pulse_on[j] = (rep + j) % 2, md.rect_level[j] = rep / 2;
+            for (int j = 0; j < m->nmesh; j++) /* both pulses' bits in turn (one pulse: on, off) */
+                md.pulse_on[j] = (rep + j) % 4, md.rect_level[j] = rep / 2;
             double y[GD_MAX_STATE], v[GD_MAX_STATE], f0[GD_MAX_STATE], f1[GD_MAX_STATE], t0[GD_MAX_STATE],
                 t1[GD_MAX_STATE];
             for (int i = 0; i < m->n; i++)
@@ -106,7 +107,7 @@ static void hand_model(gd_model *m)
         x->cphi[h] = cos(x->phi[h]), x->sphi[h] = sin(x->phi[h]);
     x->phase = 0.7, x->cph = cos(0.7), x->sph = sin(0.7);
     x->e_m = 0.1, x->e_r = 0.4, x->e_phi = 0.2, x->ce = cos(0.2), x->se = sin(0.2);
-    x->imp_force = 0.9, x->imp_phase = 0.5, x->imp_width = 0.4;
+    x->nimp = 1, x->imp_force[0] = 0.9, x->imp_phase[0] = 0.5, x->imp_width[0] = 0.4;
     m->mesh_clear[0] = 0;
     m->clear[0] = (gd_clearance){.kind = GD_CLR_MESH, .mesh = 0, .nw = 3, .widx = {0, 1, 3},
                                  .wval = {0.8, -0.8, 0.6}, .h = 0.5, .k = 3.0, .c = 0.05, .damp_contact_only = 0};
@@ -174,8 +175,12 @@ int main(void)
     pu_case(&c, bta);
     pu_build(&c, &m);
     for (int j = 0; j < m.nmesh; j++) /* an impact pulse on every mesh (the case's needs LTCA) */
-        m.mesh[j].imp_force = 0.3 + 0.1 * j, m.mesh[j].imp_phase = 0.2, m.mesh[j].imp_width = 1.0;
+        m.mesh[j].nimp = 1, m.mesh[j].imp_force[0] = 0.3 + 0.1 * j, m.mesh[j].imp_phase[0] = 0.2,
+        m.mesh[j].imp_width[0] = 1.0;
     check_model("bta, harmonic stiffness, damping always", &m, r);
+    for (int j = 0; j < m.nmesh; j++) /* the pulses acting only in drive-side contact */
+        m.mesh[j].imp_contact_only = 1;
+    check_model("bta, the impact pulses gated by drive-side contact", &m, r);
     /* damped bearing clearances, some acting only in contact, and contact-only mesh damping */
     for (int k = 0; k < m.nclear; k++)
         if (m.clear[k].kind == GD_CLR_BEARING)
@@ -195,6 +200,20 @@ int main(void)
         }
     }
     check_model("bta, tabulated stiffness of 24 harmonics", &m, r);
+    /* and a tabulated error (excitation.ste = ltca) of 16 harmonics on each half, the right half
+     * shifted in phase */
+    {
+        gd_error e = {0};
+        double samp[32];
+        m.mesh[1].phase = 0.7, m.mesh[1].cph = cos(0.7), m.mesh[1].sph = sin(0.7);
+        for (int j = 0; j < m.nmesh; j++) {
+            for (int i = 0; i < 32; i++)
+                samp[i] = 1e-6 * (0.4 * sin(2 * M_PI * i / 32.0 + j) + 0.1 * rnd(r, 1.0));
+            if (gd_model_set_error_table(&m, j, samp, 32, &e) != GD_OK)
+                tap_ok(0, "gd_model_set_error_table: %s", e.msg);
+        }
+        check_model("bta, tabulated stiffness and tabulated error, phase-shifted right half", &m, r);
+    }
 
     const char *cst[] = {"scene.model=bta", "excitation.stiffness=constant", NULL};
     gd_case_free(&c);
@@ -220,6 +239,13 @@ int main(void)
     pu_case(&c, tor);
     pu_build(&c, &m);
     check_model("torsional", &m, r);
+    /* the torsional model of a herringbone: both halves' pulses on its one mesh, gated and not */
+    m.mesh[0].nimp = 2;
+    m.mesh[0].imp_force[0] = 0.4, m.mesh[0].imp_phase[0] = 1.0, m.mesh[0].imp_width[0] = 0.8;
+    m.mesh[0].imp_force[1] = 0.3, m.mesh[0].imp_phase[1] = 1.2, m.mesh[0].imp_width[1] = 0.7;
+    check_model("torsional, two pulses", &m, r);
+    m.mesh[0].imp_contact_only = 1;
+    check_model("torsional, two pulses gated by drive-side contact", &m, r);
 
     gd_case_free(&c);
     hand_model(&m);

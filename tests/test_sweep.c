@@ -224,6 +224,45 @@ int main(void)
         tap_ok(pts[0].value[0] < pts[1].value[0] && pts[1].value[0] < pts[2].value[0] &&
                    pts[3].value[0] > pts[4].value[0] && pts[4].value[0] > pts[5].value[0],
                "plan: up walks increasing values even when from > to, down decreasing");
+        /* hysteresis needs two different motions: the up and down points of the middle value with
+         * equal RMS accelerations, one classed period-1, the other not-periodic while still converging
+         * to the same point, are one motion; with the down point's samples elsewhere, or its RMS
+         * acceleration 10 % higher, they are two */
+        for (int variant = 0; variant < 4; variant++) {
+            for (int k = 0; k < 6; k++) {
+                gd_sweep_point *q = &pts[k];
+                q->status = GD_POINT_DONE;
+                q->rms_accel_mps2[2] = 2094.41964;
+                snprintf(q->motion, sizeof q->motion, "period-1");
+                free(q->poincare);
+                q->npoincare = 41;
+                q->poincare = malloc(sizeof(double) * (size_t)(q->npoincare * p.nresp));
+                for (long j = 0; j < q->npoincare * p.nresp; j++)
+                    q->poincare[j] = 53.07373812;
+            }
+            gd_sweep_point *down = &pts[4]; /* the down chain's middle point */
+            tap_ok(down->value[0] == pts[1].value[0], "the down chain's second point is the middle value");
+            if (variant >= 1) { /* still converging: 2e-6 at the start of the window, 4e-8 at its middle */
+                snprintf(down->motion, sizeof down->motion, "not-periodic");
+                for (long j = 0; j < down->npoincare; j++)
+                    for (int r = 0; r < p.nresp; r++)
+                        down->poincare[j * p.nresp + r] += 2e-6 * exp(-0.2 * (double)j) * cos(1.3 * (double)j);
+            }
+            if (variant == 2)
+                for (long j = 0; j < down->npoincare * p.nresp; j++)
+                    down->poincare[j] += 0.05; /* another orbit with the same RMS */
+            if (variant == 3)
+                down->rms_accel_mps2[2] *= 1.1;
+            gd_sweep_interval *iv;
+            int niv;
+            PU_CHECK(gd_sweep_hysteresis(&p, pts, &iv, &niv, &e), &e);
+            static const char *what[] = {"one motion, one class", "one motion classed twice (one converging)",
+                                         "two orbits, two classes, equal RMS", "RMS 10 % apart"};
+            int want = variant >= 2;
+            tap_ok(niv == want && (!want || (iv[0].from == 1 && iv[0].to == 1)), "hysteresis, %s: %d interval%s",
+                   what[variant], niv, niv == 1 ? "" : "s");
+            free(iv);
+        }
         gd_sweep_points_free(&p, pts);
         gd_sweep_plan_free(&p);
         gd_case_free(&c);

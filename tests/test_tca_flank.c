@@ -14,7 +14,11 @@
  * 4. Table 2 (both reliefs): the deviation is their sum within the same second-order bound.
  * 5. Normals are unit, orthogonal to both tangents and point out of the tooth; the analytic first
  *    and second derivatives match central differences; the unmodified helicoid has principal
- *    curvatures 0 (along its generator) and cos(beta_b)/rho. */
+ *    curvatures 0 (along its generator) and cos(beta_b)/rho.
+ * 6. Helix slope y9 only: the normal deviation is y9 z / b toward the y6 end, at every point of the
+ *    profile, exactly (the flank turned about the axis).
+ * 7. Asymmetric lead relief: the unmodified band moved by y8; the relief at both face ends is y5 /
+ *    y6 over zones of different lengths, a quarter of it in the middle of each zone. */
 #include "geardyn/geardyn.h"
 #include "pair_util.h"
 #include "tap.h"
@@ -237,6 +241,63 @@ int main(void)
             TAP_CLOSE(dlo, amt_lo, t_lo, name);
             gd_flank_eval_at(&f1, uref, 0.5 * y7 - 1e-6, 0, &e);
             TAP_CLOSE(depth(e.r, R.rb1, R.eta1, k, cbb), 0, 1e-12, "no lead relief inside the unmodified length y7");
+        }
+        gd_case_free(&c);
+    }
+
+    /* 6. helix slope y9 only: the flank turned about the axis, a normal deviation y9 z / b toward the
+     * y6 end (the outer end: -z of the left half, +z of the right half; +: material removed), the
+     * same at every point of the profile (exact: a turned involute helicoid is parallel to itself);
+     * and with a single pair the y6 end is +z */
+    for (int single = 0; single < 2; single++) {
+        const char *s6[] = {"modification.helix_slope_um=8", "gear.arrangement=helical"};
+        gd_case c = make_case(s6, single ? 2 : 1);
+        for (int half = 0; half < (single ? 1 : 2); half++) {
+            gd_flank f1, f2;
+            flanks(&c, half, &f1, &f2);
+            double k = (half == 0 ? 1 : -1) * kref, toward6 = half == 0 && !single ? -1 : 1, b = 40e-3;
+            double worst = 0;
+            for (int i = 0; i <= 20; i++)
+                for (int j = 0; j <= 20; j++) {
+                    double u = f1.u_min + (f1.u_max - f1.u_min) * i / 20, z = f1.z_min + (f1.z_max - f1.z_min) * j / 20;
+                    gd_flank_eval e;
+                    gd_flank_eval_at(&f1, u, z, 0, &e);
+                    worst = fmax(worst, fabs(depth(e.r, R.rb1, R.eta1, k, cbb) - 8e-6 * toward6 * z / b));
+                }
+            char name[160];
+            snprintf(name, sizeof name, "helix slope 8 um, %s: largest |normal deviation - y9 z / b| toward the y6 end "
+                     "(m)", single ? "single helical pair" : half ? "right half" : "left half");
+            TAP_CLOSE(worst, 0, 1e-12, name);
+        }
+        gd_case_free(&c);
+    }
+
+    /* 7. asymmetric lead relief: the unmodified band of y7 = 16 mm moved by y8 = 6 mm toward the y6
+     * end; no relief on the band, the relief y5 / y6 at the face ends (zones of 18 and 6 mm on the
+     * left half, whose y6 end is -z), a quarter of it in the middle of each zone */
+    {
+        const char *s7[] = {"modification.lead_relief_inner_um=20", "modification.lead_relief_outer_um=12",
+                            "modification.lead_unmodified_length_mm=16", "modification.lead_unmodified_centre_mm=6"};
+        gd_case c = make_case(s7, 4);
+        gd_flank f1, f2;
+        flanks(&c, 0, &f1, &f2);
+        double uref = tan(R.at), b = 40e-3;
+        double lo = -6e-3 - 8e-3, hi = -6e-3 + 8e-3; /* the band on the left half */
+        TAP_CLOSE(f1.z_lo, lo, 1e-15, "y8 = 6 mm toward the outer (y6) end: the band starts at z = -14 mm (left half)");
+        TAP_CLOSE(f1.z_hi, hi, 1e-15, "and ends at z = 2 mm");
+        double at[5][2] = {{-0.5 * b, 12e-6}, {0.5 * (-0.5 * b + lo), 3e-6}, {-6e-3, 0}, {0.5 * (hi + 0.5 * b), 5e-6},
+                           {0.5 * b, 20e-6}};
+        for (int q = 0; q < 5; q++) {
+            gd_flank_eval e;
+            gd_flank_eval_at(&f1, uref, at[q][0], 0, &e);
+            double d = depth(e.r, R.rb1, R.eta1, kref, cbb);
+            /* the second-order term of the feed's tangential part, as in 3 */
+            double l = at[q][1] / (cbb * sin(R.eta1 + uref));
+            double tol = 1.01 * pow(l * cos(R.eta1 + uref), 2) / (2 * R.rb1 * uref) * cbb + 1e-13;
+            char name[160];
+            snprintf(name, sizeof name, "asymmetric lead relief at z = %.1f mm, reference circle: %.3g um (m)",
+                     at[q][0] * 1e3, at[q][1] * 1e6);
+            TAP_CLOSE(d, at[q][1], tol, name);
         }
         gd_case_free(&c);
     }

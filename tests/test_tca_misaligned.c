@@ -24,7 +24,11 @@
  *    most 1.1 mm into the 2.5 mm relief zones. The paper's Fig. 11 shows a parabolic GTE instead;
  *    docs/tca.md keeps its claim beside this finding.
  * 3. The same parabola fits on flanks crowned over the whole profile and face (residual below
- *    2 %), so the parabola test of 2 can tell the two shapes apart. */
+ *    2 %), so the parabola test of 2 can tell the two shapes apart.
+ * 4. The sign convention (docs/tca.md section 2) on a crowned single helical pair: the opposite
+ *    hand with the opposite tilt is the mirror image (TE equal at every position, contact at
+ *    z -> -z); the sign of the tilt changes the TE of a helical pair (not of a spur pair); a helix
+ *    slope modification of the right size cancels a tilt across the plane. */
 #include "geardyn/geardyn.h"
 #include "pair_util.h"
 #include "tap.h"
@@ -364,6 +368,109 @@ int main(void)
             tap_ok(r.edge_kinds[h] == 0, "crowned flanks, misaligned, %s half: no edge contact", h ? "right" : "left");
         gd_tca_result_free(&r);
         gd_case_free(&c);
+    }
+    /* 4. the sign convention on a single helical pair (the guide's: m_n 3.5 mm, 21/67 teeth, 20 deg,
+     * tip relief 8 um over 2.5 mm, crowned 6 um over the face; docs/tca.md section 2): the pair with
+     * the opposite hand and the opposite tilt is the mirror image z -> -z of the pair, so its TE is
+     * the same at every position and its contact mirrored; the TE of +1' and -1' across the plane
+     * differs (the tilt pushes the contact to the face end where the oblique contact lines carry
+     * the pinion's root, with the radial feed's crowning at 0.62 of its reference value, or to the
+     * end where they carry its tip, with 1.54 of it); a spur pair, whose contact lines are parallel
+     * to the axis, has no such asymmetry; and a helix slope modification of y9 = delta_c b
+     * cos(beta_b) cos(alpha_wt) (b the pinion face) cancels the unmodified pair's tilt */
+    {
+        static const char *const pair[] = {
+            "gear.arrangement=helical", "gear.normal_module_mm=3.5", "gear.teeth_pinion=21", "gear.teeth_gear=67",
+            "gear.helix_angle_deg=20", "gear.profile_shift_pinion=0.3", "gear.profile_shift_gear=-0.1",
+            "gear.face_width_pinion_mm=40", "gear.face_width_gear_mm=38", "modification.tip_relief_amount_um=8",
+            "modification.tip_relief_length_mm=2.5", "modification.lead_relief_inner_um=6",
+            "modification.lead_relief_outer_um=6", "solver.tca_positions_per_cycle=64", "solver.tca_cycles=1"};
+        const int np = (int)(sizeof pair / sizeof pair[0]);
+        const char *s[32];
+        double pp[2][2]; /* [hand][tilt sign] */
+        for (int hand = 0; hand < 2; hand++)
+            for (int sg = 0; sg < 2; sg++) {
+                char hs[64], di[64], dc[64];
+                snprintf(hs, sizeof hs, "gear.pinion_hand=%s", hand ? "left" : "right");
+                snprintf(di, sizeof di, "misalignment.axis_in_plane_arcmin=%g", sg ? -0.4 : 0.4);
+                snprintf(dc, sizeof dc, "misalignment.axis_cross_plane_arcmin=%g", sg ? -1.0 : 1.0);
+                for (int i = 0; i < np; i++)
+                    s[i] = pair[i];
+                s[np] = hs;
+                s[np + 1] = di;
+                s[np + 2] = dc;
+                gd_case c = make_case(s, np + 3);
+                gd_tca_result r = run(&c);
+                pp[hand][sg] = r.gte_pp_arcsec[0];
+                if (hand == 1) { /* against the right hand with the opposite tilt, position by position */
+                    s[np] = "gear.pinion_hand=right";
+                    snprintf(di, sizeof di, "misalignment.axis_in_plane_arcmin=%g", sg ? 0.4 : -0.4);
+                    snprintf(dc, sizeof dc, "misalignment.axis_cross_plane_arcmin=%g", sg ? 1.0 : -1.0);
+                    gd_case m = make_case(s, np + 3);
+                    gd_tca_result q = run(&m);
+                    double dte = 0, dz = 0;
+                    for (int k = 0; k < r.npos && k < q.npos; k++) {
+                        dte = fmax(dte, fabs(r.contact[0][k].te - q.contact[0][k].te));
+                        dz = fmax(dz, fabs(r.contact[0][k].z1 + q.contact[0][k].z1));
+                    }
+                    tap_ok(dte * 180 * 3600 / M_PI < 1e-8 && dz < 1e-6, "mirror image: left hand with (di, dc) = "
+                           "(%+.1f', %+.0f') is the right hand with (%+.1f', %+.0f'): TE equal to %.2g arcsec at every "
+                           "position, contact at z -> -z to %.2g m (a flat minimum along the line)", sg ? -0.4 : 0.4, sg ? -1.0 : 1.0,
+                           sg ? 0.4 : -0.4, sg ? 1.0 : -1.0, dte * 180 * 3600 / M_PI, dz);
+                    gd_tca_result_free(&q);
+                    gd_case_free(&m);
+                }
+                gd_tca_result_free(&r);
+                gd_case_free(&c);
+            }
+        tap_ok(pp[0][1] > 2 * pp[0][0] && pp[1][0] > 2 * pp[1][1],
+               "the sign of the tilt matters on a crowned helical pair: right hand %.3g arcsec at (+0.4', +1'), %.3g "
+               "at (-0.4', -1'); left hand %.3g and %.3g", pp[0][0], pp[0][1], pp[1][0], pp[1][1]);
+        /* a spur pair: the same TE for either sign */
+        const char *sp[] = {"gear.arrangement=spur", "gear.helix_angle_deg=0", "gear.normal_module_mm=3.5",
+                            "gear.teeth_pinion=21", "gear.teeth_gear=67", "gear.face_width_pinion_mm=40",
+                            "gear.face_width_gear_mm=38", "modification.lead_relief_inner_um=6",
+                            "modification.lead_relief_outer_um=6", "solver.tca_positions_per_cycle=64",
+                            "solver.tca_cycles=1", "misalignment.axis_cross_plane_arcmin=1"};
+        gd_case c1 = make_case(sp, 12);
+        sp[11] = "misalignment.axis_cross_plane_arcmin=-1";
+        gd_case c2 = make_case(sp, 12);
+        gd_tca_result r1 = run(&c1), r2 = run(&c2);
+        TAP_CLOSE(r2.gte_pp_arcsec[0], r1.gte_pp_arcsec[0], 1e-9 * r1.gte_pp_arcsec[0] + 1e-12,
+                  "spur pair, crowned: GTE peak-to-peak at -1' equals that at +1' (arcsec)");
+        gd_tca_result_free(&r1);
+        gd_tca_result_free(&r2);
+        gd_case_free(&c1);
+        gd_case_free(&c2);
+        /* the helix slope modification against the tilt across the plane, on the unmodified pair */
+        for (int sg = 0; sg < 2; sg++) {
+            const char *u[20];
+            int nu = 0;
+            for (int i = 0; i < 8; i++)
+                u[nu++] = pair[i];
+            u[nu++] = "solver.tca_positions_per_cycle=64";
+            u[nu++] = "solver.tca_cycles=1";
+            char dc[64], y9[64];
+            snprintf(dc, sizeof dc, "misalignment.axis_cross_plane_arcmin=%d", sg ? -1 : 1);
+            u[nu++] = dc;
+            gd_case c = make_case(u, nu);
+            gd_geometry g;
+            gd_error e = {0};
+            gd_geometry_compute(PAIR_OF(&c), &g, &e);
+            double slope = (sg ? -1 : 1) * M_PI / (180 * 60) * g.b[0] * cos(g.beta_b) * cos(g.alpha_wt) * 1e6;
+            gd_tca_result r = run(&c);
+            snprintf(y9, sizeof y9, "modification.helix_slope_um=%.6f", slope);
+            u[nu++] = y9;
+            gd_case m = make_case(u, nu);
+            gd_tca_result q = run(&m);
+            tap_ok(q.gte_pp_arcsec[0] < 0.005 * r.gte_pp_arcsec[0], "tilt %+d' across the plane, unmodified: GTE %.4g "
+                   "arcsec; with the helix slope y9 = delta_c b cos(beta_b) cos(alpha_wt) = %+.3f um: %.3g arcsec",
+                   sg ? -1 : 1, r.gte_pp_arcsec[0], slope, q.gte_pp_arcsec[0]);
+            gd_tca_result_free(&r);
+            gd_tca_result_free(&q);
+            gd_case_free(&c);
+            gd_case_free(&m);
+        }
     }
     return tap_done();
 }

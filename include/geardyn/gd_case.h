@@ -22,7 +22,8 @@ extern "C" {
 typedef enum gd_analysis {
     GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
     GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6,
-    GD_ANALYSIS_CONTINUATION = 7
+    GD_ANALYSIS_CONTINUATION = 7,
+    GD_ANALYSIS_BASINS = 8
 } gd_analysis;
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind {
@@ -32,10 +33,15 @@ typedef enum gd_stiffness_kind {
 typedef enum gd_method { GD_METHOD_ERK = 0, GD_METHOD_DIRK = 1, GD_METHOD_RK4 = 2 } gd_method;
 typedef enum gd_vector_kernels { GD_VECTOR_KERNELS_GEARDYN = 0, GD_VECTOR_KERNELS_SUNDIALS = 1 } gd_vector_kernels;
 typedef enum gd_damping_mode { GD_DAMP_ALWAYS = 0, GD_DAMP_CONTACT = 1 } gd_damping_mode;
+/* [excitation] impact_form: the mesh-in pulse while the drive flanks touch, with the impulse m_n v_s;
+ * or the paper's external force, acting whatever the contact, for the rise time capped at a quarter period */
+typedef enum gd_impact_form { GD_IMPACT_CONTACT = 0, GD_IMPACT_PAPER = 1 } gd_impact_form;
 typedef enum gd_initial { GD_INIT_STATIC = 0, GD_INIT_ZERO = 1 } gd_initial;
 /* [gear] arrangement: two helical halves of opposite hand, one helical pair, or a spur pair (beta = 0) */
 typedef enum gd_arrangement { GD_ARR_HERRINGBONE = 0, GD_ARR_HELICAL = 1, GD_ARR_SPUR = 2 } gd_arrangement;
 typedef enum gd_hand { GD_HAND_RIGHT = 0, GD_HAND_LEFT = 1 } gd_hand;
+/* [excitation] ste: the static transmission error e(t) as a sinusoid, or LTCA's own */
+typedef enum gd_ste_source { GD_STE_SINUSOID = 0, GD_STE_LTCA = 1 } gd_ste_source;
 /* [solver] tca_formulation: (b) surface separation, (a) surface tangency, or both compared */
 typedef enum gd_tca_formulation { GD_TCA_SEPARATION = 0, GD_TCA_TANGENCY = 1, GD_TCA_BOTH = 2 } gd_tca_formulation;
 /* [support] pinion_axial: LTCA with an axially floating pinion (equal axial forces on the halves) or a fixed one */
@@ -47,6 +53,8 @@ typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
     GD_CONT_RESP_POINCARE = 3
 } gd_cont_response;
+/* [basins] base: the components off the section at the static state or at a given state */
+typedef enum gd_basins_base { GD_BASINS_BASE_STATIC = 0, GD_BASINS_BASE_STATE = 1 } gd_basins_base;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
@@ -59,6 +67,7 @@ typedef struct gd_case {
     int bearing_clearance;   /* physics switches: 1 on, 0 off */
     int error_excitation;
     int axial_coupling;
+    int gravity;             /* the bodies' weights on their supports (bta) */
     char title[256];
     /* [gear] geometry (ISO 21771) and bodies; masses and inertias are per helical half,
      * each including half of the relief groove */
@@ -76,6 +85,7 @@ typedef struct gd_case {
      * lengths as transverse roll lengths, lead lengths along the axis */
     double root_relief_amount_um, root_relief_length_mm, tip_relief_amount_um, tip_relief_length_mm; /* y1..y4 */
     double lead_relief_inner_um, lead_relief_outer_um, lead_unmodified_length_mm;                 /* y5, y6, y7 */
+    double lead_unmodified_centre_mm, helix_slope_um;                                           /* y8, y9 */
     int modification_apply;  /* 0: the amounts above are kept in the case but the flank is unmodified */
     /* [misalignment] of the gear axis about the middle of the gear, and centre-distance error */
     double axis_in_plane_arcmin, axis_cross_plane_arcmin, centre_distance_error_mm;
@@ -90,19 +100,23 @@ typedef struct gd_case {
     double stiffness_phases_deg[GD_MAX_HARMONICS]; int n_stiffness_phases;
     double rectangular_variation;   /* (k_high - k_mean)/k_mean */
     double rectangular_high_fraction; /* fraction of the mesh period at the high level */
+    int ste_source;          /* gd_ste_source: the sinusoid or LTCA's transmission error */
     double ste_amplitude_um, ste_mean_um, ste_phase_deg;
     double base_pitch_deviation_um, profile_deviation_um;
     double half_phase_deg;   /* mesh phase of the right half relative to the left */
     int impact;              /* mesh-in impact from LTCA */
+    int impact_form;         /* gd_impact_form */
     double impact_exponent;
     /* [damping] */
     double mesh_damping_ratio, support_damping_ratio, shaft_damping_ratio;
     int mesh_damping_mode;   /* gd_damping_mode */
+    int bearing_damping_mode; /* gd_damping_mode of the radial bearings with a clearance */
     /* [support] (per half, per body) */
     double radial_stiffness_pinion_n_per_m, radial_stiffness_gear_n_per_m;
     double axial_stiffness_pinion_n_per_m, axial_stiffness_gear_n_per_m;
     double shaft_stiffness_pinion_n_per_m, shaft_stiffness_gear_n_per_m; /* groove shafts, axial */
     int pinion_axial;        /* gd_pinion_axial (LTCA) */
+    double gravity_angle_deg; /* direction of the weights from +y (the transverse line of action) */
     /* [solver] */
     int method;              /* gd_method */
     int order;
@@ -170,10 +184,12 @@ typedef struct gd_case {
     double opt_dimensions[GD_MAX_HARMONICS]; int n_opt_dimensions; /* test functions */
     int opt_iterations, opt_population, opt_seed, opt_runs, opt_budget_evals, opt_ecdf_targets;
     double opt_target, opt_target_loosest, opt_shift;
-    /* bounds of x = [y1, y2, y3, y4, y5, y7] (y6 = y5), Eq. 13 */
+    char opt_variables[128]; /* gear-lte: the design variables (symbols y1 .. y9), comma-separated */
+    /* bounds of the gear variables (Eq. 13 for y1..y7; y6 has y5's) */
     double opt_root_amount_min_um, opt_root_amount_max_um, opt_root_length_min_mm, opt_root_length_max_mm;
     double opt_tip_amount_min_um, opt_tip_amount_max_um, opt_tip_length_min_mm, opt_tip_length_max_mm;
     double opt_lead_amount_min_um, opt_lead_amount_max_um, opt_lead_length_min_mm, opt_lead_length_max_mm;
+    double opt_lead_centre_min_mm, opt_lead_centre_max_mm, opt_helix_slope_min_um, opt_helix_slope_max_um;
 
     /* [continuation] (analysis = continuation; gd_continuation.h, docs/continuation.md) */
     char cont_parameter[256]; /* "section.key" */
@@ -195,6 +211,27 @@ typedef struct gd_case {
     int cont_branch_switching;
     char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
     int cont_response;       /* gd_cont_response */
+
+    /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
+    char bas_x[32], bas_y[32];   /* the section's coordinates */
+    double bas_x_from, bas_x_to, bas_y_from, bas_y_to; /* its box, in the coordinates' units (NaN: derived) */
+    double bas_phase_deg;    /* mesh phase of the section */
+    int bas_base;            /* gd_basins_base */
+    char bas_state[1024];    /* base = state: the dimensionless state, comma-separated */
+    int bas_resolution, bas_resolution_y; /* cells of the box per coordinate (resolution_y 0: resolution) */
+    int bas_picture;         /* the grid of resolution x resolution_y initial states */
+    int bas_samples, bas_seed; /* the random sample of the fractions, its seed */
+    int bas_max_periods;     /* mesh periods of one trajectory at most */
+    double bas_margin;       /* the tessellation beyond the box, in box widths */
+    int bas_consecutive_recurrences, bas_consecutive_attractor_steps, bas_consecutive_basin_steps,
+        bas_consecutive_lost_steps;
+    int bas_lyapunov_periods;
+    double bas_newton_tol;
+    int bas_entropy_box_cells;
+    char bas_continuation[GD_PATH_MAX]; /* a finished continuation's directory ("": none) */
+    char bas_parameter[256]; /* the fractions over a numeric key, "section.key" ("": one value) */
+    double bas_from, bas_to; /* in the unit of that key */
+    int bas_points;
 
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */
@@ -244,6 +281,10 @@ GD_API gd_status gd_case_set_number(gd_case *c, const char *name, double value, 
 /* The value of schema entry i formatted as the case file would write it. */
 GD_API void gd_case_format_value(const gd_case *c, size_t i, char *buf, size_t len);
 GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
+/* Whether schema entry i is unused by the case as resolved: NULL when it is used, else why not
+ * ("ignored: excitation.stiffness = ltca"); *absent = 1 when the key does not exist for this pair
+ * at all (a single pair's groove width and groove shafts), so that a listing may leave it out. */
+GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent);
 GD_API const char *gd_source_name(gd_source s);
 
 #ifdef __cplusplus

@@ -26,11 +26,12 @@ GD_API void gd_ltca_excitation_release(const gd_ltca_excitation *x);
 GD_API long gd_ltca_cache_computations(void);
 
 /* The mesh-in impact force of one half by energy balance (paper Eq. 15-16): the relative normal
- * velocity v_s, the equivalent mass m (kg) and the contact law F = c delta^n through the LTCA
- * secant point (delta_m, k_s delta_m): 1/2 m v^2 = c delta^(n+1)/(n+1), F_s = c delta_s^n; n = 1
- * gives F_s = v_s sqrt(m k_s). Also the duration of the pulse: the time to the largest
- * compression of the linearised contact, (pi/2) sqrt(m / k_s) (gd_model_apply_ltca caps it at a
- * quarter of the mesh period). */
+ * velocity v_s, the equivalent mass m (kg; the normal equivalent mass m_n of a half, as v_s is
+ * along the normal) and the contact law F = c delta^n through the LTCA secant point (delta_m,
+ * k_s delta_m): 1/2 m v^2 = c delta^(n+1)/(n+1), F_s = c delta_s^n; n = 1 gives
+ * F_s = v_s sqrt(m k_s). Also the rise time: the time to the largest compression of the
+ * linearised contact, (pi/2) sqrt(m / k_s) (the paper's form of the pulse lasts it, at most a
+ * quarter of the mesh period; the contact form lasts m v_s / F_s: docs/model.md section 8.4). */
 GD_API void gd_impact_force(double v_s, double m, double k_s, double delta_m, double n, double *force_n,
                             double *duration_s);
 

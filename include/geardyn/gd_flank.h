@@ -10,7 +10,8 @@
  * the screw motion of the helix with the grinding wheel's radial feed l(z) for the lead relief:
  *   r(u, z) = Rz(k z) [ P(u) - H_t(u) e_t(psi) - l(z) e_x ] + z e_z,  psi = -eta_b - u,
  * with P(u) = r_b (e_r(psi) + u e_t(psi)) the involute and k the twist rate of the helix
- * (k = hand tan(beta) / r, hand +1 right, -1 left; k = 0 for spur). The gear flank is the
+ * (k = hand tan(beta) / r, hand +1 right, -1 left; k = 0 for spur; the pinion's helix slope
+ * modification adds dk to it, docs/geometry.md). The gear flank is the
  * unmodified involute helicoid of the same form. Everything is closed form, with first and
  * second derivatives, so that Newton solves have analytic Jacobians. Lengths in metres. */
 #ifndef GD_FLANK_H
@@ -40,7 +41,10 @@ typedef struct gd_flank {
     /* lead relief: radial feed of the wheel l(z) = a_lo (z_lo - z)^2 below z_lo,
      * a_hi (z - z_hi)^2 above z_hi, zero between (paper Eq. 3 with h = p phi = z) */
     double z_lo, z_hi, a_lo, a_hi;
-    int modified;           /* any nonzero relief */
+    /* helix slope modification (y9): the part dk of the twist rate k that turns the flank by dk z
+     * about the axis, a normal deviation -r_b cos(beta_b) dk z uniform over the profile (0: none) */
+    double dk;
+    int modified;           /* any nonzero relief (profile or lead; the helix slope is in k) */
 } gd_flank;
 
 /* Point and derivatives of a flank at (u, z), body frame of the half. */

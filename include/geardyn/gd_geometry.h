@@ -48,6 +48,25 @@ GD_API void gd_body_of_mesh(const gd_pair *pair, const gd_geometry *g, int which
  * (method B: c' and c_gamma_alpha times the contact face width, transverse), divided by
  * cos^2(beta_b) to refer it to the normal direction (docs/model.md). */
 GD_API double gd_iso6336_mesh_stiffness(const gd_pair *pair, const gd_geometry *g);
+/* Every factor of gd_iso6336_mesh_stiffness (docs/model.md section 5.1), so that a reader can
+ * redo the calculation: k = c_gamma_alpha b / cos^2(beta_b), c_gamma_alpha = c' (0.75 eps_alpha
+ * + 0.25) (times 0.9 below eps_alpha 1.2), c' = c'_th C_M C_R C_B cos(beta), c'_th = 1 / q'
+ * from the virtual numbers of teeth z_n = z / (cos^2(beta_b) cos(beta)). */
+typedef struct gd_iso6336_terms {
+    double zn[2];            /* virtual numbers of teeth, pinion and gear */
+    double q_prime;          /* q' (mm um / N) */
+    double c_th;             /* c'_th = 1 / q' (N / (mm um)) */
+    double c_m, c_r, c_b;    /* C_M (solid blanks 0.8), C_R (1), basic rack factor C_B */
+    double cos_beta;         /* cos of the reference helix angle */
+    double c_prime;          /* single stiffness c' (N / (mm um)) */
+    double eps_alpha;        /* transverse contact ratio */
+    double eps_factor;       /* 0.75 eps_alpha + 0.25, times 0.9 below eps_alpha 1.2 */
+    double c_gamma_alpha;    /* mesh stiffness per unit face width, transverse (N / (mm um)) */
+    double face_width_mm;    /* b: the common face width of the mesh (the narrower body's) */
+    double cos2_beta_b;      /* cos^2 of the base helix angle: transverse to normal */
+    double k_n_per_m;        /* the result, along the normal (N/m) */
+} gd_iso6336_terms;
+GD_API void gd_iso6336_mesh_stiffness_terms(const gd_pair *pair, const gd_geometry *g, gd_iso6336_terms *t);
 /* Axial stiffness of a groove shaft: E pi rf^2 / groove width (N/m). */
 GD_API double gd_groove_shaft_stiffness(const gd_pair *pair, const gd_geometry *g, int which);
 

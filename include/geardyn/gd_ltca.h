@@ -181,6 +181,8 @@ typedef struct gd_ltca_excitation {
     double *k[2];            /* npos per half (k[1] NULL for one half) */
     double k_mean[2];
     double *lte_arcsec;      /* npos */
+    double *lte_half_arcsec[2]; /* npos per half: each half's loaded approach as a gear angle (lag, negative;
+                                   [1] NULL for one half) */
     double lte_pp_arcsec;
     double load_share[2];
     gd_ltca_impact impact[2];

@@ -25,6 +25,7 @@ extern "C" {
 #define GD_MAX_MESH 2
 #define GD_MAX_NNZ 64
 #define GD_MESH_HARMONICS 64 /* Fourier terms of a mesh stiffness (a tabulated LTCA stiffness of 128 samples) */
+#define GD_MAX_PULSE 2       /* mesh-in impact pulses of one mesh */
 
 typedef enum gd_clearance_kind { GD_CLR_MESH = 0, GD_CLR_BEARING = 1 } gd_clearance_kind;
 
@@ -42,8 +43,9 @@ typedef struct gd_clearance {
 } gd_clearance;
 
 /* Mesh excitation of one half: stiffness shape s(phase) = mean + sum a_h cos(h phase + phi_h)
- * (harmonic and tabulated stiffness) or a rectangular wave, the error e, and the mesh-in impact
- * pulse. */
+ * (harmonic and tabulated stiffness) or a rectangular wave, the error e(phase) = e_m + e_r
+ * sin(phase + e_phi) + sum ea_h cos(h phase + ephi_h) (the sinusoid, or a tabulated error from
+ * LTCA), and the mesh-in impact pulse. */
 typedef struct gd_mesh_excitation {
     int kind;                /* gd_stiffness_kind */
     int nh;
@@ -53,12 +55,19 @@ typedef struct gd_mesh_excitation {
     double phase;            /* half phase offset (rad of the mesh cycle) */
     double cph, sph;         /* its cosine and sine (precomputed: one sincos per time serves both meshes) */
     double e_m, e_r, e_phi;  /* dimensionless error mean, amplitude, phase */
+    int ne;                  /* harmonics of a tabulated error (0: none) */
+    double ea[GD_MESH_HARMONICS], ephi[GD_MESH_HARMONICS], cephi[GD_MESH_HARMONICS], sephi[GD_MESH_HARMONICS];
     /* precomputed: cos and sin of phi[h] and of e_phi (one sincos per evaluation) */
     double cphi[GD_MESH_HARMONICS], sphi[GD_MESH_HARMONICS], ce, se;
-    /* mesh-in impact (paper section 5.2): a force pulse of height imp_force (dimensionless, along
-     * the mesh normal like the mesh force) for the phases [imp_phase, imp_phase + imp_width) of
-     * every mesh cycle; imp_width = 0: none */
-    double imp_force, imp_phase, imp_width;
+    /* mesh-in impacts (paper section 5.2): nimp force pulses, pulse k of height imp_force[k]
+     * (dimensionless, along the mesh normal like the mesh force) for the phases [imp_phase[k],
+     * imp_phase[k] + imp_width[k]) of every mesh cycle (two on the one mesh of a herringbone's
+     * torsional model: each half's at its own phase); imp_contact_only: they act only while the
+     * mesh's flanks touch on the drive side (contact mode +1), else whatever the contact */
+    int nimp;
+    double imp_force[GD_MAX_PULSE], imp_phase[GD_MAX_PULSE], imp_width[GD_MAX_PULSE];
+    int imp_half[GD_MAX_PULSE]; /* the helical half each pulse comes from (0 left, 1 right; a single pair: 0) */
+    int imp_contact_only;
 } gd_mesh_excitation;
 
 typedef struct gd_nz { int i, j; double v; } gd_nz;
@@ -110,7 +119,7 @@ GD_API void gd_model_custom(gd_model *m, const gd_custom_system *sys, double per
 typedef struct gd_modes {
     int mode[GD_MAX_CLEAR];  /* -1, 0, +1 */
     int rect_level[GD_MAX_MESH]; /* 1 high, 0 low (rectangular stiffness) */
-    int pulse_on[GD_MAX_MESH];   /* 1 while the mesh-in impact pulse of mesh j acts */
+    int pulse_on[GD_MAX_MESH];   /* bit k set while the mesh-in impact pulse k of mesh j is in its phases */
     int from_state;          /* 1: modes follow the state at every call (root finding off) */
 } gd_modes;
 
@@ -158,17 +167,28 @@ GD_API gd_status gd_model_consistent_modes(const gd_model *m, double t, const do
 GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_modes *md);
 /* Level (1 high / 0 low) of the rectangular stiffness of mesh j just after time t. */
 GD_API int gd_model_rect_level_after(const gd_model *m, int j, double t, const gd_modes *md);
-/* The impact pulse force of mesh j at time t (dimensionless; 0 when off). */
-GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md);
-/* Whether the impact pulse of mesh j acts just after time t. */
+/* The impact pulse force of mesh j at time t (dimensionless; 0 when off) with the mesh's clearance in
+ * contact mode `mode` (a pulse that acts only in drive-side contact is 0 in any other mode). */
+GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md, int mode);
+/* The impact pulses of mesh j in their phases just after time t (bit k: pulse k). */
 GD_API int gd_model_pulse_after(const gd_model *m, int j, double t);
 /* A tabulated mesh stiffness of mesh j: n samples k_i (N/m) equally spaced over one mesh cycle
  * from mesh phase 0, turned into its trigonometric interpolant (GSL real FFT; n even, at most
  * 2 GD_MESH_HARMONICS): a smooth periodic function through every sample. */
 GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *k_n_per_m, int n, gd_error *err);
-/* The mesh-in impact of mesh j: a pulse of force_n (N, along the mesh normal) starting at mesh
- * phase phase_rad of every cycle and lasting duration_s. */
+/* A tabulated static transmission error of mesh j: n samples e_i (m, along the tooth normal, the
+ * mesh coordinate's sense) equally spaced over one mesh cycle from mesh phase 0, turned into their
+ * trigonometric interpolant without its mean (GSL real FFT; n even, at most 2 GD_MESH_HARMONICS),
+ * added to the error's mean and sinusoid. */
+GD_API gd_status gd_model_set_error_table(gd_model *m, int j, const double *e_m, int n, gd_error *err);
+/* The mesh-in impact of mesh j: a pulse of force_n (N, along the mesh normal, the force the model's
+ * mesh receives) starting at mesh phase phase_rad of every cycle and lasting duration_s (at most a
+ * mesh period: a whole period is a force that never stops); it replaces the mesh's pulses. */
 GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
+                                     gd_error *err);
+/* One more pulse on mesh j (at most GD_MAX_PULSE): the torsional model of a herringbone carries each
+ * half's on its one mesh. */
+GD_API gd_status gd_model_add_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
                                      gd_error *err);
 
 #ifdef __cplusplus

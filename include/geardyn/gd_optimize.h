@@ -176,34 +176,56 @@ GD_API void gd_opt_testfn_free(gd_opt_testfn *t);
 
 /* The gear problem of the paper's section 4 (Eq. 13): minimise the peak-to-peak loaded
  * transmission error (LTCA, Eq. 12, arcsec over one mesh cycle at set->positions_per_cycle) of
- * the pair, under set->torque_nm, with its misalignment, over x = [y1, y2, y3, y4, y5, y7] (y6 =
- * y5, symmetric lead relief) in the [modification] units (um and mm), within the bounds [lower,
- * upper] (gd_opt_gear_bounds: the case's [optimize] bounds) and the
- * linear constraint y2 + y4 <= the active profile of the pinion (roll length from the start of
- * active profile to the tip). Every point of the box, once repaired, passes
- * gd_modification_check (checked on the 64 corners at creation; the checks are monotone in
- * each variable). One LTCA workspace per evaluation: the workspace holds the modified flank. */
-#define GD_OPT_GEAR_DIM 6
+ * the pair, under set->torque_nm, with its misalignment, over some of the nine modification
+ * variables y1 .. y9 in the [modification] units (um and mm): the paper's x = [y1, y2, y3, y4, y5,
+ * y7] (y6 = y5, symmetric lead relief; gd_opt_gear_vars_paper), or any list of y1 .. y9 (y6 the
+ * lead relief at the other end, y8 the offset of the unmodified lead band, y9 the helix slope:
+ * asymmetric lead relief and the helix-slope correction of a misalignment); a variable not listed
+ * keeps the pair's own value. Within the bounds [lower, upper] (gd_opt_gear_bounds: the case's
+ * [optimize] bounds) and the linear constraints y2 + y4 <= the active profile of the pinion (roll
+ * length from the start of active profile to the tip) and, with y8, |y8| + y7/2 <= half the face.
+ * Every point of the box, once repaired, passes gd_modification_check (checked on the 2^n
+ * corners at creation; the checks are monotone in each variable). One LTCA workspace per
+ * evaluation: the workspace holds the modified flank. */
+#define GD_OPT_GEAR_DIM 6       /* the paper's variables y1..y5, y7 */
+#define GD_OPT_GEAR_NVARS 9     /* y1 .. y9 */
 typedef struct gd_opt_gear gd_opt_gear;
 
-GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const double lower[6],
-                                    const double upper[6], gd_opt_gear **out, gd_error *err);
+/* The design variables: variable k is y(var[k] + 1) ([modification] key gd_opt_gear_variable(var[k])). */
+typedef struct gd_opt_gear_vars {
+    int n;
+    int var[GD_OPT_GEAR_NVARS];
+} gd_opt_gear_vars;
+
+/* The paper's six: y1, y2, y3, y4, y5, y7. */
+GD_API void gd_opt_gear_vars_paper(gd_opt_gear_vars *v);
+/* A comma-separated list of symbols y1 .. y9 (optimize.variables), each at most once. */
+GD_API gd_status gd_opt_gear_vars_parse(const char *list, gd_opt_gear_vars *v, gd_error *err);
+GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const gd_opt_gear_vars *v,
+                                    const double *lower, const double *upper, gd_opt_gear **out, gd_error *err);
 GD_API void gd_opt_gear_problem(gd_opt_gear *g, gd_opt_problem *p);
 GD_API void gd_opt_gear_free(gd_opt_gear *g);
+GD_API const gd_opt_gear_vars *gd_opt_gear_vars_of(const gd_opt_gear *g);
 /* Roll length of the pinion's active profile (mm): the right side of y2 + y4 <= it. */
 GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g);
-/* Variable i (0..5): its [modification] key, unit and the paper's symbol (y1 .. y5, y7). */
-GD_API const char *gd_opt_gear_variable(int i, const char **unit, const char **symbol);
-/* x -> the pair's modification (y6 = y5), and back. */
-GD_API void gd_opt_gear_apply(gd_pair *pair, const double *x);
-GD_API void gd_opt_gear_from_pair(const gd_pair *pair, double *x);
+/* Variable id (0..8, y1 .. y9): its [modification] key, unit and symbol. */
+GD_API const char *gd_opt_gear_variable(int id, const char **unit, const char **symbol);
+/* x (the variables of v) -> the pair's modification (y6 = y5 when y5 is listed and y6 is not), and back. */
+GD_API void gd_opt_gear_apply(const gd_opt_gear_vars *v, gd_pair *pair, const double *x);
+GD_API void gd_opt_gear_from_pair(const gd_opt_gear_vars *v, const gd_pair *pair, double *x);
 /* The objective for the pair's own modification: LTE peak-to-peak (arcsec). */
 GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings *set, double *lte_pp_arcsec,
                                     gd_error *err);
-/* The paper's optimum (Table 2) in the same variables: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 35 mm. */
-GD_API void gd_opt_gear_table2(double *x);
-/* The case's [optimize] bounds of the six gear variables, in the order of gd_opt_gear_variable. */
-GD_API void gd_opt_gear_bounds(const gd_case *c, double lower[6], double upper[6]);
+/* The paper's optimum (Table 2) as the pair's modification: 25 um, 1.5 mm, 35 um, 2.5 mm, 25 um, 25 um,
+ * 35 mm (y8 = y9 = 0). */
+GD_API void gd_opt_gear_table2(gd_pair *pair);
+/* Whether the pair is the paper's (Table 1): herringbone, normal module 5 mm, 30 / 72 teeth, helix
+ * 33.27 deg, normal pressure angle 20 deg, no profile shift, addendum 1 and dedendum 1.25, faces 40
+ * and 44 mm per half. Only then does the optimisation show the paper's Table 2 and its LTE beside
+ * the case's own modification. */
+GD_API int gd_opt_gear_is_paper_pair(const gd_pair *pair);
+/* The case's [optimize] bounds of the variables v, in their order. */
+GD_API void gd_opt_gear_bounds(const gd_case *c, const gd_opt_gear_vars *v, double *lower, double *upper);
 
 
 /* ---- comparison -------------------------------------------------------------------------------- */
@@ -285,9 +307,18 @@ typedef struct gd_opt_optimize_summary {
     int best_run;
     const double *run_f;          /* runs: final value of each run */
     const double *true_optimum;   /* test functions: the minimiser (NULL otherwise) */
-    /* gear-lte: LTE amplitudes (arcsec) of the unmodified pair, the paper's Table 2, the optimum */
-    double lte_unmodified, lte_table2, lte_optimum;
+    /* gear-lte: LTE amplitudes (arcsec) of the unmodified pair, the case's own modification, the
+     * optimum, and (the paper's pair only, else NaN) the paper's Table 2 */
+    double lte_unmodified, lte_case, lte_optimum, lte_table2;
+    const gd_opt_gear_vars *vars; /* gear-lte: the variables (names[i] is the key of vars->var[i]) */
+    const double *case_value;     /* gear-lte: the case's own value of each variable */
+    const double *table2;         /* gear-lte, the paper's pair: Table 2's value of each variable (else NULL) */
+    const char *const *no_effect; /* gear-lte: per variable NULL, or why it has no effect at the optimum */
     double active_profile_mm;
+    /* the best run's progress: the relative fall of its best value over the last tenth of its
+     * evaluations; converged = that fall is at most 1e-3 */
+    double last_tenth_improvement;
+    int converged;
     double wall_s;
 } gd_opt_optimize_summary;
 
@@ -302,7 +333,8 @@ typedef struct gd_opt_compare_problem {
 /* ---- the results of the optimize and compare-optimizers rows (gd_analysis.h) ---- */
 
 /* optimize: the runs of the case's [optimize] algorithm on its first objective, the best kept;
- * for the gear, the LTE of the unmodified pair, the paper's Table 2 and the optimum. */
+ * for the gear, the LTE of the unmodified pair, the case's own modification, the optimum and, for
+ * the paper's pair, the paper's Table 2. */
 #define GD_OPTIMIZE_MAXDIM 1000 /* the schema's largest dimension */
 typedef struct gd_optimize_outcome {
     int objective, dim, gear, runs;
@@ -312,9 +344,17 @@ typedef struct gd_optimize_outcome {
     char names[GD_OPTIMIZE_MAXDIM][48];
     const char *name_ptr[GD_OPTIMIZE_MAXDIM];
     double lower[GD_OPTIMIZE_MAXDIM], upper[GD_OPTIMIZE_MAXDIM];
-    const double *reference; /* Table 2 (gear) or the true minimiser */
-    double table2[GD_OPT_GEAR_DIM];
-    gd_ltca_result lte[3];   /* gear: unmodified, Table 2, optimum */
+    const double *reference; /* the case's own value of each variable (gear) or the true minimiser */
+    gd_opt_gear_vars vars;   /* gear: the variables */
+    gd_pair pair;            /* gear: the case's pair with its own modification */
+    double case_value[GD_OPT_GEAR_NVARS]; /* gear: the case's own modification in the variables */
+    double table2[GD_OPT_GEAR_NVARS];     /* gear, the paper's pair: Table 2 in the variables */
+    int paper;               /* gear: the pair is the paper's (gd_opt_gear_is_paper_pair) */
+    gd_ltca_result lte[4];   /* gear: unmodified, the case's modification, optimum, Table 2 (the paper's pair) */
+    char no_effect[GD_OPT_GEAR_NVARS][96]; /* gear: "" or why the variable has no effect at the optimum */
+    const char *no_effect_ptr[GD_OPT_GEAR_NVARS];
+    double last_tenth_improvement; /* the best run: relative fall of the best value over its last tenth */
+    int converged;           /* that fall at most 1e-3 */
     double active_mm;
     gd_opt_settings settings;
     int threads;

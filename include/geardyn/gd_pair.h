@@ -28,6 +28,7 @@ typedef struct gd_pair {
      * lengths as transverse roll lengths, lead lengths along the axis */
     double root_relief_amount_um, root_relief_length_mm, tip_relief_amount_um, tip_relief_length_mm; /* y1..y4 */
     double lead_relief_inner_um, lead_relief_outer_um, lead_unmodified_length_mm;                 /* y5, y6, y7 */
+    double lead_unmodified_centre_mm, helix_slope_um;                                           /* y8, y9 */
     /* misalignment of the gear axis about the middle of the gear, and centre-distance error */
     double axis_in_plane_arcmin, axis_cross_plane_arcmin, centre_distance_error_mm;
 } gd_pair;

@@ -4,6 +4,7 @@
 #ifndef GD_RESPONSE_H
 #define GD_RESPONSE_H
 
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_sim.h"
 
 #ifdef __cplusplus
@@ -70,6 +71,7 @@ typedef struct gd_local {
 /* The result of the response row of the table of analyses (gd_analysis.h). */
 typedef struct gd_response_outcome {
     gd_model model;          /* the model the case built */
+    gd_modal modes;          /* its modes (gd_scene_modes; modes.failed says why there are none) */
     gd_response_result res;
     gd_local local;          /* [output] response_variable: samples, Poincare points, spectrum */
 } gd_response_outcome;
@@ -86,8 +88,15 @@ GD_API void gd_response_opts_default(gd_response_opts *o);
 GD_API gd_status gd_response_run(const gd_case *c, const gd_model *m, const gd_response_opts *opts,
                                  const gd_response_hooks *hooks, void *user, gd_response_result *res, gd_error *err);
 
-/* Motion class from a sequence of Poincare points (npts x n, row-major). */
+/* Motion class from a sequence of Poincare points (npts x n, row-major). Distances are the largest
+ * component difference over the size of the orbit, 1 + the largest |component| of any point (one
+ * scale for every component: in the model's units positions and rates are commensurate, and the
+ * integration error of a small component is a share of the whole state's). The period is the
+ * smallest p <= max_period for which every two points p apart in the settled part of the window,
+ * its last half (at least 2p + 1 points), are within tol: an orbit still converging at the start
+ * of the window (a weakly damped mode decaying) is classed by the orbit it converges to. 0: none. */
 GD_API int gd_poincare_period(const double *pts, long npts, int n, double tol, int max_period);
+/* Distinct points of the whole window (within tol, the same distance). */
 GD_API int gd_poincare_distinct(const double *pts, long npts, int n, double tol);
 /* The motion class from the Poincare period (0: none found) and the largest Lyapunov
  * exponent per mesh period (when have_mle): period-n when the section repeats; else

@@ -2,12 +2,14 @@
  * settings of TCA and LTCA (gd_pair_from_case, gd_tca_settings_from_case,
  * gd_ltca_settings_from_case), its geometry and the values derived from it (gd_scene_resolve, the
  * second step of gd_case_resolve), the dimensionless dynamic model with its LTCA excitations
- * (gd_model_build), and the solver options of its [solver] section. */
+ * (gd_model_build) and its modal analysis (gd_scene_modes), and the solver options of its [solver]
+ * section. */
 #ifndef GD_SCENE_H
 #define GD_SCENE_H
 
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_ltca.h"
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_model.h"
 #include "geardyn/gd_pair.h"
 #include "geardyn/gd_tca.h"
@@ -59,6 +61,14 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cos
  * (a slower run would never end), memory and files within output.max_bytes. The messages name
  * the keys the value comes from; GD_ERR_INPUT. */
 GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd_run_cost *cost, gd_error *err);
+
+/* The modal analysis of the model m of the resolved case c (docs/model.md section 9.7): m linearised
+ * at its static operating point (gd_model_static_state: every mesh in drive-side contact at its
+ * mean stiffness, every bearing with a clearance on the side the load puts it, or open), undamped;
+ * a herringbone's modes marked symmetric or antisymmetric; bta's springs named (bearing-1L,
+ * axial-2R, groove-1, ...); the resonance speeds from c's pinion teeth. Runs no LTCA: the
+ * stiffness is m's. */
+GD_API gd_status gd_scene_modes(const gd_case *c, const gd_model *m, gd_modal *out, gd_error *err);
 
 /* The integrator options of the case's [solver] section. */
 GD_API void gd_solver_opts_from_case(const gd_case *c, gd_solver_opts *o);

@@ -70,6 +70,7 @@ typedef struct gd_sweep_plan {
     int n, nclear, nmesh;    /* state size, clearances and meshes of the model */
     char state_name[GD_MAX_STATE][16]; /* y1L, ..., y1L_dot: the columns of states.csv */
     long npoincare;          /* Poincare samples per point: record_periods + 1 */
+    double periodicity_tol;  /* run.periodicity_tol of the case (the hysteresis's test of two equal motions) */
     uint64_t fingerprint;    /* of every input that changes a result, and the version */
     int *slot_info;          /* 4 x nslots: chain, position in the chain, index along each axis */
 } gd_sweep_plan;
@@ -146,7 +147,12 @@ typedef struct gd_sweep_interval {
 
 /* The hysteresis intervals of a continuation sweep in both directions, row by row, each row
  * in increasing parameter order: *iv (malloc'd, free it; NULL when none) and *niv. Any other
- * sweep has none. Pending and failed points never differ. */
+ * sweep has none. An interval is a run of grid values where the up and down points are two
+ * different motions: their combined RMS accelerations differ by more than 5 % of the larger, or
+ * their motion classes differ and their Poincare points do not coincide (in the settled half of
+ * each window every point of one within 10 periodicity_tol of the orbit's size of a point of the
+ * other: one orbit, one still converging to it, is one motion). Pending and failed points never
+ * differ. */
 GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, gd_sweep_interval **iv,
                                      int *niv, gd_error *err);
 
@@ -155,6 +161,7 @@ GD_API gd_status gd_sweep_hysteresis(const gd_sweep_plan *p, const gd_sweep_poin
 typedef struct gd_sweep_outcome {
     gd_sweep_plan plan;
     gd_sweep_point *pts;
+    gd_modal modes;          /* the modes of the case's model at its own values (modes.failed: why none) */
 } gd_sweep_outcome;
 
 #ifdef __cplusplus

@@ -75,7 +75,7 @@ static void mesh_quantities(const gd_model *m, double t, double s0, double c0, c
     double f = mode > 0 ? cl->k * kf * (*lam - cl->h) : mode < 0 ? cl->k * kf * (*lam + cl->h) : 0.0;
     if (!cl->damp_contact_only || mode != 0)
         f += cl->c * *lamd;
-    *force = f + gd_model_pulse_force(m, j, t, md);
+    *force = f + gd_model_pulse_force(m, j, t, md, mode);
 }
 
 static int on_step(gd_sim *s, double t0, double t1, void *user)
@@ -177,20 +177,18 @@ typedef struct settle_ctx {
 
 static void settle_distances(const settle_ctx *sc, double *d)
 {
-    double scale[GD_MAX_STATE];
-    for (int i = 0; i < sc->n; i++) {
-        scale[i] = 0.0;
-        for (int k = 0; k < SETTLE_W; k++)
-            scale[i] = fmax(scale[i], fabs(sc->pts[k][i]));
-        scale[i] += 1.0;
-    }
+    double scale = 0.0; /* the size of the orbit, as gd_poincare_period measures it */
+    for (int k = 0; k < SETTLE_W; k++)
+        for (int i = 0; i < sc->n; i++)
+            scale = fmax(scale, fabs(sc->pts[k][i]));
+    scale += 1.0;
     for (int p = 1; p <= SETTLE_PMAX; p++) {
         d[p] = 0.0;
         for (int k = 0; k < SETTLE_W; k++) /* ring order does not matter for a max over all pairs p apart */
             for (int i = 0; i < sc->n; i++) {
                 int kk = (int)((sc->npts - SETTLE_W + k) % SETTLE_W), kp = (int)((sc->npts - SETTLE_W + k + p) % SETTLE_W);
                 if (k + p < SETTLE_W)
-                    d[p] = fmax(d[p], fabs(sc->pts[kk][i] - sc->pts[kp][i]) / scale[i]);
+                    d[p] = fmax(d[p], fabs(sc->pts[kk][i] - sc->pts[kp][i]) / scale);
             }
     }
 }

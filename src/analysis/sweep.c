@@ -402,6 +402,7 @@ GD_API gd_status gd_sweep_plan_create(const gd_case *c, gd_sweep_plan *p, gd_err
     if ((st = plan_grid(c, p, err)) == GD_OK && (st = plan_chains(c, p, err)) == GD_OK &&
         (st = plan_model(c, p, err)) == GD_OK) {
         p->npoincare = (long)c->record_periods + 1;
+        p->periodicity_tol = c->periodicity_tol;
         p->fingerprint = fingerprint(c);
         st = plan_check_points(c, p, err);
     }
@@ -471,16 +472,47 @@ GD_API int gd_sweep_pending(const gd_sweep_plan *p, const gd_sweep_point *pts)
 
 /* ---- hysteresis ---- */
 
-/* Whether the up point u and the down point d at one grid value differ: both done, and the
- * motion class differs or the combined RMS acceleration by more than 5 % of the larger. */
-static int branches_differ(const gd_sweep_point *u, const gd_sweep_point *d)
+/* Whether every point of the settled half of a's Poincare samples lies within tol (relative to
+ * the orbit's size, 1 + the largest |value| of either) of one of the settled half of b's. */
+static int cloud_within(const gd_sweep_point *a, const gd_sweep_point *b, int nresp, double tol)
+{
+    double scale = 0;
+    for (long k = 0; k < a->npoincare * nresp; k++)
+        scale = fmax(scale, fabs(a->poincare[k]));
+    for (long k = 0; k < b->npoincare * nresp; k++)
+        scale = fmax(scale, fabs(b->poincare[k]));
+    scale += 1.0;
+    for (long i = a->npoincare / 2; i < a->npoincare; i++) {
+        int near = 0;
+        for (long j = b->npoincare / 2; j < b->npoincare && !near; j++) {
+            double d = 0;
+            for (int r = 0; r < nresp; r++)
+                d = fmax(d, fabs(a->poincare[i * nresp + r] - b->poincare[j * nresp + r]));
+            near = d <= tol * scale;
+        }
+        if (!near)
+            return 0;
+    }
+    return 1;
+}
+
+/* Whether the up point u and the down point d at one grid value are two different motions: both
+ * done, and the combined RMS acceleration differs by more than 5 % of the larger, or the motion
+ * class differs and the Poincare points do not coincide (one orbit classed twice, one point still
+ * converging to it, is one motion). */
+static int branches_differ(const gd_sweep_plan *p, const gd_sweep_point *u, const gd_sweep_point *d)
 {
     if (u->status != GD_POINT_DONE || d->status != GD_POINT_DONE)
         return 0;
-    if (strcmp(u->motion, d->motion) != 0)
-        return 1;
     double a = u->rms_accel_mps2[2], b = d->rms_accel_mps2[2];
-    return fabs(a - b) > 0.05 * fmax(fabs(a), fabs(b));
+    if (fabs(a - b) > 0.05 * fmax(fabs(a), fabs(b)))
+        return 1;
+    if (strcmp(u->motion, d->motion) == 0)
+        return 0;
+    if (!u->poincare || !d->poincare || u->npoincare < 2 || d->npoincare < 2 || p->nresp < 1)
+        return 1;
+    double tol = 10.0 * (p->periodicity_tol > 0 ? p->periodicity_tol : 1e-6);
+    return !(cloud_within(u, d, p->nresp, tol) && cloud_within(d, u, p->nresp, tol));
 }
 
 /* The intervals of one row (chains cu up, cd down), appended to iv[*niv..]. su, sd: scratch
@@ -498,7 +530,7 @@ static void row_hysteresis(const gd_sweep_plan *p, const gd_sweep_point *pts, co
     int start = -1;
     for (int q = 0; q <= n1; q++) {
         int i = q < n1 ? (ascending ? q : n1 - 1 - q) : -1;
-        int d = q < n1 && branches_differ(&pts[su[i]], &pts[sd[i]]);
+        int d = q < n1 && branches_differ(p, &pts[su[i]], &pts[sd[i]]);
         if (d && start < 0)
             start = q;
         if (!d && start >= 0) {

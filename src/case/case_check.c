@@ -93,6 +93,20 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
                hypot(c->base_pitch_deviation_um, c->profile_deviation_um));
     else if (!gd_case_key_given(c, "excitation", "ste_amplitude_um"))
         c->ste_amplitude_um = 10.0;
+    /* LTCA's transmission error as the error excitation: with LTCA's stiffness, or a constant one
+     * (e = LTE - F/k(t) is the rest of the loaded TE once the mesh stiffness has given its share) */
+    if (c->ste_source == GD_STE_LTCA && c->stiffness != GD_STIFF_LTCA && c->stiffness != GD_STIFF_CONSTANT) {
+        gd_case_key_where(c, "excitation", "ste", w, sizeof w);
+        char kind[32];
+        gd_case_key_choice("excitation", "stiffness", c->stiffness, kind, sizeof kind);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.ste: ltca with excitation.stiffness = %s (valid: "
+                            "stiffness = ltca or constant; LTCA's transmission error is taken less the share F/k(t) "
+                            "of the mesh stiffness, which must be LTCA's own or constant)", w, kind);
+    }
+    /* the periodicity tolerance follows the integration tolerance: a period of about a hundred
+     * steps, each within rtol of the state (docs/numerics.md section 8) */
+    gd_case_key_derive(c, "run", "periodicity_tol", &c->periodicity_tol,
+                       c->method == GD_METHOD_RK4 || c->fixed_step ? 1e-6 : fmin(0.1, 100.0 * c->rtol));
     /* stiffness harmonics */
     if (c->n_stiffness_phases > c->n_stiffness_harmonics) {
         gd_case_key_where(c, "excitation", "stiffness_phases_deg", w, sizeof w);
@@ -110,6 +124,19 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
         gd_case_key_where(c, "excitation", "stiffness_harmonics", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness_harmonics: amplitudes sum to %g, the "
                             "stiffness could become negative (valid: sum below 1)", w, asum);
+    }
+    if (c->gravity && c->model != GD_MODEL_BTA) {
+        gd_case_key_where(c, "scene", "gravity", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: scene.gravity: on with scene.model = %s (valid: gravity = on only "
+                            "with model = bta; the torsional models have no translation for the weights to move)", w,
+                            c->model == GD_MODEL_TORSIONAL ? "torsional" : "torsional-lr");
+    }
+    if (c->impact && c->stiffness != GD_STIFF_LTCA) {
+        static const char *const kind[] = {"constant", "harmonic", "rectangular"};
+        gd_case_key_where(c, "excitation", "impact", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.impact: on with excitation.stiffness = %s (valid: "
+                            "impact = on only with stiffness = ltca; the pulse sits at LTCA's mesh-in phase of LTCA's "
+                            "mesh cycle, which a %s stiffness does not have)", w, kind[c->stiffness], kind[c->stiffness]);
     }
     if (gd_case_key_given(c, "solver", "order") && c->method == GD_METHOD_DIRK && c->order > 5) {
         gd_case_key_where(c, "solver", "order", w, sizeof w);
@@ -140,4 +167,42 @@ GD_API gd_status gd_case_check(gd_case *c, gd_error *err)
         }
     }
     return GD_OK;
+}
+
+GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
+{
+    const gd_keyspec *k = &gd_case_schema(NULL)[i];
+    int single = c->arrangement != GD_ARR_HERRINGBONE;
+    *absent = 0;
+#define IS(S_, K_) (strcmp(k->section, S_) == 0 && strcmp(k->key, K_) == 0)
+    if (single && (IS("gear", "groove_width_mm") || IS("support", "shaft_stiffness_pinion_n_per_m") ||
+                   IS("support", "shaft_stiffness_gear_n_per_m") || IS("damping", "shaft_damping_ratio"))) {
+        *absent = 1;
+        return "not used: a single pair has no relief groove and no groove shafts";
+    }
+    if (single && IS("excitation", "half_phase_deg")) {
+        *absent = 1;
+        return "not used: a single pair has one mesh";
+    }
+    if (c->stiffness != GD_STIFF_HARMONIC &&
+        (IS("excitation", "stiffness_harmonics") || IS("excitation", "stiffness_phases_deg"))) {
+        static const char *const why[] = {"ignored: excitation.stiffness = constant",
+                                          "ignored: excitation.stiffness = harmonic",
+                                          "ignored: excitation.stiffness = rectangular",
+                                          "ignored: excitation.stiffness = ltca"};
+        return c->stiffness >= 0 && c->stiffness < 4 ? why[c->stiffness] : "ignored";
+    }
+    if (c->stiffness != GD_STIFF_RECTANGULAR &&
+        (IS("excitation", "rectangular_variation") || IS("excitation", "rectangular_high_fraction")))
+        return "ignored: only excitation.stiffness = rectangular uses it";
+    int ste = IS("excitation", "ste_amplitude_um") || IS("excitation", "ste_phase_deg") ||
+              IS("excitation", "base_pitch_deviation_um") || IS("excitation", "profile_deviation_um");
+    if (!c->error_excitation && (ste || IS("excitation", "ste_mean_um") || IS("excitation", "ste")))
+        return "ignored: scene.error_excitation = off";
+    if (c->ste_source == GD_STE_LTCA && ste)
+        return "ignored: excitation.ste = ltca";
+    if (!c->impact && IS("excitation", "impact_exponent"))
+        return "ignored: excitation.impact = off";
+#undef IS
+    return NULL;
 }

@@ -21,13 +21,15 @@
 
 static const gd_keyspec schema[] = {
     /* [scene] */
-    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation",
+    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation|basins",
       "what to compute"),
     E("scene", "model", model, 2, "torsional|torsional-lr|bta",
       "dynamic model: one mesh coordinate, the two helical halves, or bending-torsion-axial (10 DOF; 5 for a single pair)"),
     B("scene", "bearing_clearance", bearing_clearance, 1, "radial bearing clearance (dead zone) in the supports"),
     B("scene", "error_excitation", error_excitation, 1, "static transmission error excitation e(t)"),
     B("scene", "axial_coupling", axial_coupling, 1, "axial mesh force component and axial DOFs (bta)"),
+    B("scene", "gravity", gravity, 0,
+      "the weights of the bodies on their radial supports (bta; the direction is support.gravity_angle_deg)"),
     S("scene", "title", title, "", "free text shown in outputs"),
 
     /* [gear] */
@@ -57,7 +59,7 @@ static const gd_keyspec schema[] = {
     E("gear", "arrangement", arrangement, 0, "herringbone|helical|spur",
       "two helical halves of opposite hand on common bodies, one helical pair, or a spur pair (helix_angle_deg = 0)"),
     E("gear", "pinion_hand", pinion_hand, 0, "right|left",
-      "hand of the pinion helix in the left half (the right half and the gear have the opposite hand)"),
+      "hand of the pinion helix (a herringbone: of its left half; the right half and the gear have the opposite hand)"),
 
     /* [modification]: pinion flank only, form-ground (docs/geometry.md). Amounts are measured normal to
      * the flank; profile lengths are transverse roll lengths; lead lengths are axial. */
@@ -75,17 +77,26 @@ static const gd_keyspec schema[] = {
     D("modification", "lead_relief_outer_um", "um", lead_relief_outer_um, 0, 1000, 0, 0, 0,
       "y6: lead relief at the other face end (same measure as y5)"),
     D("modification", "lead_unmodified_length_mm", "mm", lead_unmodified_length_mm, 0, 5000, 0, 0, 0,
-      "y7: axial length without lead relief, centred on the face of each half (0: crowned over the whole face)"),
+      "y7: axial length without lead relief, centred on the face of each half unless moved by y8 (0: crowned over "
+      "the whole face)"),
+    D("modification", "lead_unmodified_centre_mm", "mm", lead_unmodified_centre_mm, -2500, 2500, 0, 0, 0,
+      "y8: axial position of the middle of the unmodified lead band from the middle of the face, + toward the "
+      "y6 end: the lead relief at the y6 end is 2 y8 shorter than at the y5 end (asymmetric lead relief)"),
+    D("modification", "helix_slope_um", "um", helix_slope_um, -1000, 1000, 0, 0, 0,
+      "y9: helix slope modification (a change of the pinion's helix angle): the flank moved normal to itself by "
+      "y9/2 at the y6 end and -y9/2 at the y5 end, linearly across the face (+: material removed toward the y6 end)"),
     B("modification", "apply", modification_apply, 1,
       "off: grind nothing (every amount and length above resolves to 0), so one key switches a case between the "
       "modified and the unmodified pair"),
 
     /* [misalignment] */
     D("misalignment", "axis_in_plane_arcmin", "arcmin", axis_in_plane_arcmin, -600, 600, 0, 0, 0,
-      "gear axis tilt in the plane of the axes, about the middle of the gear (+: the right end moves away from the pinion)"),
+      "gear axis tilt in the plane of the axes, about the middle of the gear (+: its +z end moves away from the "
+      "pinion; +z: the end from which the pinion is seen turning counter-clockwise, docs/tca.md section 2)"),
     D("misalignment", "axis_cross_plane_arcmin", "arcmin", axis_cross_plane_arcmin, -600, 600, 0, 0, 0,
       "gear axis tilt across the plane of the axes, about the middle of the gear (+: rotation about the line of "
-      "centres, the right end moves to -y); the paper's delta is the resultant of the two components"),
+      "centres, its +z end moves to -y, against the pinion's pitch-point motion); the paper's delta is the "
+      "resultant of the two components"),
     D("misalignment", "centre_distance_error_mm", "mm", centre_distance_error_mm, 0, 10, 0, 0, 0,
       "dE: centre distance increase (the flanks have no backlash allowance: a decrease would jam the pair)"),
 
@@ -102,9 +113,13 @@ static const gd_keyspec schema[] = {
     /* [excitation] */
     E("excitation", "stiffness", stiffness, 1, "constant|harmonic|rectangular|ltca",
       "mesh stiffness k(t) of each half (ltca: from loaded tooth contact analysis, docs/ltca.md)"),
-    B("excitation", "impact", impact, 0, "mesh-in impact force from LTCA, once per mesh period per half (paper section 5.2)"),
+    B("excitation", "impact", impact, 0,
+      "mesh-in impact force from LTCA, once per mesh period per half (paper section 5.2; needs stiffness = ltca)"),
+    E("excitation", "impact_form", impact_form, 0, "contact|paper",
+      "contact: the pulse acts while the drive flanks touch, peak F_s and impulse m_n v_s; paper: an external force "
+      "whatever the contact, F_s for the contact's rise time, at most a quarter mesh period (docs/model.md 8.4)"),
     D("excitation", "impact_exponent", "", impact_exponent, 1, 3, 0, 0, 1,
-      "exponent n of the impact contact law F = c delta^n (1: linear, F_s = v_s sqrt(m_e k_s))"),
+      "exponent n of the impact contact law F = c delta^n (1: linear, F_s = v_s sqrt(m_n k_s))"),
     D("excitation", "mesh_stiffness_n_per_m", "N/m", mesh_stiffness_n_per_m, 0, 1e12, 1, 0, NAN,
       "mean mesh stiffness per mesh: one half, or a single pair (derived: ISO 6336-1 c_gamma_alpha times face width)"),
     L("excitation", "stiffness_harmonics", "", stiffness_harmonics, n_stiffness_harmonics, 0, 0.95,
@@ -115,6 +130,10 @@ static const gd_keyspec schema[] = {
       "rectangular: (k_high - k_m)/k_m; the low level keeps the mean at k_m"),
     D("excitation", "rectangular_high_fraction", "", rectangular_high_fraction, 0, 1, 1, 1, NAN,
       "rectangular: fraction of the mesh period at the high level (derived: eps_alpha - floor(eps_alpha))"),
+    E("excitation", "ste", ste_source, 0, "sinusoid|ltca",
+      "static transmission error e(t) of each mesh: the sinusoid of ste_amplitude_um, or LTCA's own loaded "
+      "transmission error of each half less the share the mesh stiffness gives, F/k(t) (stiffness = ltca or "
+      "constant; docs/ltca.md section 8)"),
     D("excitation", "ste_amplitude_um", "um", ste_amplitude_um, 0, 1000, 0, 0, NAN,
       "amplitude e_r of e(t) = e_m + e_r sin(w_m t + phi) (default 10, or from the deviations)"),
     D("excitation", "ste_mean_um", "um", ste_mean_um, -1000, 1000, 0, 0, 0, "mean e_m of the static transmission error"),
@@ -130,6 +149,9 @@ static const gd_keyspec schema[] = {
     E("damping", "mesh_damping_mode", mesh_damping_mode, 0, "always|contact",
       "mesh damping acts always (Kahraman & Singh) or only while the teeth are in contact"),
     D("damping", "support_damping_ratio", "", support_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of every bearing support"),
+    E("damping", "bearing_damping_mode", bearing_damping_mode, 0, "always|contact",
+      "radial bearing damper on the journal's velocity always, or only while the journal touches its clearance's "
+      "boundary (scene.bearing_clearance = on)"),
     D("damping", "shaft_damping_ratio", "", shaft_damping_ratio, 0, 1, 0, 0, 0.02, "damping ratio of the groove shafts (axial)"),
 
     /* [support] */
@@ -142,7 +164,11 @@ static const gd_keyspec schema[] = {
     D("support", "shaft_stiffness_gear_n_per_m", "N/m", shaft_stiffness_gear_n_per_m, 0, 1e14, 1, 0, NAN,
       "axial stiffness of the gear groove shaft (derived likewise)"),
     E("support", "pinion_axial", pinion_axial, 0, "floating|fixed",
-      "LTCA: herringbone pinion axially floating (the halves carry equal axial forces) or axially fixed"),
+      "LTCA: herringbone pinion axially floating (the halves carry equal axial forces) or axially fixed; a single "
+      "pair's pinion is fixed (derived: its bearing takes the axial force)"),
+    D("support", "gravity_angle_deg", "deg", gravity_angle_deg, -360, 360, 0, 0, 0,
+      "scene.gravity: angle in the transverse plane between +y (the line of action, the way the pinion pushes the "
+      "gear) and the weights' direction; only their component along y, times cos of it, acts"),
 
     /* [solver] */
     E("solver", "method", method, 0, "erk|dirk|rk4", "ARKODE explicit RK, ARKODE implicit DIRK, or fixed-step classical RK4"),
@@ -192,8 +218,10 @@ static const gd_keyspec schema[] = {
     D("run", "lyapunov_separation", "", lyapunov_separation, 0, 1e-2, 1, 0, 1e-6,
       "two-trajectory: initial and renormalised separation (dimensionless state norm); keep it far above the "
       "integration error of each trajectory (about rtol times the state)"),
-    D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, 1e-6,
-      "Poincare points closer than this (relative to 1 + the largest value of each state variable) are equal"),
+    D("run", "periodicity_tol", "", periodicity_tol, 0, 0.1, 1, 0, NAN,
+      "Poincare points closer than this (relative to the size of the orbit, 1 + the largest value of any state "
+      "variable) are equal (derived: 100 solver.rtol, the error of a period of about a hundred steps each within "
+      "rtol; 1e-6 with fixed steps)"),
     D("run", "chaos_threshold_per_period", "", chaos_threshold_per_period, 0, 1, 1, 0, 0.01,
       "largest Lyapunov exponent per mesh period above which a non-periodic motion is chaotic (|mle| below: quasi-periodic)"),
 
@@ -242,19 +270,21 @@ static const gd_keyspec schema[] = {
     E("continuation", "direction", cont_direction, 2, "up|down|both",
       "from the starting orbit towards increasing, decreasing parameter, or both (two branches)"),
     D("continuation", "ds", "", cont_ds, 0, 1e6, 1, 0, 0.02,
-      "first arclength step in the norm of (state, parameter / scale) (docs/continuation.md section 7)"),
+      "first arclength step in the norm of (state / its size, parameter / (to - from)) (docs/continuation.md section 3)"),
     D("continuation", "ds_min", "", cont_ds_min, 0, 1e6, 1, 0, 1e-6,
       "smallest arclength step: a branch whose corrector fails at it ends"),
-    D("continuation", "ds_max", "", cont_ds_max, 0, 1e6, 1, 0, 0.05, "largest arclength step"),
+    D("continuation", "ds_max", "", cont_ds_max, 0, 1e6, 1, 0, 0.2, "largest arclength step"),
     D("continuation", "dp_max", "", cont_dp_max, 0, 1e30, 0, 0, 0,
-      "largest change of the parameter in one step, in the unit of its key (0: no limit besides ds_max)"),
+      "largest change of the parameter in one step, in the unit of its key (0: (to - from) / 50)"),
     I("continuation", "max_points", cont_max_points, 2, 100000, 400, "points of one branch at most, its start included"),
-    D("continuation", "newton_tol", "", cont_newton_tol, 1e-14, 1e-2, 0, 0, 1e-9,
-      "an orbit is converged when the max-norm of the shooting residual is below this (keep solver.rtol tighter)"),
+    D("continuation", "newton_tol", "", cont_newton_tol, 0, 1e-2, 0, 0, 0,
+      "an orbit is converged when the max-norm of the shooting residual (dimensionless state) is below this "
+      "(0: what the integration resolves, solver.rtol times the orbit's largest state component plus solver.atol)"),
     I("continuation", "newton_max_iterations", cont_newton_max_iterations, 1, 100, 12,
       "Newton iterations of one correction at most (more: the step is halved)"),
-    D("continuation", "locate_tol", "", cont_locate_tol, 1e-14, 1, 0, 0, 1e-8,
-      "a bifurcation is located when its arclength bracket is below this"),
+    D("continuation", "locate_tol", "", cont_locate_tol, 0, 1, 0, 0, 0,
+      "a bifurcation is located when its arclength bracket is below this (0: ten times newton_tol over the orbit's "
+      "largest state component, what a corrected point resolves)"),
     I("continuation", "period", cont_period, 0, 16, 0,
       "mesh periods of the starting orbit (0: the smallest n up to 16 whose Poincare section repeats after the transient)"),
     E("continuation", "shooting", cont_shooting, 0, "multiple|single",
@@ -280,6 +310,64 @@ static const gd_keyspec schema[] = {
     E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
       "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
       "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
+
+    /* [basins] (analysis = basins; docs/basins.md) */
+    S("basins", "x", bas_x, "lambda_L",
+      "the section's first coordinate: lambda_L, lambda_R (the mesh deflection over half the backlash), lambda_dot_L, "
+      "lambda_dot_R (its rate, half backlashes per unit of dimensionless time omega_n t), or a state component "
+      "(y1L, ..., y1L_dot, dimensionless)"),
+    S("basins", "y", bas_y, "lambda_dot_L", "the section's second coordinate (as x)"),
+    D("basins", "x_from", "", bas_x_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in x, in x's unit (derived for a mesh deflection: -2, back contact)"),
+    D("basins", "x_to", "", bas_x_to, -1e30, 1e30, 0, 0, NAN,
+      "upper end of the box in x (derived for a mesh deflection: the static deflection + 2, drive contact)"),
+    D("basins", "y_from", "", bas_y_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in y (derived for a rate: -(x_to - x_from) Omega, Omega the frequency ratio)"),
+    D("basins", "y_to", "", bas_y_to, -1e30, 1e30, 0, 0, NAN, "upper end of the box in y (derived for a rate: the "
+      "opposite of y_from)"),
+    D("basins", "phase_deg", "deg", bas_phase_deg, 0, 360, 0, 1, 0,
+      "mesh phase of the section: initial states and the stroboscopic map at this phase of the mesh cycle"),
+    E("basins", "base", bas_base, 0, "static|state",
+      "the state components off the section: at the static state, or at basins.state (an orbit's point)"),
+    S("basins", "state", bas_state, "",
+      "base = state: the dimensionless state at the section's phase, comma-separated (as branch.csv writes it)"),
+    I("basins", "resolution", bas_resolution, 2, 20000, 100,
+      "cells of the box along x (the picture's grid and the tessellation of the recurrences)"),
+    I("basins", "resolution_y", bas_resolution_y, 0, 20000, 0, "cells of the box along y (0: resolution)"),
+    B("basins", "picture", bas_picture, 1,
+      "map every cell's centre (basins.csv and the picture; without parameter only)"),
+    I("basins", "samples", bas_samples, 0, 1000000000, 10000,
+      "initial states drawn uniformly in the box for the fractions (0: none), per parameter value"),
+    I("basins", "seed", bas_seed, 0, 2147483647, 1, "seed of the random sample (GSL's Mersenne Twister)"),
+    I("basins", "max_periods", bas_max_periods, 10, 100000000, 2000,
+      "mesh periods of one trajectory at most: beyond, its state is labelled iteration-cap"),
+    D("basins", "margin", "", bas_margin, 0, 10, 0, 0, 1,
+      "the tessellation extends this many box widths beyond the box on every side; a trajectory outside it for "
+      "consecutive_lost_steps periods is labelled left-box"),
+    I("basins", "consecutive_recurrences", bas_consecutive_recurrences, 1, 1000000, 100,
+      "map points in a row on cells the trajectory visited before: an attractor is found"),
+    I("basins", "consecutive_attractor_steps", bas_consecutive_attractor_steps, 1, 1000000, 2,
+      "map points in a row on one known attractor's cells: the trajectory goes there"),
+    I("basins", "consecutive_basin_steps", bas_consecutive_basin_steps, 1, 1000000, 10,
+      "map points in a row on cells whose initial states went to one attractor: the trajectory goes there "
+      "(used when the section is the whole state space)"),
+    I("basins", "consecutive_lost_steps", bas_consecutive_lost_steps, 0, 1000000, 20,
+      "map points in a row outside the tessellation: left-box"),
+    I("basins", "lyapunov_periods", bas_lyapunov_periods, 10, 10000000, 1000,
+      "mesh periods over which a non-periodic attractor's largest Lyapunov exponent is measured"),
+    D("basins", "newton_tol", "", bas_newton_tol, 1e-14, 1e-2, 0, 0, 1e-8,
+      "a periodic attractor's orbit by shooting is converged when the residual's max-norm is below this "
+      "(keep solver.rtol tighter)"),
+    I("basins", "entropy_box_cells", bas_entropy_box_cells, 1, 1000, 5,
+      "side of the boxes of the basin entropy, in cells of the picture"),
+    S("basins", "continuation", bas_continuation, "",
+      "a finished continuation's directory (relative to the working directory): its stable orbits seed the "
+      "search, its orbits are marked on the picture and its branches drawn beside the fractions"),
+    S("basins", "parameter", bas_parameter, "",
+      "the fractions over a numeric key, section.key (e.g. operating.speed_rpm); empty: at the case's values"),
+    D("basins", "from", "", bas_from, -1e30, 1e30, 0, 0, NAN, "first value of the parameter, in its key's unit"),
+    D("basins", "to", "", bas_to, -1e30, 1e30, 0, 0, NAN, "last value of the parameter, in its key's unit"),
+    I("basins", "points", bas_points, 2, 100000, 11, "values of the parameter from `from` to `to`, both included"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
     S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",
@@ -326,10 +414,10 @@ static const gd_keyspec schema[] = {
     S("optimize", "optimizers", opt_optimizers, "alo,gn_direct_l,gn_crs2_lm,gn_isres,gn_esch,ln_bobyqa,ln_cobyla,ln_sbplx,random",
       "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
     S("optimize", "objective", opt_objective, "gear-lte",
-      "gear-lte (LTE amplitude of the modified pair over y1..y5, y7) or test functions sphere, rosenbrock, "
+      "gear-lte (LTE amplitude of the modified pair over optimize.variables) or test functions sphere, rosenbrock, "
       "rastrigin, ackley, griewank; compare-optimizers takes a comma-separated list"),
     L("optimize", "dimension", "", opt_dimensions, n_opt_dimensions, 1, 1000,
-      "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte has 6)"),
+      "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte: the count of optimize.variables)"),
     I("optimize", "iterations", opt_iterations, 1, 10000000, 100,
       "ALO iterations after the initial population (the paper: 100); the budget is population (iterations + 1)"),
     I("optimize", "population", opt_population, 2, 100000, 30, "ALO: number of ants (= antlions); random search: batch size"),
@@ -346,21 +434,42 @@ static const gd_keyspec schema[] = {
     I("optimize", "ecdf_targets", opt_ecdf_targets, 1, 1000, 51, "number of targets of the runtime distribution"),
     D("optimize", "shift", "", opt_shift, 0, 0.9, 0, 0, 0,
       "test functions: the minimiser of run r drawn uniformly from shift times the box (0: at the origin)"),
+    S("optimize", "variables", opt_variables, "y1,y2,y3,y4,y5,y7",
+      "gear-lte: the design variables, comma-separated: the paper's y1..y5, y7 (y6 = y5 unless y6 is listed), "
+      "y6 (asymmetric lead relief), y8 (offset of the unmodified lead band), y9 (helix slope); a variable not "
+      "listed keeps the case's [modification] value"),
     D("optimize", "root_relief_amount_min_um", "um", opt_root_amount_min_um, 0, 1000, 0, 0, 0, "gear-lte: lower bound of y1 (C_min)"),
-    D("optimize", "root_relief_amount_max_um", "um", opt_root_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y1 (C_max)"),
-    D("optimize", "root_relief_length_min_mm", "mm", opt_root_length_min_mm, 0, 1000, 0, 0, 0.5, "gear-lte: lower bound of y2 (D_min)"),
-    D("optimize", "root_relief_length_max_mm", "mm", opt_root_length_max_mm, 0, 1000, 0, 0, 12, "gear-lte: upper bound of y2 (D_max)"),
+    D("optimize", "root_relief_amount_max_um", "um", opt_root_amount_max_um, 0, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y1 (C_max; derived: the larger of 12 um per mm of normal module and 4 static "
+      "deflections plus twice the misalignment's mismatch across the face, docs/optimisation.md section 2)"),
+    D("optimize", "root_relief_length_min_mm", "mm", opt_root_length_min_mm, 0, 1000, 0, 0, NAN,
+      "gear-lte: lower bound of y2 (D_min; derived: 0.1 normal module)"),
+    D("optimize", "root_relief_length_max_mm", "mm", opt_root_length_max_mm, 0, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y2 (D_max; derived: 2.4 normal modules, at most the active profile)"),
     D("optimize", "tip_relief_amount_min_um", "um", opt_tip_amount_min_um, 0, 1000, 0, 0, 0, "gear-lte: lower bound of y3 (C_min)"),
-    D("optimize", "tip_relief_amount_max_um", "um", opt_tip_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y3 (C_max)"),
-    D("optimize", "tip_relief_length_min_mm", "mm", opt_tip_length_min_mm, 0, 1000, 0, 0, 0.5, "gear-lte: lower bound of y4 (D_min)"),
-    D("optimize", "tip_relief_length_max_mm", "mm", opt_tip_length_max_mm, 0, 1000, 0, 0, 12, "gear-lte: upper bound of y4 (D_max)"),
+    D("optimize", "tip_relief_amount_max_um", "um", opt_tip_amount_max_um, 0, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y3 (C_max; derived as y1's)"),
+    D("optimize", "tip_relief_length_min_mm", "mm", opt_tip_length_min_mm, 0, 1000, 0, 0, NAN,
+      "gear-lte: lower bound of y4 (D_min; derived as y2's)"),
+    D("optimize", "tip_relief_length_max_mm", "mm", opt_tip_length_max_mm, 0, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y4 (D_max; derived as y2's)"),
     D("optimize", "lead_relief_min_um", "um", opt_lead_amount_min_um, 0, 1000, 0, 0, 0,
-      "gear-lte: lower bound of y5 = y6, the lead relief at both face ends (S_min)"),
-    D("optimize", "lead_relief_max_um", "um", opt_lead_amount_max_um, 0, 1000, 0, 0, 60, "gear-lte: upper bound of y5 = y6 (S_max)"),
-    D("optimize", "lead_unmodified_length_min_mm", "mm", opt_lead_length_min_mm, 0, 5000, 0, 0, 10,
-      "gear-lte: lower bound of y7 (G_min)"),
-    D("optimize", "lead_unmodified_length_max_mm", "mm", opt_lead_length_max_mm, 0, 5000, 0, 0, 38,
-      "gear-lte: upper bound of y7 (G_max, below the face width of one half)"),
+      "gear-lte: lower bound of y5 and y6, the lead relief at the face ends (S_min)"),
+    D("optimize", "lead_relief_max_um", "um", opt_lead_amount_max_um, 0, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y5 and y6 (S_max; derived as y1's)"),
+    D("optimize", "lead_unmodified_length_min_mm", "mm", opt_lead_length_min_mm, 0, 5000, 0, 0, NAN,
+      "gear-lte: lower bound of y7 (G_min; derived: a quarter of the pinion face of one half)"),
+    D("optimize", "lead_unmodified_length_max_mm", "mm", opt_lead_length_max_mm, 0, 5000, 0, 0, NAN,
+      "gear-lte: upper bound of y7 (G_max; derived: 0.95 of the pinion face of one half)"),
+    D("optimize", "lead_unmodified_centre_min_mm", "mm", opt_lead_centre_min_mm, -2500, 2500, 0, 0, NAN,
+      "gear-lte: lower bound of y8 (derived: -1/4 of the pinion face of one half)"),
+    D("optimize", "lead_unmodified_centre_max_mm", "mm", opt_lead_centre_max_mm, -2500, 2500, 0, 0, NAN,
+      "gear-lte: upper bound of y8 (derived: 1/4 of the pinion face of one half)"),
+    D("optimize", "helix_slope_min_um", "um", opt_helix_slope_min_um, -1000, 1000, 0, 0, NAN,
+      "gear-lte: lower bound of y9 (derived: -(the static deflection plus twice the misalignment's mismatch across "
+      "the face))"),
+    D("optimize", "helix_slope_max_um", "um", opt_helix_slope_max_um, -1000, 1000, 0, 0, NAN,
+      "gear-lte: upper bound of y9 (derived: the static deflection plus twice the misalignment's mismatch)"),
 };
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)

@@ -17,6 +17,7 @@ static const cli_row rows[] = {
     { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_pictures,
       cli_workprec_report, NULL },
     { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_pictures, cli_continuation_report, NULL },
+    { GD_ANALYSIS_BASINS, NULL, cli_basins_after_run, cli_basins_pictures, cli_basins_report, run_basins },
 };
 
 static const cli_row *cli_row_for(int analysis)

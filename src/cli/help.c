@@ -9,7 +9,7 @@ static const cli_help commands[] = {
      "run the analysis of a case file and write its tables and pictures",
      "Reads CASE, applies the --set assignments in order, checks every key and runs the analysis "
      "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers, "
-     "work-precision or continuation. The results go to DIR: --out, else [output] directory, else "
+     "work-precision, continuation or basins. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
      "The run locks DIR (a second run into it is refused), writes its files into a stage beside "
      "it (.NAME.geardyn-stage in DIR's parent) and exchanges the stage and DIR in one step when "
@@ -18,11 +18,12 @@ static const cli_help commands[] = {
      "(SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
      "Pictures are drawn with gnuplot when it is installed.\n\n"
      "A sweep started by mpirun -n N geardyn run CASE (geardyn built with -Dmpi=enabled) spreads "
-     "its points over the N ranks; rank 0 writes the same files as a serial run.",
+     "its points over the N ranks, and basins over a parameter its values; rank 0 writes the same "
+     "files as a serial run.",
      {{"--set section.key=value", "override one key of the case (repeatable; -s is the short form)"},
       {"--out DIR", "the output directory"},
       {"--quiet", "print nothing but errors"},
-      {"--threads N", "OpenMP threads of a sweep, an optimisation or an optimiser comparison "
+      {"--threads N", "OpenMP threads of a sweep, basins, an optimisation or an optimiser comparison "
                       "(default: all cores); 1 or N threads give identical files"},
       {"--resume", "finish an interrupted sweep: only the points missing from DIR/.sweep.journal run"}}},
     {"check", "CASE [--set section.key=value ...]",
@@ -31,7 +32,10 @@ static const cli_help commands[] = {
      "'file line N' (written in CASE), '--set #N' (the Nth --set), 'default' (the schema's "
      "default) or 'derived' (computed from other keys, such as the masses from the geometry). "
      "Then the derived geometry (ISO 21771: radii, contact ratios, centre distance) and the model "
-     "scales (natural and mesh frequency, static mesh force and deflection). Nothing is written.",
+     "scales (natural and mesh frequency, static mesh force and deflection), then the modes of the "
+     "model linearised at its static operating point: natural frequencies, the pinion speeds of their "
+     "main and superharmonic (1/2, 1/3, 1/4) resonances, the share of each mesh and support in each "
+     "mode's strain energy. Nothing is written.",
      {{"--set section.key=value", "override one key of the case (repeatable)"}}},
     {"events", "FILE [--from S] [--to S] [--clearance NAME] [--kind KIND] [--recorded] [--csv OUT]",
      "summarise, filter and export an event log (events.csv of a response run)",

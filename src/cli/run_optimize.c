@@ -53,8 +53,9 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
         gd_gnuplot_printf(&s, "\n");
         cli_fig_end(&s, 0);
         if (o->gear) {
-            double m[3];
-            for (int j = 0; j < 3; j++)
+            int nl = o->paper ? 4 : 3;
+            double m[4];
+            for (int j = 0; j < nl; j++)
                 m[j] = o->lte[j].lte_mean_arcsec;
             cli_fig_begin(&s, fi, 1250, 680, "lte");
             gd_gnuplot_printf(&s, "set title 'Loaded transmission error over one mesh cycle, %.0f N m, each about its "
@@ -63,12 +64,18 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                               c->torque_nm);
             gd_gnuplot_printf(&s, "plot 'lte.csv' using 'phi1_deg':(column('lte_unmodified_arcsec') - %.10g) with linespoints pt 7 ps 0.6 lw 2 lc rgb '%s' "
                                   "title 'unmodified: %.4f arcsec peak-to-peak', "
-                                  "'' using 'phi1_deg':(column('lte_table2_arcsec') - %.10g) with linespoints pt 5 ps 0.6 lw 2 dt 2 lc rgb '%s' "
-                                  "title 'the paper''s modification: %.4f arcsec peak-to-peak', "
+                                  "'' using 'phi1_deg':(column('lte_case_arcsec') - %.10g) with linespoints pt 5 ps 0.6 lw 2 dt 2 lc rgb '%s' "
+                                  "title 'the case''s modification: %.4f arcsec peak-to-peak', "
                                   "'' using 'phi1_deg':(column('lte_optimum_arcsec') - %.10g) with linespoints pt 9 ps 0.7 lw 3 lc rgb '%s' "
-                                  "title 'optimum: %.4f arcsec peak-to-peak'\n",
+                                  "title 'optimum: %.4f arcsec peak-to-peak'",
                               m[0], cli_colour[0], o->lte[0].lte_pp_arcsec, m[1], cli_colour[1],
                               o->lte[1].lte_pp_arcsec, m[2], cli_colour[4], o->lte[2].lte_pp_arcsec);
+            if (o->paper)
+                gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_paper_table2_arcsec') - %.10g) with linespoints "
+                                      "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the paper''s Table 2: %.4f arcsec "
+                                      "peak-to-peak'",
+                                  m[3], cli_colour[2], o->lte[3].lte_pp_arcsec);
+            gd_gnuplot_printf(&s, "\n");
             cli_fig_end(&s, 0);
         }
     }
@@ -93,7 +100,9 @@ void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void 
     }
 }
 
-/* The progress report: the best run, its variables and for the gear the LTE of the three pairs. */
+/* The progress report: the best run, its variables and for the gear the LTE of the unmodified pair,
+ * the case's own modification and the optimum (and the paper's Table 2 for the paper's pair), the
+ * variables without effect, and whether the run had converged. */
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
 {
     const gd_optimize_outcome *o = result;
@@ -110,14 +119,27 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
     for (int i = 0; i < o->dim; i++) {
         const char *unit = "", *sym = o->names[i];
         if (o->gear)
-            gd_opt_gear_variable(i, &unit, &sym);
-        printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g\n", sym, o->names[i], b->y[i], unit, o->lower[i],
-               o->upper[i], o->gear ? "Table 2" : "minimiser", o->reference[i]);
+            gd_opt_gear_variable(o->vars.var[i], &unit, &sym);
+        printf("  %-4s %-28s %12.6g %-3s in [%g, %g]   %s %g", sym, o->names[i], b->y[i], unit, o->lower[i],
+               o->upper[i], o->gear ? "case" : "minimiser", o->reference[i]);
+        if (o->gear && o->paper)
+            printf(", Table 2 %g", o->table2[i]);
+        if (o->gear && o->no_effect[i][0])
+            printf("   (%s)", o->no_effect[i]);
+        printf("\n");
     }
-    if (o->gear)
-        printf("  LTE peak-to-peak: unmodified %.6g, Table 2 %.6g, optimum %.6g arcsec (%+.1f %% against the "
-               "unmodified pair; the paper: 4.194 -> 1.157, -72.41 %%)\n", o->lte[0].lte_pp_arcsec,
+    if (o->gear) {
+        printf("  LTE peak-to-peak: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec (%+.1f %% "
+               "against the unmodified pair, %+.1f %% against the case's)\n", o->lte[0].lte_pp_arcsec,
                o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
-               100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec);
+               100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec,
+               100 * (o->lte[2].lte_pp_arcsec - o->lte[1].lte_pp_arcsec) / o->lte[1].lte_pp_arcsec);
+        if (o->paper)
+            printf("  the paper's pair: its Table 2 gives %.6g arcsec here; the paper: 4.194 -> 1.157, -72.41 %%\n",
+                   o->lte[3].lte_pp_arcsec);
+    }
+    if (!o->converged)
+        printf("  not converged: the best value fell by %.3g %% over the last tenth of the evaluations (best at "
+               "evaluation %ld of %ld); more iterations may lower it\n", 100 * o->last_tenth_improvement, b->best_at,
+               b->evaluations);
 }
-

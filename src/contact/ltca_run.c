@@ -35,6 +35,8 @@ GD_API void gd_ltca_result_free(gd_ltca_result *r)
 
 /* ---- mesh-in impact (section 7) --------------------------------------------------------------- */
 
+#define TOUCH_TIE 1e-12 /* m: gaps closer than this touch together */
+
 typedef struct entry_eval {
     double s;          /* the pair's least rigid gap w_i - (G z)_i (m): > 0 open, < 0 it carries load */
     int imin;          /* the point where it is least (-1: the pair has no point in the window) */
@@ -63,6 +65,27 @@ static gd_status eval_entry(gd_ltca *w, double phi1, double torque, int half, in
         }
     }
     e->s = e->imin >= 0 ? smin : w->window; /* outside the window: clearly open */
+    if (e->imin < 0)
+        return GD_OK;
+    /* A line that touches along a stretch of the face at once (an aligned spur pair: every slice
+     * within a picometre, rounding) has no first point: the middle of the stretch stands for it,
+     * not its first slice, which sits on a face end and would read as a corner. */
+    int first = -1, last = -1;
+    for (int i = 0; i < w->n; i++) {
+        const gd_ltca_point *P = &w->pts[i];
+        if (P->half != half || P->pair != pair)
+            continue;
+        double gz = w->z[0] + (w->m > 1 ? P->normal[2] * w->z[1] : 0.0);
+        if (w->w[i] - gz <= smin + TOUCH_TIE) {
+            if (first < 0)
+                first = i;
+            last = i;
+        } else if (first >= 0) {
+            break; /* the stretch is contiguous; a second one elsewhere is not a tie of this one */
+        }
+    }
+    if (first >= 0 && e->imin >= first && e->imin <= last)
+        e->imin = first + (last - first) / 2;
     return GD_OK;
 }
 
@@ -533,6 +556,8 @@ GD_API void gd_ltca_excitation_free(gd_ltca_excitation *x)
     free(x->k[0]);
     free(x->k[1]);
     free(x->lte_arcsec);
+    free(x->lte_half_arcsec[0]);
+    free(x->lte_half_arcsec[1]);
     memset(x, 0, sizeof *x);
 }
 
@@ -554,7 +579,8 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     int ok = x->phi1 && x->lte_arcsec;
     for (int h = 0; h < r.halves && ok; h++) {
         x->k[h] = malloc(N * sizeof(double));
-        ok = x->k[h] != NULL;
+        x->lte_half_arcsec[h] = malloc(N * sizeof(double));
+        ok = x->k[h] != NULL && x->lte_half_arcsec[h] != NULL;
     }
     if (!ok) {
         gd_ltca_result_free(&r);
@@ -565,6 +591,7 @@ GD_API gd_status gd_ltca_excitation_compute(const gd_pair *pair, const gd_ltca_s
     memcpy(x->lte_arcsec, r.lte_arcsec, N * sizeof(double));
     for (int h = 0; h < r.halves; h++) {
         memcpy(x->k[h], r.stiffness[h], N * sizeof(double));
+        memcpy(x->lte_half_arcsec[h], r.lte_half_arcsec[h], N * sizeof(double));
         x->k_mean[h] = r.stiffness_mean[h];
         x->load_share[h] = r.load_share[h];
         x->impact[h] = r.impact[h];
@@ -643,6 +670,8 @@ static void key_stream(const gd_pair *p, const gd_ltca_settings *s, int npos, ke
     key_double(k, "modification.lead_relief_inner_um", p->lead_relief_inner_um);
     key_double(k, "modification.lead_relief_outer_um", p->lead_relief_outer_um);
     key_double(k, "modification.lead_unmodified_length_mm", p->lead_unmodified_length_mm);
+    key_double(k, "modification.lead_unmodified_centre_mm", p->lead_unmodified_centre_mm);
+    key_double(k, "modification.helix_slope_um", p->helix_slope_um);
     key_double(k, "misalignment.axis_in_plane_arcmin", p->axis_in_plane_arcmin);
     key_double(k, "misalignment.axis_cross_plane_arcmin", p->axis_cross_plane_arcmin);
     key_double(k, "misalignment.centre_distance_error_mm", p->centre_distance_error_mm);

@@ -20,7 +20,7 @@
  * object that later calls need (any other public function that reaches GSL either goes through one
  * of them or works on such an object): gd_geometry_compute, gd_tooth_init, gd_tooth_init_beam,
  * gd_contact_workspace_alloc, gd_contact_solve, gd_tca_create, gd_model_set_stiffness_table,
- * gd_model_static_state, gd_sim_create, gd_amplitude_spectrum, gd_opt_run, gd_opt_compare,
+ * gd_model_static_state, gd_modal_analyse, gd_sim_create, gd_amplitude_spectrum, gd_opt_run, gd_opt_compare,
  * gd_opt_testfn_init. tests/test_gsl_handler.c checks it. */
 #include "gsl_quiet.h"
 

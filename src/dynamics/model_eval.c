@@ -193,9 +193,9 @@ void gd_model_tangent_sc(const gd_model *m, double t, double s0, double c0, cons
         da[i] *= m->inv_mass[i];
 }
 
-GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+GD_API double gd_model_pulse_force(const gd_model *m, int j, double t, const gd_modes *md, int mode)
 {
-    return pulse_force(m, j, t, md);
+    return pulse_force(m, j, t, md, mode);
 }
 
 GD_API int gd_model_pulse_after(const gd_model *m, int j, double t)
@@ -245,7 +245,7 @@ void gd_model_rhs_sc(const gd_model *m, double t, double s0, double c0, const do
         int mode = md->from_state ? gd_model_mode_of(m, c, x) : md->mode[c];
         double f = clear_force(m, c, x, xd, kfac, mode);
         if (cl->kind == GD_CLR_MESH)
-            f += pulse_force(m, cl->mesh, t, md);
+            f += pulse_force(m, cl->mesh, t, md, mode);
         for (int q = 0; q < cl->nw; q++)
             a[cl->widx[q]] -= cl->wval[q] * f;
     }
@@ -360,9 +360,9 @@ GD_API double gd_model_next_discontinuity(const gd_model *m, double t, const gd_
         const gd_mesh_excitation *x = &m->mesh[j];
         if (x->kind == GD_STIFF_RECTANGULAR)
             best = fmin(best, next_edge(m, j, t, 0.0, x->rect_frac));
-        if (x->imp_width > 0) {
-            double e0 = x->imp_phase / (2.0 * M_PI);
-            best = fmin(best, next_edge(m, j, t, e0 - floor(e0), e0 - floor(e0) + x->imp_width / (2.0 * M_PI)));
+        for (int k = 0; k < x->nimp; k++) {
+            double e0 = x->imp_phase[k] / (2.0 * M_PI);
+            best = fmin(best, next_edge(m, j, t, e0 - floor(e0), e0 - floor(e0) + x->imp_width[k] / (2.0 * M_PI)));
         }
     }
     return best;
@@ -548,20 +548,71 @@ GD_API gd_status gd_model_set_stiffness_table(gd_model *m, int j, const double *
     return GD_OK;
 }
 
+GD_API gd_status gd_model_add_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
+                                     gd_error *err)
+{
+    if (j < 0 || j >= m->nmesh)
+        return gd_error_set(err, GD_ERR_INTERNAL, "impact for mesh %d of %d", j, m->nmesh);
+    gd_mesh_excitation *x = &m->mesh[j];
+    if (x->nimp >= GD_MAX_PULSE)
+        return gd_error_set(err, GD_ERR_INTERNAL, "a pulse more than %d on mesh %d", GD_MAX_PULSE, j);
+    double width = duration_s * m->omega_n * m->Omega; /* seconds -> radians of mesh phase */
+    if (width > 2.0 * M_PI && width < 2.0 * M_PI * (1.0 + 1e-12)) /* a whole period, up to its rounding */
+        width = 2.0 * M_PI;
+    if (!(width >= 0) || width > 2.0 * M_PI || !isfinite(force_n))
+        return gd_error_set(err, GD_ERR_PHYSICS, "impact pulse of %g s at %g N: it must last at most a mesh period "
+                            "(%g s)", duration_s, force_n, 2.0 * M_PI / (m->omega_n * m->Omega));
+    if (width == 0.0) /* no pulse */
+        return GD_OK;
+    int k = x->nimp++;
+    x->imp_force[k] = force_n / (m->k_ref * m->bc_m);
+    x->imp_phase[k] = phase_rad - 2.0 * M_PI * floor(phase_rad / (2.0 * M_PI));
+    x->imp_width[k] = width;
+    return GD_OK;
+}
+
+GD_API gd_status gd_model_set_error_table(gd_model *m, int j, const double *e_m, int n, gd_error *err)
+{
+    gd_gsl_quiet();
+    if (j < 0 || j >= m->nmesh)
+        return gd_error_set(err, GD_ERR_INTERNAL, "error table for mesh %d of %d", j, m->nmesh);
+    if (n < 2 || n % 2 || n > 2 * GD_MESH_HARMONICS)
+        return gd_error_set(err, GD_ERR_INPUT, "error table of %d samples (valid: even, 2 to %d)", n,
+                            2 * GD_MESH_HARMONICS);
+    double buf[2 * GD_MESH_HARMONICS];
+    for (int i = 0; i < n; i++) {
+        if (!isfinite(e_m[i]))
+            return gd_error_set(err, GD_ERR_PHYSICS, "error table of mesh %d: sample %d is %g m (valid: finite)", j, i,
+                                e_m[i]);
+        buf[i] = e_m[i] / m->bc_m;
+    }
+    gsl_fft_real_wavetable *tab = gsl_fft_real_wavetable_alloc((size_t)n);
+    gsl_fft_real_workspace *ws = gsl_fft_real_workspace_alloc((size_t)n);
+    int rc = (tab && ws) ? gsl_fft_real_transform(buf, 1, (size_t)n, tab, ws) : GSL_ENOMEM;
+    gsl_fft_real_wavetable_free(tab);
+    gsl_fft_real_workspace_free(ws);
+    if (rc != GSL_SUCCESS)
+        return gd_error_set(err, GD_ERR_GSL, "error table: gsl_fft_real_transform: %s", gsl_strerror(rc));
+    gd_mesh_excitation *x = &m->mesh[j];
+    x->ne = n / 2;
+    for (int h = 1; h <= n / 2; h++) { /* the mean (buf[0]) is left out */
+        double re = 2 * h == n ? buf[n - 1] : buf[2 * h - 1], im = 2 * h == n ? 0.0 : buf[2 * h];
+        double scale = 2 * h == n ? 1.0 / n : 2.0 / n;
+        x->ea[h - 1] = scale * sqrt(re * re + im * im);
+        x->ephi[h - 1] = atan2(im, re);
+        x->cephi[h - 1] = cos(x->ephi[h - 1]);
+        x->sephi[h - 1] = sin(x->ephi[h - 1]);
+    }
+    return GD_OK;
+}
+
 GD_API gd_status gd_model_set_impact(gd_model *m, int j, double force_n, double phase_rad, double duration_s,
                                      gd_error *err)
 {
     if (j < 0 || j >= m->nmesh)
         return gd_error_set(err, GD_ERR_INTERNAL, "impact for mesh %d of %d", j, m->nmesh);
-    double width = duration_s * m->omega_n * m->Omega; /* seconds -> radians of mesh phase */
-    if (!(width >= 0) || width >= 2.0 * M_PI || !isfinite(force_n))
-        return gd_error_set(err, GD_ERR_PHYSICS, "impact pulse of %g s at %g N: it must last less than a mesh period "
-                            "(%g s)", duration_s, force_n, 2.0 * M_PI / (m->omega_n * m->Omega));
-    gd_mesh_excitation *x = &m->mesh[j];
-    x->imp_force = force_n / (m->k_ref * m->bc_m) * (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
-    x->imp_phase = phase_rad - 2.0 * M_PI * floor(phase_rad / (2.0 * M_PI));
-    x->imp_width = width;
-    return GD_OK;
+    m->mesh[j].nimp = 0;
+    return gd_model_add_impact(m, j, force_n, phase_rad, duration_s, err);
 }
 
 /* d/dt of the stiffness factor of mesh j: the harmonic series differentiated term by term

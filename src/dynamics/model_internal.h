@@ -65,24 +65,52 @@ static inline __attribute__((always_inline)) void mesh_eval_sc(const gd_model *m
         *ed = x->e_r * m->Omega * ce;
     if (edd)
         *edd = -x->e_r * m->Omega * m->Omega * se;
+    if (x->ne > 0) { /* a tabulated error: sum ea_h cos(h th + ephi_h) and its rates */
+        double sk = s1, ck = c1, v = 0, v1 = 0, v2 = 0;
+        for (int h = 0; h < x->ne; h++) {
+            double co = ck * x->cephi[h] - sk * x->sephi[h], si = sk * x->cephi[h] + ck * x->sephi[h];
+            double hh = (double)(h + 1);
+            v += x->ea[h] * co;
+            v1 -= hh * x->ea[h] * si;
+            v2 -= hh * hh * x->ea[h] * co;
+            double sn = sk * c1 + ck * s1, cn = ck * c1 - sk * s1;
+            sk = sn;
+            ck = cn;
+        }
+        *e += v;
+        if (ed)
+            *ed += m->Omega * v1;
+        if (edd)
+            *edd += m->Omega * m->Omega * v2;
+    }
 }
 
+/* The pulses of x in their phases at mesh phase th (bit k: pulse k) */
 static inline int pulse_at(const gd_mesh_excitation *x, double th)
 {
-    if (!(x->imp_width > 0))
-        return 0;
-    double f = (th - x->imp_phase) / (2.0 * M_PI);
-    f -= floor(f);
-    return f * 2.0 * M_PI < x->imp_width;
+    int on = 0;
+    for (int k = 0; k < x->nimp; k++) {
+        double f = (th - x->imp_phase[k]) / (2.0 * M_PI);
+        f -= floor(f);
+        on |= (f * 2.0 * M_PI < x->imp_width[k]) << k;
+    }
+    return on;
 }
 
-static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md)
+/* The force of the pulses of mesh j at t with the mesh's clearance in mode `mode`: a pulse acts in its
+ * phases (held in md, or from t when the modes follow the state) and, when it is gated by contact,
+ * only while the drive flanks touch (mode +1). */
+static inline double pulse_force(const gd_model *m, int j, double t, const gd_modes *md, int mode)
 {
     const gd_mesh_excitation *x = &m->mesh[j];
-    if (!(x->imp_width > 0))
+    if (x->nimp == 0 || (x->imp_contact_only && mode <= 0))
         return 0.0;
     int on = md->from_state ? pulse_at(x, mesh_phase(m, j, t)) : md->pulse_on[j];
-    return on ? x->imp_force : 0.0;
+    double f = 0.0;
+    for (int k = 0; k < x->nimp; k++)
+        if (on >> k & 1)
+            f += x->imp_force[k];
+    return f;
 }
 
 

@@ -27,6 +27,12 @@ void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m)
         q->em = x->e_m;
         q->P = x->e_r * cos(psi);
         q->Q = x->e_r * sin(psi);
+        q->ne = x->ne;
+        for (int h = 0; h < q->ne; h++) { /* ea_h cos(h (Omega t + phase) + ephi_h) */
+            double ang = (h + 1) * x->phase + x->ephi[h];
+            q->EA[h] = x->ea[h] * cos(ang);
+            q->EB[h] = x->ea[h] * sin(ang);
+        }
     }
 }
 
@@ -54,6 +60,19 @@ static inline __attribute__((always_inline)) void excitation(const gd_plan_excit
         *e = q->em + (q->P * s0 + q->Q * c0);
     if (ed)
         *ed = m->Omega * (q->P * c0 - q->Q * s0);
+    if (q->ne > 0) {
+        double sk = s0, ck = c0, v = 0, v1 = 0;
+        for (int h = 0; h < q->ne; h++) {
+            v += q->EA[h] * ck - q->EB[h] * sk;
+            v1 -= (double)(h + 1) * (q->EA[h] * sk + q->EB[h] * ck);
+            double sn = sk * c0 + ck * s0, cn = ck * c0 - sk * s0;
+            sk = sn, ck = cn;
+        }
+        if (e)
+            *e += v;
+        if (ed)
+            *ed += m->Omega * v1;
+    }
 }
 
 void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, const gd_plan_excitation *ex)
@@ -84,7 +103,11 @@ void gd_rhs_plan_build(gd_rhs_plan *p, const gd_model *m, const gd_modes *md, co
                 pm->u[cl->widx[q]] += cl->wval[q] * m->inv_mass[cl->widx[q]];
             }
             pm->ks = ks, pm->hs = hs, pm->cs = cs;
-            pm->imp_force = m->mesh[cl->mesh].imp_width > 0 ? m->mesh[cl->mesh].imp_force : 0.0;
+            /* the pulses, unless they act only in drive-side contact and the mode is another */
+            const gd_mesh_excitation *x = &m->mesh[cl->mesh];
+            pm->nimp = x->imp_contact_only && mode <= 0 ? 0 : x->nimp;
+            for (int k = 0; k < pm->nimp; k++)
+                pm->imp_force[k] = x->imp_force[k];
             continue;
         }
         /* a bearing: the force k (x - hs) + c xdot along w is linear in the state */
@@ -195,8 +218,13 @@ static inline __attribute__((always_inline)) void eval(const gd_rhs_plan *p, con
             double e, ed;
             excitation(q, m, pm->j, md, s0, c0, pm->ks != 0.0 ? &kf : NULL, &e, &ed);
             f = pm->ks * kf * (x - e - pm->hs) + pm->cs * (xd - ed);
-            if (pm->imp_force != 0.0 && md->pulse_on[pm->j]) /* pulse_force with the modes held */
-                f += pm->imp_force;
+            if (pm->nimp > 0 && md->pulse_on[pm->j]) { /* pulse_force with the modes held */
+                int on = md->pulse_on[pm->j];
+                if (on & 1)
+                    f += pm->imp_force[0];
+                if (pm->nimp > 1 && (on & 2))
+                    f += pm->imp_force[1];
+            }
         }
         v4 fv = {f, f, f, f};
 #pragma GCC unroll 4

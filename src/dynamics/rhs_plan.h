@@ -32,6 +32,8 @@ typedef struct gd_plan_excitation {
     int kind, nh;
     double mean, A[GD_MESH_HARMONICS], B[GD_MESH_HARMONICS];
     double em, P, Q;
+    int ne;                  /* a tabulated error: + sum EA_h cos(h Omega t) - EB_h sin(h Omega t) */
+    double EA[GD_MESH_HARMONICS], EB[GD_MESH_HARMONICS];
 } gd_plan_excitation;
 
 void gd_plan_excitation_build(gd_plan_excitation *ex, const gd_model *m);
@@ -41,7 +43,8 @@ typedef struct gd_plan_mesh {
     double w[GD_PLAN_W];      /* weights of its coordinate x = w . q - e(t) over the degrees of freedom */
     double u[GD_PLAN_W];      /* w / mass: how its force moves the accelerations */
     double ks, hs, cs;        /* stiffness (0 when open), held half gap with the side's sign, damping */
-    double imp_force;         /* the mesh-in impact pulse's force while it acts (0: no pulse) */
+    int nimp;                 /* pulses that can act in the held mode (0: none, or gated off by the mode) */
+    double imp_force[GD_MAX_PULSE]; /* each mesh-in impact pulse's force while it is in its phases */
 } gd_plan_mesh;
 
 typedef struct gd_rhs_plan gd_rhs_plan;

@@ -38,7 +38,8 @@ GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g
     double y1 = pair->root_relief_amount_um * 1e-6, y2 = pair->root_relief_length_mm * 1e-3;
     double y3 = pair->tip_relief_amount_um * 1e-6, y4 = pair->tip_relief_length_mm * 1e-3;
     double y5 = pair->lead_relief_inner_um * 1e-6, y6 = pair->lead_relief_outer_um * 1e-6;
-    double y7 = pair->lead_unmodified_length_mm * 1e-3;
+    double y7 = pair->lead_unmodified_length_mm * 1e-3, y8 = pair->lead_unmodified_centre_mm * 1e-3;
+    double y9 = pair->helix_slope_um * 1e-6;
     double active = g->rho_a[0] - g->rho_sap[0];
     double b1 = g->b[0];
     if (y1 > 0 && y2 <= 0) {
@@ -62,6 +63,12 @@ GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g
         return gd_error_set(err, GD_ERR_INPUT, "%.4g mm is longer than the pinion face of one half %.4g mm (valid: 0 "
                             "to %.4g mm)", y7 * 1e3, b1 * 1e3, b1 * 1e3);
     }
+    if (fabs(y8) + 0.5 * y7 > 0.5 * b1 * (1 + 1e-12)) {
+        *bad_key = "lead_unmodified_centre_mm";
+        return gd_error_set(err, GD_ERR_INPUT, "%.4g mm moves the unmodified lead band of %.4g mm off the %.4g mm "
+                            "face (valid: |y8| + y7/2 at most half the face, |y8| <= %.4g mm)", y8 * 1e3, y7 * 1e3,
+                            b1 * 1e3, 0.5 * (b1 - y7) * 1e3);
+    }
     if ((y5 > 0 || y6 > 0) && y7 >= b1 * (1 - 1e-12)) {
         *bad_key = "lead_unmodified_length_mm";
         return gd_error_set(err, GD_ERR_INPUT, "%.4g mm leaves no room on the %.4g mm face for the lead relief of "
@@ -71,10 +78,11 @@ GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g
     double cos_bb = cos(g->beta_b), eta = g->eta_b[0], rb = g->rb[0];
     double uref = tan(g->alpha_t), ua = g->rho_a[0] / rb, uf = fmax(g->rho_form[0], 0) / rb;
     double lead = fmax(y5, y6) / feed_projection(cos_bb, eta, uref);
-    double tip_total = y3 + lead * feed_projection(cos_bb, eta, ua);
+    double tip_total = y3 + lead * feed_projection(cos_bb, eta, ua) + 0.5 * fabs(y9);
     double s_tip = g->tip_thickness_n[0];
     if (tip_total >= 0.5 * s_tip) {
-        *bad_key = y3 > 0 ? "tip_relief_amount_um" : y5 >= y6 ? "lead_relief_inner_um" : "lead_relief_outer_um";
+        *bad_key = y3 > 0 ? "tip_relief_amount_um" : y5 > 0 || y6 > 0 ? (y5 >= y6 ? "lead_relief_inner_um" :
+                   "lead_relief_outer_um") : "helix_slope_um";
         return gd_error_set(err, GD_ERR_INPUT, "the relief at the tip corner (%.4g um) takes half the normal tip "
                             "thickness %.4g mm (valid: tip + lead relief below %.4g um)", tip_total * 1e6, s_tip * 1e3,
                             0.5 * s_tip * 1e6);
@@ -82,9 +90,10 @@ GD_API gd_status gd_modification_check(const gd_pair *pair, const gd_geometry *g
     double rho_c = g->rho_sap[0] + y2;
     double root_form = y2 > 0 ? y1 * pow((rho_c - fmax(g->rho_form[0], 0)) / y2, 2) : 0;
     double s_root = thickness_n(g, 0, g->r_form[0]);
-    double root_total = root_form + lead * feed_projection(cos_bb, eta, uf);
+    double root_total = root_form + lead * feed_projection(cos_bb, eta, uf) + 0.5 * fabs(y9);
     if (root_total >= 0.5 * s_root) {
-        *bad_key = y1 > 0 ? "root_relief_amount_um" : y5 >= y6 ? "lead_relief_inner_um" : "lead_relief_outer_um";
+        *bad_key = y1 > 0 ? "root_relief_amount_um" : y5 > 0 || y6 > 0 ? (y5 >= y6 ? "lead_relief_inner_um" :
+                   "lead_relief_outer_um") : "helix_slope_um";
         return gd_error_set(err, GD_ERR_INPUT, "the relief at the root corner (%.4g um at the form circle) takes half "
                             "the normal tooth thickness %.4g mm there (valid: a smaller amount or a shorter length)",
                             root_total * 1e6, s_root * 1e3);
@@ -123,7 +132,8 @@ GD_API gd_status gd_flank_pinion(const gd_pair *pair, const gd_geometry *g, int 
     double y1 = pair->root_relief_amount_um * 1e-6, y2 = pair->root_relief_length_mm * 1e-3;
     double y3 = pair->tip_relief_amount_um * 1e-6, y4 = pair->tip_relief_length_mm * 1e-3;
     double y5 = pair->lead_relief_inner_um * 1e-6, y6 = pair->lead_relief_outer_um * 1e-6;
-    double y7 = pair->lead_unmodified_length_mm * 1e-3;
+    double y7 = pair->lead_unmodified_length_mm * 1e-3, y8 = pair->lead_unmodified_centre_mm * 1e-3;
+    double y9 = pair->helix_slope_um * 1e-6;
     if (y1 > 0) {
         f->root_amount = y1;
         f->root_len = y2;
@@ -135,20 +145,34 @@ GD_API gd_status gd_flank_pinion(const gd_pair *pair, const gd_geometry *g, int 
         f->rho_g = g->rho_a[0] - y4;
     }
     /* lead: y5 at the inner end (toward the groove: +z of the left half, -z of the right half;
-     * -z of a single helical or spur pair), y6 at the outer end */
-    double lo_amount = y6, hi_amount = y5;
+     * -z of a single helical or spur pair), y6 at the outer end; s6 the side (+1: +z) of the y6 end */
+    double lo_amount = y6, hi_amount = y5, s6 = -1.0;
     if (pair->arrangement != GD_ARR_HERRINGBONE || half == 1) {
         lo_amount = y5;
         hi_amount = y6;
+        s6 = 1.0;
     }
-    f->z_lo = -0.5 * y7;
-    f->z_hi = 0.5 * y7;
-    double zone = 0.5 * (g->b[0] - y7);
+    /* the unmodified band of length y7, its middle y8 toward the y6 end */
+    f->z_lo = s6 * y8 - 0.5 * y7;
+    f->z_hi = s6 * y8 + 0.5 * y7;
+    double zone_lo = 0.5 * (g->b[0] - y7), zone_hi = zone_lo; /* a centred band: as written, to the bit */
+    if (y8 != 0.0) {
+        zone_lo = f->z_lo - f->z_min;
+        zone_hi = f->z_max - f->z_hi;
+    }
     double proj = feed_projection(f->cos_bb, f->eta_b, f->u_ref);
-    if (lo_amount > 0 && zone > 0)
-        f->a_lo = lo_amount / proj / (zone * zone);
-    if (hi_amount > 0 && zone > 0)
-        f->a_hi = hi_amount / proj / (zone * zone);
+    if (lo_amount > 0 && zone_lo > 0)
+        f->a_lo = lo_amount / proj / (zone_lo * zone_lo);
+    if (hi_amount > 0 && zone_hi > 0)
+        f->a_hi = hi_amount / proj / (zone_hi * zone_hi);
+    /* helix slope y9: the flank turned about the axis by theta(z) = dk z, which moves an involute
+     * helicoid normal to itself by r_b cos(beta_b) theta everywhere on the profile (forward, into
+     * the mating flank, for theta > 0: the drive flank faces +theta); material removed y9 z/b at
+     * the y6 end (z toward it) is theta = -s6 y9 z / (b r_b cos(beta_b)) */
+    if (y9 != 0.0) {
+        f->dk = -s6 * y9 / (g->b[0] * f->rb * f->cos_bb);
+        f->k += f->dk;
+    }
     f->modified = f->root_amount > 0 || f->tip_amount > 0 || f->a_lo > 0 || f->a_hi > 0;
     return GD_OK;
 }

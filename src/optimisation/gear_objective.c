@@ -1,5 +1,6 @@
 /* The gear problem of the paper's section 4 (Eq. 13): the peak-to-peak loaded transmission error
- * of the modified pair (LTCA, Eq. 12) over x = [y1, y2, y3, y4, y5, y7], y6 = y5
+ * of the modified pair (LTCA, Eq. 12) over the paper's x = [y1, y2, y3, y4, y5, y7], y6 = y5, or
+ * any of y1 .. y9 (asymmetric lead relief y6, y8 and the helix slope y9 besides the paper's)
  * (docs/optimisation.md section 2).
  *
  * One evaluation = one LTCA workspace for the modified flank (gd_ltca_create: the TCA workspace
@@ -13,66 +14,141 @@
 #include "geardyn/gd_ltca.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define ARCSEC (180.0 * 3600.0 / M_PI)
 
-/* What one evaluation needs: the pair it modifies and the LTCA settings. */
+/* What one evaluation needs: the pair it modifies (the case's, with the case's own modification
+ * in the variables not optimised), the variables and the LTCA settings. */
 typedef struct gear_state {
     gd_pair pair;
+    gd_opt_gear_vars vars;
     gd_ltca_settings set;
 } gear_state;
 
+#define NCONS 3 /* at most: y2 + y4 <= the active profile; the unmodified lead band on the face (two rows) */
+
 struct gd_opt_gear {
     gear_state s;
-    double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
-    double A[GD_OPT_GEAR_DIM], b;
+    double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
+    double A[NCONS * GD_OPT_GEAR_NVARS], b[NCONS];
+    int ncons;
     double active_mm;
 };
 
-static const char *const var_key[GD_OPT_GEAR_DIM] = {"root_relief_amount_um", "root_relief_length_mm",
-                                                    "tip_relief_amount_um", "tip_relief_length_mm",
-                                                    "lead_relief_inner_um", "lead_unmodified_length_mm"};
-static const char *const var_unit[GD_OPT_GEAR_DIM] = {"um", "mm", "um", "mm", "um", "mm"};
-static const char *const var_symbol[GD_OPT_GEAR_DIM] = {"y1", "y2", "y3", "y4", "y5", "y7"};
+static const char *const var_key[GD_OPT_GEAR_NVARS] = {
+    "root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um", "tip_relief_length_mm",
+    "lead_relief_inner_um", "lead_relief_outer_um", "lead_unmodified_length_mm", "lead_unmodified_centre_mm",
+    "helix_slope_um"};
+static const char *const var_unit[GD_OPT_GEAR_NVARS] = {"um", "mm", "um", "mm", "um", "um", "mm", "mm", "um"};
+static const char *const var_symbol[GD_OPT_GEAR_NVARS] = {"y1", "y2", "y3", "y4", "y5", "y6", "y7", "y8", "y9"};
 
-GD_API const char *gd_opt_gear_variable(int i, const char **unit, const char **symbol)
+GD_API const char *gd_opt_gear_variable(int id, const char **unit, const char **symbol)
 {
-    if (i < 0 || i >= GD_OPT_GEAR_DIM)
+    if (id < 0 || id >= GD_OPT_GEAR_NVARS)
         return NULL;
     if (unit)
-        *unit = var_unit[i];
+        *unit = var_unit[id];
     if (symbol)
-        *symbol = var_symbol[i];
-    return var_key[i];
+        *symbol = var_symbol[id];
+    return var_key[id];
 }
 
-GD_API void gd_opt_gear_apply(gd_pair *pair, const double *x)
+GD_API void gd_opt_gear_vars_paper(gd_opt_gear_vars *v)
 {
-    pair->root_relief_amount_um = x[0];
-    pair->root_relief_length_mm = x[1];
-    pair->tip_relief_amount_um = x[2];
-    pair->tip_relief_length_mm = x[3];
-    pair->lead_relief_inner_um = x[4];
-    pair->lead_relief_outer_um = x[4];
-    pair->lead_unmodified_length_mm = x[5];
+    static const int paper[GD_OPT_GEAR_DIM] = {0, 1, 2, 3, 4, 6};
+    memset(v, 0, sizeof *v);
+    v->n = GD_OPT_GEAR_DIM;
+    memcpy(v->var, paper, sizeof paper);
 }
 
-GD_API void gd_opt_gear_from_pair(const gd_pair *pair, double *x)
+GD_API gd_status gd_opt_gear_vars_parse(const char *list, gd_opt_gear_vars *v, gd_error *err)
 {
-    x[0] = pair->root_relief_amount_um;
-    x[1] = pair->root_relief_length_mm;
-    x[2] = pair->tip_relief_amount_um;
-    x[3] = pair->tip_relief_length_mm;
-    x[4] = pair->lead_relief_inner_um;
-    x[5] = pair->lead_unmodified_length_mm;
+    memset(v, 0, sizeof *v);
+    int seen[GD_OPT_GEAR_NVARS] = {0};
+    const char *p = list;
+    while (*p) {
+        while (*p == ' ' || *p == '\t')
+            p++;
+        const char *e = p;
+        while (*e && *e != ',')
+            e++;
+        size_t len = (size_t)(e - p);
+        while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
+            len--;
+        int id = -1;
+        for (int k = 0; k < GD_OPT_GEAR_NVARS; k++)
+            if (strlen(var_symbol[k]) == len && strncmp(p, var_symbol[k], len) == 0)
+                id = k;
+        if (id < 0)
+            return gd_error_set(err, GD_ERR_INPUT, "unknown variable '%.*s' (valid: y1 .. y9, comma-separated, "
+                                "each at most once)", (int)(len < 40 ? len : 40), p);
+        if (seen[id]++)
+            return gd_error_set(err, GD_ERR_INPUT, "'%s' twice (valid: each variable at most once)", var_symbol[id]);
+        v->var[v->n++] = id;
+        if (!*e)
+            break;
+        p = e + 1;
+    }
+    if (v->n == 0)
+        return gd_error_set(err, GD_ERR_INPUT, "no variable (valid: y1 .. y9, comma-separated)");
+    return GD_OK;
 }
 
-GD_API void gd_opt_gear_table2(double *x)
+/* The [modification] field of variable id (0..8: y1..y9). */
+static double *var_field(gd_pair *p, int id)
 {
-    static const double t2[GD_OPT_GEAR_DIM] = {25, 1.5, 35, 2.5, 25, 35};
-    memcpy(x, t2, sizeof t2);
+    double *f[GD_OPT_GEAR_NVARS] = {&p->root_relief_amount_um, &p->root_relief_length_mm, &p->tip_relief_amount_um,
+                                    &p->tip_relief_length_mm, &p->lead_relief_inner_um, &p->lead_relief_outer_um,
+                                    &p->lead_unmodified_length_mm, &p->lead_unmodified_centre_mm, &p->helix_slope_um};
+    return f[id];
+}
+
+static int vars_index(const gd_opt_gear_vars *v, int id)
+{
+    for (int k = 0; k < v->n; k++)
+        if (v->var[k] == id)
+            return k;
+    return -1;
+}
+
+GD_API void gd_opt_gear_apply(const gd_opt_gear_vars *v, gd_pair *pair, const double *x)
+{
+    for (int k = 0; k < v->n; k++)
+        *var_field(pair, v->var[k]) = x[k];
+    int k5 = vars_index(v, 4);
+    if (k5 >= 0 && vars_index(v, 5) < 0) /* the paper's symmetric lead relief: y6 = y5 */
+        pair->lead_relief_outer_um = x[k5];
+}
+
+GD_API void gd_opt_gear_from_pair(const gd_opt_gear_vars *v, const gd_pair *pair, double *x)
+{
+    gd_pair p = *pair;
+    for (int k = 0; k < v->n; k++)
+        x[k] = *var_field(&p, v->var[k]);
+}
+
+GD_API void gd_opt_gear_table2(gd_pair *pair)
+{
+    pair->root_relief_amount_um = 25;
+    pair->root_relief_length_mm = 1.5;
+    pair->tip_relief_amount_um = 35;
+    pair->tip_relief_length_mm = 2.5;
+    pair->lead_relief_inner_um = 25;
+    pair->lead_relief_outer_um = 25;
+    pair->lead_unmodified_length_mm = 35;
+    pair->lead_unmodified_centre_mm = 0;
+    pair->helix_slope_um = 0;
+}
+
+GD_API int gd_opt_gear_is_paper_pair(const gd_pair *p)
+{
+    return p->arrangement == GD_ARR_HERRINGBONE && p->normal_module_mm == 5 && p->teeth_pinion == 30 &&
+           p->teeth_gear == 72 && p->helix_angle_deg == 33.27 && p->normal_pressure_angle_deg == 20 &&
+           p->profile_shift_pinion == 0 && p->profile_shift_gear == 0 && p->addendum_coefficient == 1 &&
+           p->dedendum_coefficient == 1.25 && p->face_width_pinion_mm == 40 && p->face_width_gear_mm == 44;
 }
 
 GD_API gd_status gd_opt_gear_lte_pp(const gd_pair *pair, const gd_ltca_settings *set, double *lte_pp, gd_error *err)
@@ -120,26 +196,38 @@ static gd_status state_alloc(void *user, void **state, gd_error *err)
 
 static void state_free(void *state) { free(state); }
 
+/* "y1..y5, y7 = 25 um, 1.5 mm, ..." of the point y, for messages */
+static void point_text(const gd_opt_gear_vars *v, const double *y, char *buf, size_t len)
+{
+    size_t n = 0;
+    for (int k = 0; k < v->n && n < len; k++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%s", k ? ", " : "", var_symbol[v->var[k]]);
+    for (int k = 0; k < v->n && n < len; k++)
+        n += (size_t)snprintf(buf + n, len - n, "%s%g %s", k ? ", " : " = ", y[k], var_unit[v->var[k]]);
+}
+
 static gd_status gear_eval(void *state, const double *y, double *f, gd_error *err)
 {
     gear_state *s = state;
-    gd_opt_gear_apply(&s->pair, y);
+    gd_opt_gear_apply(&s->vars, &s->pair, y);
     gd_status st = gd_opt_gear_lte_pp(&s->pair, &s->set, f, err);
-    if (st != GD_OK)
-        return gd_error_prefix(err, "gear-lte at y1..y5, y7 = %g um, %g mm, %g um, %g mm, %g um, %g mm", y[0], y[1],
-                               y[2], y[3], y[4], y[5]);
+    if (st != GD_OK) {
+        char at[512];
+        point_text(&s->vars, y, at, sizeof at);
+        return gd_error_prefix(err, "gear-lte at %s", at);
+    }
     return GD_OK;
 }
 
 GD_API void gd_opt_gear_problem(gd_opt_gear *g, gd_opt_problem *p)
 {
     memset(p, 0, sizeof *p);
-    p->dim = GD_OPT_GEAR_DIM;
+    p->dim = g->s.vars.n;
     p->lower = g->lower;
     p->upper = g->upper;
-    p->ncons = 1;
+    p->ncons = g->ncons;
     p->A = g->A;
-    p->b = &g->b;
+    p->b = g->b;
     p->eval = gear_eval;
     p->state_alloc = state_alloc;
     p->state_free = state_free;
@@ -148,82 +236,133 @@ GD_API void gd_opt_gear_problem(gd_opt_gear *g, gd_opt_problem *p)
 
 GD_API double gd_opt_gear_active_profile_mm(const gd_opt_gear *g) { return g->active_mm; }
 
+GD_API const gd_opt_gear_vars *gd_opt_gear_vars_of(const gd_opt_gear *g) { return &g->s.vars; }
+
 GD_API void gd_opt_gear_free(gd_opt_gear *g) { free(g); }
 
-GD_API void gd_opt_gear_bounds(const gd_case *c, double lo[6], double hi[6])
+GD_API void gd_opt_gear_bounds(const gd_case *c, const gd_opt_gear_vars *v, double *lo, double *hi)
 {
-    lo[0] = c->opt_root_amount_min_um;
-    hi[0] = c->opt_root_amount_max_um;
-    lo[1] = c->opt_root_length_min_mm;
-    hi[1] = c->opt_root_length_max_mm;
-    lo[2] = c->opt_tip_amount_min_um;
-    hi[2] = c->opt_tip_amount_max_um;
-    lo[3] = c->opt_tip_length_min_mm;
-    hi[3] = c->opt_tip_length_max_mm;
-    lo[4] = c->opt_lead_amount_min_um;
-    hi[4] = c->opt_lead_amount_max_um;
-    lo[5] = c->opt_lead_length_min_mm;
-    hi[5] = c->opt_lead_length_max_mm;
+    const double L[GD_OPT_GEAR_NVARS] = {c->opt_root_amount_min_um, c->opt_root_length_min_mm,
+                                         c->opt_tip_amount_min_um, c->opt_tip_length_min_mm,
+                                         c->opt_lead_amount_min_um, c->opt_lead_amount_min_um,
+                                         c->opt_lead_length_min_mm, c->opt_lead_centre_min_mm,
+                                         c->opt_helix_slope_min_um};
+    const double H[GD_OPT_GEAR_NVARS] = {c->opt_root_amount_max_um, c->opt_root_length_max_mm,
+                                         c->opt_tip_amount_max_um, c->opt_tip_length_max_mm,
+                                         c->opt_lead_amount_max_um, c->opt_lead_amount_max_um,
+                                         c->opt_lead_length_max_mm, c->opt_lead_centre_max_mm,
+                                         c->opt_helix_slope_max_um};
+    for (int k = 0; k < v->n; k++) {
+        lo[k] = L[v->var[k]];
+        hi[k] = H[v->var[k]];
+    }
 }
 
-int opt_gear_box(const gd_pair *pair, const double lower[6], const double upper[6], double *active_mm,
-                 const char **bad_key, double *xbad, gd_error *err)
+/* The linear constraints A y <= b of the variables v, the modification not optimised taken from
+ * the pair (moved to the right side): y2 + y4 <= the active profile (when y2 or y4 is a variable);
+ * y7/2 + y8 <= b/2 and y7/2 - y8 <= b/2, the unmodified lead band on the face (when y8 is a
+ * variable or the pair's y8 is not 0, and y7 or y8 is a variable). Returns the rows. */
+static int gear_constraints(const gd_opt_gear_vars *v, const gd_pair *pair, double active_mm, double face_mm,
+                            double *A, double *b)
+{
+    double coef[NCONS][GD_OPT_GEAR_NVARS] = {{0}}, rhs[NCONS] = {active_mm, 0.5 * face_mm, 0.5 * face_mm};
+    coef[0][1] = coef[0][3] = 1.0;
+    coef[1][6] = 0.5;
+    coef[1][7] = 1.0;
+    coef[2][6] = 0.5;
+    coef[2][7] = -1.0;
+    int band = vars_index(v, 7) >= 0 || pair->lead_unmodified_centre_mm != 0.0;
+    gd_pair p = *pair;
+    int n = 0;
+    for (int r = 0; r < NCONS; r++) {
+        if (r > 0 && !band)
+            break;
+        int any = 0;
+        double rr = rhs[r];
+        for (int id = 0; id < GD_OPT_GEAR_NVARS; id++) {
+            if (coef[r][id] == 0.0)
+                continue;
+            if (vars_index(v, id) >= 0)
+                any = 1;
+            else
+                rr -= coef[r][id] * *var_field(&p, id);
+        }
+        if (!any)
+            continue;
+        for (int k = 0; k < v->n; k++)
+            A[n * v->n + k] = coef[r][v->var[k]];
+        b[n++] = rr;
+    }
+    return n;
+}
+
+int opt_gear_box(const gd_pair *pair, const gd_opt_gear_vars *v, const double *lower, const double *upper,
+                 double *active_mm, const char **bad_key, double *xbad, gd_error *err)
 {
     gd_geometry g;
     if (gd_geometry_compute(pair, &g, err) != GD_OK)
         return -2;
     *active_mm = (g.rho_a[0] - g.rho_sap[0]) * 1e3;
-    double A[GD_OPT_GEAR_DIM] = {0, 1, 0, 1, 0, 0}, b = *active_mm;
+    double A[NCONS * GD_OPT_GEAR_NVARS], b[NCONS];
     gd_opt_problem p = {0};
-    p.dim = GD_OPT_GEAR_DIM;
+    p.dim = v->n;
     p.lower = lower;
     p.upper = upper;
-    p.ncons = 1;
+    p.ncons = gear_constraints(v, pair, *active_mm, g.b[0] * 1e3, A, b);
     p.A = A;
-    p.b = &b;
+    p.b = b;
     p.eval = gear_eval;
-    double anchor[GD_OPT_GEAR_DIM];
+    double anchor[GD_OPT_GEAR_NVARS];
     if (gd_opt_problem_check(&p, anchor, err) != GD_OK)
         return -3;
     gd_pair t = *pair;
-    for (int corner = 0; corner < 1 << GD_OPT_GEAR_DIM; corner++) {
-        double y[GD_OPT_GEAR_DIM];
-        for (int i = 0; i < GD_OPT_GEAR_DIM; i++)
+    for (int corner = 0; corner < 1 << v->n; corner++) {
+        double y[GD_OPT_GEAR_NVARS];
+        for (int i = 0; i < v->n; i++)
             y[i] = corner >> i & 1 ? upper[i] : lower[i];
         gd_opt_repair(&p, anchor, y, y);
-        gd_opt_gear_apply(&t, y);
+        gd_opt_gear_apply(v, &t, y);
         if (gd_modification_check(&t, &g, bad_key, err) != GD_OK) {
-            memcpy(xbad, y, sizeof y);
+            memcpy(xbad, y, sizeof(double) * (size_t)v->n);
             return corner;
         }
     }
     return -1;
 }
 
-GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const double lower[6],
-                                    const double upper[6], gd_opt_gear **out, gd_error *err)
+GD_API gd_status gd_opt_gear_create(const gd_pair *pair, const gd_ltca_settings *set, const gd_opt_gear_vars *v,
+                                    const double *lower, const double *upper, gd_opt_gear **out, gd_error *err)
 {
     *out = NULL;
+    if (v->n < 1 || v->n > GD_OPT_GEAR_NVARS)
+        return gd_error_set(err, GD_ERR_INPUT, "gear-lte: %d variables (valid: 1 to %d)", v->n, GD_OPT_GEAR_NVARS);
     gd_opt_gear *g = calloc(1, sizeof *g);
     if (!g)
         return gd_error_set(err, GD_ERR_NOMEM, "gear-lte: out of memory");
     g->s.pair = *pair;
+    g->s.vars = *v;
     g->s.set = *set;
-    memcpy(g->lower, lower, sizeof g->lower);
-    memcpy(g->upper, upper, sizeof g->upper);
+    memcpy(g->lower, lower, sizeof(double) * (size_t)v->n);
+    memcpy(g->upper, upper, sizeof(double) * (size_t)v->n);
     const char *bad = NULL;
-    double xb[GD_OPT_GEAR_DIM];
-    int corner = opt_gear_box(pair, g->lower, g->upper, &g->active_mm, &bad, xb, err);
+    double xb[GD_OPT_GEAR_NVARS];
+    int corner = opt_gear_box(pair, v, g->lower, g->upper, &g->active_mm, &bad, xb, err);
     if (corner != -1) {
         free(g);
-        if (corner >= 0)
+        if (corner >= 0) {
+            char at[512];
+            point_text(v, xb, at, sizeof at);
             return gd_error_prefix(err, "gear-lte: the box of [optimize] holds a modification that does not fit "
-                                   "(y1..y5, y7 = %g, %g, %g, %g, %g, %g): modification.%s", xb[0], xb[1], xb[2], xb[3],
-                                   xb[4], xb[5], bad ? bad : "?");
+                                   "(%s): modification.%s", at, bad ? bad : "?");
+        }
         return gd_error_prefix(err, "gear-lte");
     }
-    g->A[1] = g->A[3] = 1.0;
-    g->b = g->active_mm;
+    gd_geometry geo;
+    if (gd_geometry_compute(pair, &geo, err) != GD_OK) {
+        free(g);
+        return gd_error_prefix(err, "gear-lte");
+    }
+    g->ncons = gear_constraints(v, pair, g->active_mm, geo.b[0] * 1e3, g->A, g->b);
     *out = g;
     return GD_OK;
 }

@@ -45,12 +45,13 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
 gd_status opt_nlopt(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 
-/* The gear box [lower, upper] on the pair (gear_objective.c): the constraint's right side (the
- * active profile), and the first corner of the box (bit i: variable i at its upper bound) that
- * fails gd_modification_check once repaired, with the failing [modification] key and the repaired
- * corner; -1 if every corner fits, -2 / -3 if the geometry or the problem is bad (err set). */
-int opt_gear_box(const gd_pair *pair, const double lower[6], const double upper[6], double *active_mm,
-                 const char **bad_key, double *xbad, gd_error *err);
+/* The gear box [lower, upper] of the variables v on the pair (gear_objective.c): the constraint's
+ * right side (the active profile), and the first corner of the box (bit i: variable i at its upper
+ * bound) that fails gd_modification_check once repaired, with the failing [modification] key and
+ * the repaired corner; -1 if every corner fits, -2 / -3 if the geometry or the problem is bad (err
+ * set). */
+int opt_gear_box(const gd_pair *pair, const gd_opt_gear_vars *v, const double *lower, const double *upper,
+                 double *active_mm, const char **bad_key, double *xbad, gd_error *err);
 
 /* threads to use for a request (0: the OpenMP default), at least 1 */
 int opt_threads(int requested);
@@ -78,6 +79,9 @@ gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err);
 int gd_opt_case_optimizers(const gd_case *c, int *algs, int max);
 /* The case's objectives (gd_opt_objective), count <= max. */
 int gd_opt_case_objectives(const gd_case *c, int *objs, int max);
+/* The case's gear variables (optimize.variables, checked by gd_opt_resolve_case; the paper's six
+ * if the list does not parse). */
+void gd_opt_case_gear_vars(const gd_case *c, gd_opt_gear_vars *v);
 /* The evaluation budget of one run: budget_evals, or population (iterations + 1). */
 long gd_opt_case_budget(const gd_case *c);
 /* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */

@@ -2,6 +2,7 @@
  * (docs/optimisation.md section 8). Messages name the key as `file:line: optimize.key: ...`. */
 #include "opt_internal.h"
 #include "../case/case_keys.h"
+#include "geardyn/gd_geometry.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -88,47 +89,104 @@ unsigned long gd_opt_instance_seed(const gd_case *c, int r)
     return z ^ (z >> 16);
 }
 
-static const char *gear_key(int i, int upper)
+/* The [optimize] bound keys of variable id (0..8: y1 .. y9). */
+static const char *gear_key(int id, int upper)
 {
-    static const char *const keys[6][2] = {
+    static const char *const keys[GD_OPT_GEAR_NVARS][2] = {
         {"root_relief_amount_min_um", "root_relief_amount_max_um"},
         {"root_relief_length_min_mm", "root_relief_length_max_mm"},
         {"tip_relief_amount_min_um", "tip_relief_amount_max_um"},
         {"tip_relief_length_min_mm", "tip_relief_length_max_mm"},
         {"lead_relief_min_um", "lead_relief_max_um"},
+        {"lead_relief_min_um", "lead_relief_max_um"},
         {"lead_unmodified_length_min_mm", "lead_unmodified_length_max_mm"},
+        {"lead_unmodified_centre_min_mm", "lead_unmodified_centre_max_mm"},
+        {"helix_slope_min_um", "helix_slope_max_um"},
     };
-    return keys[i][upper];
+    return keys[id][upper];
+}
+
+void gd_opt_case_gear_vars(const gd_case *c, gd_opt_gear_vars *v)
+{
+    gd_error e = {0};
+    if (gd_opt_gear_vars_parse(c->opt_variables, v, &e) != GD_OK)
+        gd_opt_gear_vars_paper(v);
+}
+
+/* The default bounds, scaled to the pair (docs/optimisation.md section 2): relief amounts up to the
+ * larger of 12 um per mm of normal module (the paper's 60 um at 5 mm) and three static deflections
+ * of one mesh under ISO 6336-1's stiffness plus twice the misalignment's mismatch across the face;
+ * profile lengths from 0.1 to 2.4 normal modules (the paper's 0.5 to 12 mm), at most the active
+ * profile; the unmodified lead band from a quarter to 0.95 of the pinion face (the paper's 10 to 38
+ * of 40 mm), its middle within a quarter of the face either side; the helix slope within the
+ * static deflection plus twice the mismatch either side. The paper's pair at the paper's load gets
+ * the paper's bounds. */
+static void derive_gear_bounds(gd_case *c, const gd_pair *pair)
+{
+    gd_geometry g;
+    gd_error e = {0};
+    if (gd_geometry_compute(pair, &g, &e) != GD_OK)
+        return; /* the scene has refused it already */
+    int meshes = pair->arrangement == GD_ARR_HERRINGBONE ? 2 : 1;
+    double fn = c->torque_nm / (meshes * g.rb[0] * cos(g.beta_b));          /* N, one mesh */
+    double delta_um = fn / gd_iso6336_mesh_stiffness(pair, &g) * 1e6;       /* static deflection */
+    double tilt = hypot(pair->axis_in_plane_arcmin, pair->axis_cross_plane_arcmin) / 60.0 * M_PI / 180.0;
+    double mismatch_um = tilt * g.b_contact * 1e6;                           /* across the face */
+    double mn = pair->normal_module_mm, b1 = g.b[0] * 1e3, active = (g.rho_a[0] - g.rho_sap[0]) * 1e3;
+    /* amounts rounded up to whole micrometres */
+    double amount = ceil(fmax(12.0 * mn, 3.0 * delta_um + 2.0 * mismatch_um) - 1e-9);
+    double lmin = 0.1 * mn, lmax = fmin(2.4 * mn, active), slope = ceil(delta_um + 2.0 * mismatch_um - 1e-9);
+    gd_case_key_derive(c, "optimize", "root_relief_amount_max_um", &c->opt_root_amount_max_um, amount);
+    gd_case_key_derive(c, "optimize", "tip_relief_amount_max_um", &c->opt_tip_amount_max_um, amount);
+    gd_case_key_derive(c, "optimize", "lead_relief_max_um", &c->opt_lead_amount_max_um, amount);
+    gd_case_key_derive(c, "optimize", "root_relief_length_min_mm", &c->opt_root_length_min_mm, lmin);
+    gd_case_key_derive(c, "optimize", "root_relief_length_max_mm", &c->opt_root_length_max_mm, lmax);
+    gd_case_key_derive(c, "optimize", "tip_relief_length_min_mm", &c->opt_tip_length_min_mm, lmin);
+    gd_case_key_derive(c, "optimize", "tip_relief_length_max_mm", &c->opt_tip_length_max_mm, lmax);
+    gd_case_key_derive(c, "optimize", "lead_unmodified_length_min_mm", &c->opt_lead_length_min_mm, 0.25 * b1);
+    gd_case_key_derive(c, "optimize", "lead_unmodified_length_max_mm", &c->opt_lead_length_max_mm, 0.95 * b1);
+    gd_case_key_derive(c, "optimize", "lead_unmodified_centre_min_mm", &c->opt_lead_centre_min_mm, -0.25 * b1);
+    gd_case_key_derive(c, "optimize", "lead_unmodified_centre_max_mm", &c->opt_lead_centre_max_mm, 0.25 * b1);
+    gd_case_key_derive(c, "optimize", "helix_slope_min_um", &c->opt_helix_slope_min_um, -slope);
+    gd_case_key_derive(c, "optimize", "helix_slope_max_um", &c->opt_helix_slope_max_um, slope);
 }
 
 static gd_status check_gear(gd_case *c, const gd_pair *pair, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    double lo[6], hi[6], active;
-    /* bounds in order */
+    gd_opt_gear_vars v;
     {
-        double l[6], h[6];
-        gd_opt_gear_bounds(c, l, h);
-        for (int i = 0; i < 6; i++)
-            if (!(l[i] < h[i])) {
-                int up = gd_case_key_given(c, "optimize", gear_key(i, 1)) ||
-                         !gd_case_key_given(c, "optimize", gear_key(i, 0));
-                gd_case_key_where(c, "optimize", gear_key(i, up), w, sizeof w);
-                return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the bounds of %s are [%g, %g] (valid: the "
-                                    "lower bound below the upper)", w, gear_key(i, up), gd_opt_gear_variable(i, NULL, NULL),
-                                    l[i], h[i]);
-            }
+        gd_error e2 = {0};
+        if (gd_opt_gear_vars_parse(c->opt_variables, &v, &e2) != GD_OK) {
+            gd_case_key_where(c, "optimize", "variables", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.variables: %s", w, e2.msg);
+        }
     }
     if (!(c->torque_nm > 0)) {
         snprintf(w, sizeof w, "%s", c->path[0] ? c->path : "case");
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.torque_nm: a pinion torque of %g N m for gear-lte "
                             "(valid: > 0, the loaded contact needs a load)", w, c->torque_nm);
     }
+    derive_gear_bounds(c, pair);
+    double lo[GD_OPT_GEAR_NVARS], hi[GD_OPT_GEAR_NVARS], active;
+    gd_opt_gear_bounds(c, &v, lo, hi);
+    /* bounds in order */
+    for (int i = 0; i < v.n; i++)
+        if (!(lo[i] < hi[i])) {
+            int id = v.var[i];
+            int up = gd_case_key_given(c, "optimize", gear_key(id, 1)) || !gd_case_key_given(c, "optimize", gear_key(id, 0));
+            gd_case_key_where(c, "optimize", gear_key(id, up), w, sizeof w);
+            const char *sym;
+            gd_opt_gear_variable(id, NULL, &sym);
+            (void)sym;
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the bounds of %s are [%g, %g] (valid: the "
+                                "lower bound below the upper)", w, gear_key(id, up),
+                                gd_opt_gear_variable(id, NULL, NULL), lo[i], hi[i]);
+        }
     const char *bad = NULL;
-    double xb[6];
+    double xb[GD_OPT_GEAR_NVARS];
     gd_error e2 = {0};
-    gd_opt_gear_bounds(c, lo, hi);
-    int corner = opt_gear_box(pair, lo, hi, &active, &bad, xb, &e2);
+    int corner = opt_gear_box(pair, &v, lo, hi, &active, &bad, xb, &e2);
     if (corner == -1)
         return GD_OK;
     if (corner < 0) {
@@ -138,19 +196,21 @@ static gd_status check_gear(gd_case *c, const gd_pair *pair, gd_error *err)
     }
     /* the bound responsible: the failing [modification] key's variable at this corner */
     int var = 0;
-    if (bad) {
-        for (int i = 0; i < 6; i++)
-            if (strcmp(bad, gd_opt_gear_variable(i, NULL, NULL)) == 0)
-                var = i;
-        if (strcmp(bad, "lead_relief_outer_um") == 0)
-            var = 4;
-    }
+    for (int i = 0; bad && i < v.n; i++)
+        if (strcmp(bad, gd_opt_gear_variable(v.var[i], NULL, NULL)) == 0)
+            var = i;
     int up = corner >> var & 1;
-    gd_case_key_where(c, "optimize", gear_key(var, up), w, sizeof w);
+    char at[512];
+    size_t n = 0;
+    for (int i = 0; i < v.n && n < sizeof at; i++) {
+        const char *unit, *sym;
+        gd_opt_gear_variable(v.var[i], &unit, &sym);
+        n += (size_t)snprintf(at + n, sizeof at - n, "%s%s = %g %s", i ? ", " : "", sym, xb[i], unit);
+    }
+    gd_case_key_where(c, "optimize", gear_key(v.var[var], up), w, sizeof w);
     return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the box holds a modification that does not fit on the "
-                        "pinion (y1..y5, y7 = %g um, %g mm, %g um, %g mm, %g um, %g mm; root + tip relief lengths "
-                        "are repaired to fit the %.4g mm of active profile): modification.%s: %s", w,
-                        gear_key(var, up), xb[0], xb[1], xb[2], xb[3], xb[4], xb[5], active, bad ? bad : "?", e2.msg);
+                        "pinion (%s; root + tip relief lengths are repaired to fit the %.4g mm of active profile): "
+                        "modification.%s: %s", w, gear_key(v.var[var], up), at, active, bad ? bad : "?", e2.msg);
 }
 
 /* optimize.optimizers (compare-optimizers): known names, each at most once. */
@@ -228,8 +288,11 @@ static gd_status resolve_objectives(const gd_case *c, int compare, objective_kin
 static gd_status resolve_dimensions(gd_case *c, int compare, const objective_kinds *ok, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
+    gd_opt_gear_vars gv;
+    gd_opt_case_gear_vars(c, &gv);
+    int gear_only = ok->gear && !ok->tests;
     if (c->n_opt_dimensions == 0) {
-        c->opt_dimensions[0] = 6;
+        c->opt_dimensions[0] = gear_only ? gv.n : 6;
         c->n_opt_dimensions = 1;
         derived(c, "dimension");
     } else {
@@ -247,9 +310,9 @@ static gd_status resolve_dimensions(gd_case *c, int compare, const objective_kin
                     return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.dimension: %g twice (valid: each at most once)",
                                         w, d);
         }
-        if (ok->gear && !ok->tests && (c->n_opt_dimensions != 1 || c->opt_dimensions[0] != 6))
-            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.dimension: gear-lte has 6 variables, y1..y5 and y7 "
-                                "(valid: 6, or leave dimension out)", w);
+        if (gear_only && (c->n_opt_dimensions != 1 || c->opt_dimensions[0] != gv.n))
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.dimension: gear-lte has the %d variables of "
+                                "optimize.variables (valid: %d, or leave dimension out)", w, gv.n, gv.n);
     }
     if (ok->gear && c->opt_shift != 0) {
         gd_case_key_where(c, "optimize", "shift", w, sizeof w);

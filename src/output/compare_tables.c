@@ -90,7 +90,8 @@ gd_status gd_compare_write_tables(gd_run_dir *d, const gd_compare_outcome *C, gd
                 const char *unit = "";
                 char name[48];
                 if (gear)
-                    snprintf(name, sizeof name, "%s", gd_opt_gear_variable(k, &unit, NULL));
+                    snprintf(name, sizeof name, "%s",
+                             gd_opt_gear_variable(gd_opt_gear_vars_of(C->p[j].gear)->var[k], &unit, NULL));
                 else
                     snprintf(name, sizeof name, "x%d", k + 1);
                 fprintf(fp, "%s,%d,%s,%d,%s,%s,%.12g\n", obj_name(&C->p[j]), C->p[j].dim,

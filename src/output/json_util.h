@@ -5,6 +5,7 @@
 #include <jansson.h>
 
 #include "geardyn/gd_case.h"
+#include "geardyn/gd_modal.h"
 #include "geardyn/gd_output.h"
 
 /* A finite number, or null. */
@@ -20,6 +21,8 @@ json_t *gd_json_halves_num(const double v[2], int halves, double scale);
 json_t *gd_json_halves_int(const int v[2], int halves);
 /* The names of the edge-contact kinds set in bits (gd_edge_kind_name). */
 json_t *gd_json_edge_names(unsigned bits);
+/* derived.modal of a dynamic run: the modes of the case's model (summary_modes.c), or their error. */
+json_t *gd_modal_json(const gd_case *c, const gd_modal *md);
 /* The files an analysis wrote, as an array (summary.json's "files"). */
 json_t *gd_json_files(const char *const *files, int nfiles);
 /* Write root as the file name of the run's directory (through gd_run_dir_create/commit) and

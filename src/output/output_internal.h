@@ -13,6 +13,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_basins.h"
 
 /* A file written under a temporary name and renamed into place on commit (gd_run_dir keeps one
  * per open file). */
@@ -41,10 +42,10 @@ void gd_poincare_row(FILE *fp, const gd_model *m, long period, double t_s, const
 /* variable.csv, variable_poincare.csv and spectrum.csv of the local analysis. */
 gd_status gd_local_write_tables(gd_run_dir *d, const gd_local *L, double mesh_freq_hz, gd_error *err);
 /* summary.json of a response run: the resolved case (value, unit, source of every key), the
- * derived geometry and model scales, solver statistics and the results. Each summary writer lists
- * the files of d and itself. */
-gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_response_result *r,
-                                    gd_error *err);
+ * derived geometry and model scales, the modes of the model (derived.modal, gd_scene_modes), solver
+ * statistics and the results. Each summary writer lists the files of d and itself. */
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_modal *modes,
+                                    const gd_response_result *r, gd_error *err);
 
 /* ---- tca ---- */
 /* gte.csv, contact_path.csv (rb: the base radii, m) and separation_left/right.csv. */
@@ -88,9 +89,9 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
 /* states.csv: every point's final state (at mesh phase 0), its period and status, in slot order. */
 gd_status gd_sweep_write_states(gd_run_dir *d, const gd_sweep_plan *p, const gd_sweep_point *pts, gd_error *err);
 /* the settings, failed points, motion tallies, branches and the hysteresis intervals
- * (gd_sweep_hysteresis) */
-gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p, const gd_sweep_point *pts,
-                                 gd_error *err);
+ * (gd_sweep_hysteresis); derived.modal: the modes of the case's model at its own values */
+gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_sweep_plan *p,
+                                 const gd_sweep_point *pts, gd_error *err);
 
 /* ---- continuation ---- */
 /* branch.csv (every branch point) and bifurcations.csv (every located bifurcation). */
@@ -101,6 +102,19 @@ gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_
  * key of the model equal but the continued one and derived values), listing states.csv. Refusals
  * are GD_ERR_INPUT naming the key. */
 gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *err);
-gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_contin_result *res, gd_error *err);
+/* derived.modal: the modes of the case's model at its own values */
+gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_contin_result *res,
+                                  gd_error *err);
+
+/* ---- basins ---- */
+/* basins.csv (the picture), attractors.csv, fractions.csv (with a sample), attractor_points.csv and
+ * continuation_orbits.csv (with basins.continuation). */
+gd_status gd_basins_write_tables(gd_run_dir *d, const gd_case *c, const gd_basins_result *res, gd_error *err);
+/* derived.modal: the modes of the case's model at its own values */
+gd_status gd_summary_write_basins(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_basins_result *res,
+                                  gd_error *err);
+/* basins.continuation: the points of a finished continuation of this case's model (in basins.parameter when
+ * there is one). Refusals are GD_ERR_INPUT naming the key. */
+gd_status gd_basins_read_continuation(const gd_case *c, gd_basins_known *k, gd_error *err);
 
 #endif

@@ -18,20 +18,36 @@ static json_t *lr(double l, double r)
     return o;
 }
 
-/* derived.model.impact: the mesh-in impact pulse of each mesh (excitation.impact = on, from LTCA). */
+/* a value of each body: pinion and gear */
+static json_t *pg(double p, double g)
+{
+    json_t *o = json_object();
+    json_object_set_new(o, "pinion", gd_json_num(p));
+    json_object_set_new(o, "gear", gd_json_num(g));
+    return o;
+}
+
+/* derived.model.impact: the mesh-in impact pulses (excitation.impact = on, from LTCA), each as the
+ * model's mesh receives it: one per mesh, and both halves' on the one mesh of a herringbone's torsional
+ * model. */
 static json_t *impact_json(const gd_model *m)
 {
     json_t *imp = json_object();
-    static const char *const mesh_name[] = {"left", "right"};
+    static const char *const half_name[] = {"left", "right"};
+    int herringbone = m->nmesh == 2 || m->force_share != 1.0;
     for (int j = 0; j < m->nmesh && j < 2; j++) {
         const gd_mesh_excitation *x = &m->mesh[j];
-        json_t *o = json_object();
-        double fn = x->imp_force * m->k_ref * m->bc_m / (m->kind == GD_MODEL_TORSIONAL ? 2.0 : 1.0);
-        json_object_set_new(o, "force_n", gd_json_num(fn));
-        json_object_set_new(o, "duration_s", gd_json_num(x->imp_width / (m->omega_n * m->Omega)));
-        json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase / (2.0 * M_PI)));
-        json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
-        json_object_set_new(imp, m->nmesh == 1 ? "mesh" : mesh_name[j], o);
+        for (int k = 0; k < x->nimp; k++) {
+            json_t *o = json_object();
+            double fn = x->imp_force[k] * m->k_ref * m->bc_m, dur = x->imp_width[k] / (m->omega_n * m->Omega);
+            json_object_set_new(o, "force_n", gd_json_num(fn));
+            json_object_set_new(o, "duration_s", gd_json_num(dur));
+            json_object_set_new(o, "impulse_n_s", gd_json_num(fn * dur));
+            json_object_set_new(o, "phase_of_mesh_cycle", gd_json_num(x->imp_phase[k] / (2.0 * M_PI)));
+            json_object_set_new(o, "force_over_static", gd_json_num(fn / m->static_load_n));
+            json_object_set_new(o, "acts", json_string(x->imp_contact_only ? "in drive-side contact" : "always"));
+            json_object_set_new(imp, herringbone ? half_name[x->imp_half[k]] : "mesh", o);
+        }
     }
     return imp;
 }
@@ -43,16 +59,18 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     gd_error e2;
     json_t *der = json_object();
     const gd_pair pair = gd_pair_from_case(c);
+    double sin_bb = NAN;
     if (gd_geometry_compute(&pair, &g, &e2) == GD_OK) {
+        sin_bb = sin(g.beta_b);
         json_t *geo = json_object();
         json_object_set_new(geo, "transverse_module_mm", gd_json_num(g.mt * 1e3));
         json_object_set_new(geo, "transverse_pressure_angle_deg", gd_json_num(g.alpha_t * 180 / M_PI));
         json_object_set_new(geo, "working_pressure_angle_deg", gd_json_num(g.alpha_wt * 180 / M_PI));
         json_object_set_new(geo, "base_helix_angle_deg", gd_json_num(g.beta_b * 180 / M_PI));
-        json_object_set_new(geo, "reference_radius_mm", lr(g.r[0] * 1e3, g.r[1] * 1e3));
-        json_object_set_new(geo, "base_radius_mm", lr(g.rb[0] * 1e3, g.rb[1] * 1e3));
-        json_object_set_new(geo, "tip_radius_mm", lr(g.ra[0] * 1e3, g.ra[1] * 1e3));
-        json_object_set_new(geo, "root_radius_mm", lr(g.rf[0] * 1e3, g.rf[1] * 1e3));
+        json_object_set_new(geo, "reference_radius_mm", pg(g.r[0] * 1e3, g.r[1] * 1e3));
+        json_object_set_new(geo, "base_radius_mm", pg(g.rb[0] * 1e3, g.rb[1] * 1e3));
+        json_object_set_new(geo, "tip_radius_mm", pg(g.ra[0] * 1e3, g.ra[1] * 1e3));
+        json_object_set_new(geo, "root_radius_mm", pg(g.rf[0] * 1e3, g.rf[1] * 1e3));
         json_object_set_new(geo, "centre_distance_mm", gd_json_num(g.a * 1e3));
         json_object_set_new(geo, "contact_ratio_transverse", gd_json_num(g.eps_alpha));
         json_object_set_new(geo, "contact_ratio_overlap", gd_json_num(g.eps_beta));
@@ -66,9 +84,22 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     json_object_set_new(mod, "normal_equivalent_mass_kg", gd_json_num(m->m_ref));
     json_object_set_new(mod, "mesh_stiffness_n_per_m", gd_json_num(m->k_ref));
     json_object_set_new(mod, "static_mesh_force_n", gd_json_num(m->static_load_n));
+    /* its axial component, taken by the axial supports (a herringbone's halves: opposite senses) */
+    json_object_set_new(mod, "static_axial_force_n", gd_json_num(m->static_load_n * sin_bb));
     json_object_set_new(mod, "static_deflection_um", gd_json_num(m->static_load_n / m->k_ref * 1e6));
     if (c->impact)
         json_object_set_new(mod, "impact", impact_json(m));
+    /* where each excitation comes from (geardyn check says the same) */
+    {
+        static const char *const kind[] = {"constant", "harmonic", "rectangular", "ltca"};
+        json_t *ex = json_object();
+        json_object_set_new(ex, "mesh_stiffness", json_string(c->stiffness >= 0 && c->stiffness < 4 ?
+                                                              kind[c->stiffness] : "?"));
+        json_object_set_new(ex, "transmission_error", json_string(!c->error_excitation ? "off" :
+                                                                  c->ste_source == GD_STE_LTCA ? "ltca" : "sinusoid"));
+        json_object_set_new(ex, "mesh_in_impact", json_string(c->impact ? "ltca" : "off"));
+        json_object_set_new(mod, "excitations", ex);
+    }
     json_object_set_new(der, "model", mod);
     return der;
 }
@@ -143,11 +174,12 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     return res;
 }
 
-gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m,
-                                           const gd_response_result *r, gd_error *err)
+gd_status gd_summary_write_response(gd_run_dir *d, const gd_case *c, const gd_model *m, const gd_modal *modes,
+                                    const gd_response_result *r, gd_error *err)
 {
     json_t *root = gd_json_root(c, "response", "scene", "model");
     json_object_set_new(root, "derived", response_derived_json(c, m));
+    json_object_set_new(json_object_get(root, "derived"), "modal", gd_modal_json(c, modes));
     json_object_set_new(root, "solver", response_solver_json(c, m, r));
     json_object_set_new(root, "results", response_results_json(c, m, r));
     return gd_json_write_summary(d, root, err);

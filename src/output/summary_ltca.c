@@ -50,6 +50,10 @@ static json_t *ltca_derived_json(const gd_case *c, const gd_ltca_result *r)
         json_object_set_new(der, "geometry", geo);
     }
     json_object_set_new(der, "normal_force_n", gd_json_num(r->normal_force_n));
+    /* the axial component of one mesh's normal force (a herringbone's half: its share, the halves'
+     * in opposite senses), what the pinion's axial support takes */
+    if (gd_geometry_compute(&pair, &g, &e2) == GD_OK)
+        json_object_set_new(der, "axial_force_n", gd_json_num(r->normal_force_n / r->halves * sin(g.beta_b)));
     json_object_set_new(der, "pinion_torque_nm", gd_json_num(r->torque_nm));
     json_object_set_new(der, "axis_misalignment_resultant_arcmin",
                         gd_json_num(hypot(c->axis_in_plane_arcmin, c->axis_cross_plane_arcmin)));

@@ -1,6 +1,6 @@
 /* summary.json of the optimize and compare-optimizers analyses (docs/optimisation.md section 8):
  * the resolved case, the settings, the results under stable keys; the optimum of the gear problem
- * beside the paper's Table 2. */
+ * beside the case's own modification (and the paper's Table 2 for the paper's pair). */
 #include "output_internal.h"
 
 #include "json_util.h"
@@ -27,8 +27,18 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
                         json_integer(gd_alo_iterations(s->budget, c->opt_population)) : json_null());
     json_object_set_new(set, "threads", json_integer(s->threads));
     json_object_set_new(set, "constraints", json_string(gear ?
-        "bounds of Eq. 13 on the normalised box [-1, 1]^6; y2 + y4 <= active profile by repair toward a feasible "
-        "anchor (docs/optimisation.md section 3)" : "bounds (normalised box [-1, 1]^d)"));
+        "bounds of Eq. 13 on the normalised box [-1, 1]^d; y2 + y4 <= active profile (and |y8| + y7/2 <= half the "
+        "face) by repair toward a feasible anchor (docs/optimisation.md section 3)" : "bounds (normalised box "
+        "[-1, 1]^d)"));
+    if (gear) {
+        json_t *vars = json_array();
+        for (int i = 0; i < s->dim; i++) {
+            const char *sym;
+            gd_opt_gear_variable(s->vars->var[i], NULL, &sym);
+            json_array_append_new(vars, json_string(sym));
+        }
+        json_object_set_new(set, "variables", vars);
+    }
     if (gear)
         json_object_set_new(set, "active_profile_mm", gd_json_num(s->active_profile_mm));
     json_object_set_new(root, "settings", set);
@@ -68,36 +78,46 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
         json_object_set_new(res, "true_minimiser", o);
         json_object_set_new(res, "distance_to_minimiser", gd_json_num(sqrt(d2)));
     }
+    json_object_set_new(res, "converged", json_boolean(s->converged));
+    json_object_set_new(res, "improvement_last_tenth_percent", gd_json_num(100.0 * s->last_tenth_improvement));
     if (gear) {
         json_t *lte = json_object();
         json_object_set_new(lte, "unmodified", gd_json_num(s->lte_unmodified));
-        json_object_set_new(lte, "table2", gd_json_num(s->lte_table2));
+        json_object_set_new(lte, "case", gd_json_num(s->lte_case));
         json_object_set_new(lte, "optimum", gd_json_num(s->lte_optimum));
+        if (s->table2)
+            json_object_set_new(lte, "paper_table2", gd_json_num(s->lte_table2));
         json_object_set_new(res, "lte_pp_arcsec", lte);
         json_object_set_new(res, "change_vs_unmodified_percent",
                             gd_json_num(100.0 * (s->lte_optimum - s->lte_unmodified) / s->lte_unmodified));
-        json_object_set_new(res, "change_vs_table2_percent",
-                            gd_json_num(100.0 * (s->lte_optimum - s->lte_table2) / s->lte_table2));
-        /* the paper's Table 2 and Fig. 12 beside ours */
-        double t2[GD_OPT_GEAR_DIM];
-        gd_opt_gear_table2(t2);
-        json_t *tab = json_object();
-        for (int i = 0; i < GD_OPT_GEAR_DIM; i++) {
+        json_object_set_new(res, "change_vs_case_percent",
+                            gd_json_num(100.0 * (s->lte_optimum - s->lte_case) / s->lte_case));
+        /* each variable at the optimum beside the case's own value (and the paper's Table 2 for its pair) */
+        json_t *tab = json_object(), *none = json_array();
+        for (int i = 0; i < s->dim; i++) {
             const char *unit, *sym;
-            const char *key = gd_opt_gear_variable(i, &unit, &sym);
+            const char *key = gd_opt_gear_variable(s->vars->var[i], &unit, &sym);
             json_t *row = json_object();
             json_object_set_new(row, "variable", json_string(key));
             json_object_set_new(row, "unit", json_string(unit));
             json_object_set_new(row, "optimum", gd_json_num(b->y[i]));
-            json_object_set_new(row, "paper_table2", gd_json_num(t2[i]));
+            json_object_set_new(row, "case", gd_json_num(s->case_value[i]));
+            if (s->table2)
+                json_object_set_new(row, "paper_table2", gd_json_num(s->table2[i]));
+            json_object_set_new(row, "effect", json_string(s->no_effect && s->no_effect[i] ? s->no_effect[i] : "yes"));
             json_object_set_new(tab, sym, row);
+            if (s->no_effect && s->no_effect[i])
+                json_array_append_new(none, json_string(sym));
         }
-        json_object_set_new(res, "optimum_vs_table2", tab);
-        json_t *paper = json_object();
-        json_object_set_new(paper, "lte_pp_unmodified_arcsec", gd_json_num(4.194));
-        json_object_set_new(paper, "lte_pp_table2_arcsec", gd_json_num(1.157));
-        json_object_set_new(paper, "change_percent", gd_json_num(-72.41));
-        json_object_set_new(res, "paper", paper);
+        json_object_set_new(res, "optimum_vs_case", tab);
+        json_object_set_new(res, "without_effect", none);
+        if (s->table2) { /* the paper's pair: its Table 2 and Fig. 12 beside ours */
+            json_t *paper = json_object();
+            json_object_set_new(paper, "lte_pp_unmodified_arcsec", gd_json_num(4.194));
+            json_object_set_new(paper, "lte_pp_table2_arcsec", gd_json_num(1.157));
+            json_object_set_new(paper, "change_percent", gd_json_num(-72.41));
+            json_object_set_new(res, "paper", paper);
+        }
     }
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);

@@ -750,8 +750,8 @@ static gd_status results_json(const gd_sweep_plan *p, const gd_sweep_point *pts,
     return GD_OK;
 }
 
-gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep_plan *p,
-                                        const gd_sweep_point *pts, gd_error *err)
+gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_sweep_plan *p,
+                                 const gd_sweep_point *pts, gd_error *err)
 {
     tally t;
     tally_points(p, pts, &t);
@@ -761,6 +761,7 @@ gd_status gd_sweep_write_summary(gd_run_dir *d, const gd_case *c, const gd_sweep
         return st;
     json_t *root = gd_json_root(c, "sweep", "scene", "model");
     json_object_set_new(root, "sweep", sweep_json(c, p));
+    json_object_set_new(root, "derived", json_pack("{s:o}", "modal", gd_modal_json(c, modes)));
     json_object_set_new(root, "results", res);
     json_t *sol = json_object();
     json_object_set_new(sol, "steps", json_integer(t.steps));

@@ -57,9 +57,11 @@ static gd_status build(const gd_case *c, gd_stop_hook stop, gd_compare_entry *q,
         const gd_pair pair = gd_pair_from_case(c);
         gd_ltca_settings set = gd_ltca_settings_from_case(c);
         set.stop = stop; /* every evaluation's LTCA */
-        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
-        gd_opt_gear_bounds(c, lower, upper);
-        gd_status st = gd_opt_gear_create(&pair, &set, lower, upper, &q->gear, err);
+        double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
+        gd_opt_gear_vars v;
+        gd_opt_case_gear_vars(c, &v);
+        gd_opt_gear_bounds(c, &v, lower, upper);
+        gd_status st = gd_opt_gear_create(&pair, &set, &v, lower, upper, &q->gear, err);
         if (st != GD_OK)
             return st;
         for (int r = 0; r < runs; r++) {
@@ -91,7 +93,9 @@ static void list_problems(const gd_case *c, gd_compare_outcome *C)
         for (int k = 0; k < nd && C->n < GD_COMPARE_MAX; k++) {
             gd_compare_entry *q = &C->p[C->n++];
             q->objective = objs[i];
-            q->dim = objs[i] == GD_OBJ_GEAR_LTE ? GD_OPT_GEAR_DIM : (int)c->opt_dimensions[k];
+            gd_opt_gear_vars v;
+            gd_opt_case_gear_vars(c, &v);
+            q->dim = objs[i] == GD_OBJ_GEAR_LTE ? v.n : (int)c->opt_dimensions[k];
             q->shift = objs[i] == GD_OBJ_GEAR_LTE ? 0.0 : c->opt_shift;
         }
     }

@@ -6,6 +6,13 @@
 
 #include <stdlib.h>
 
+/* The row's result: the continuation's, first (what the command line reads as a gd_contin_result),
+ * and the modes of the case's model for summary.json. */
+typedef struct contin_outcome {
+    gd_contin_result res;
+    gd_modal modes;
+} contin_outcome;
+
 /* The run's progress, after each branch, through the caller's hook (the run's should_stop is
  * asked before every point of a branch, gd_contin_run's stop, and here between branches). */
 static int on_branch(void *user, int done, int planned)
@@ -35,11 +42,13 @@ gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_ru
     gd_status st = c->cont_start == GD_CONT_START_SWEEP ? gd_contin_sweep_start(c, &s, err) : GD_OK;
     if (st != GD_OK)
         return st;
-    gd_contin_result *r = malloc(sizeof *r);
+    contin_outcome *r = calloc(1, sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    gd_row_case_modes(c, &r->modes);
     const gd_stop_hook stop = gd_row_stop(env);
-    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, &stop, r, err);
+    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, &stop, &r->res,
+                       err);
     if (st != GD_OK) {
         free(r);
         return st;
@@ -51,18 +60,19 @@ gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_ru
 gd_status gd_row_continuation_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     (void)c;
-    return gd_contin_write_tables(out, result, err);
+    return gd_contin_write_tables(out, &((const contin_outcome *)result)->res, err);
 }
 
 gd_status gd_row_continuation_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
-    return gd_contin_write_summary(out, c, result, err);
+    const contin_outcome *r = result;
+    return gd_contin_write_summary(out, c, &r->modes, &r->res, err);
 }
 
 void gd_row_continuation_free(void *result)
 {
     if (!result)
         return;
-    gd_contin_result_free(result);
+    gd_contin_result_free(&((contin_outcome *)result)->res);
     free(result);
 }

@@ -1,10 +1,12 @@
 /* The optimize row (docs/optimisation.md): minimise the case's objective with its [optimize]
  * algorithm (`runs` runs, the best kept); the optimum, the convergence history and summary.json;
- * for the gear also the LTE of the optimum beside the unmodified pair's and the paper's Table 2,
- * and the optimum's full LTCA (loaded contact pattern) and TCA (contact pattern) outputs in
- * optimum/ and optimum-tca/, through the rows of those analyses. */
+ * for the gear also the LTE of the optimum beside the unmodified pair's and the case's own
+ * modification's (and, for the paper's pair, the paper's Table 2), the variables without effect at
+ * the optimum, and the optimum's full LTCA (loaded contact pattern) and TCA (contact pattern)
+ * outputs in optimum/ and optimum-tca/, through the rows of those analyses. */
 #include "rows.h"
 #include "geardyn/gd_scene.h"
+#include "geardyn/gd_geometry.h"
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
 
@@ -14,22 +16,29 @@
 #include <string.h>
 
 /* A case for the optimum's own LTCA / TCA outputs: the optimum as its [modification], marked derived. */
-static gd_status optimum_case(const gd_case *c, const double *x, int analysis, gd_case *out, gd_error *err)
+static gd_status optimum_case(const gd_case *c, const gd_opt_gear_vars *v, const double *x, int analysis,
+                              gd_case *out, gd_error *err)
 {
     gd_status st = gd_case_copy(out, c, err);
     if (st != GD_OK)
         return st;
     gd_pair pair = gd_pair_from_case(out);
-    gd_opt_gear_apply(&pair, x);
+    gd_opt_gear_apply(v, &pair, x);
     gd_pair_modification_to_case(&pair, out);
     out->analysis = analysis;
-    static const char *const keys[] = {"root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
-                                       "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
-                                       "lead_unmodified_length_mm"};
     size_t n;
     const gd_keyspec *s = gd_case_schema(&n);
-    for (size_t i = 0; i < sizeof keys / sizeof keys[0]; i++)
-        out->src[gd_case_find_key("modification", keys[i]) - s] = GD_SRC_DERIVED;
+    for (int k = 0; k < v->n; k++)
+        out->src[gd_case_find_key("modification", gd_opt_gear_variable(v->var[k], NULL, NULL)) - s] = GD_SRC_DERIVED;
+    if (v->n > 0) { /* y6 follows y5 when only y5 is a variable */
+        int y5 = 0, y6 = 0;
+        for (int k = 0; k < v->n; k++) {
+            y5 |= v->var[k] == 4;
+            y6 |= v->var[k] == 5;
+        }
+        if (y5 && !y6)
+            out->src[gd_case_find_key("modification", "lead_relief_outer_um") - s] = GD_SRC_DERIVED;
+    }
     return GD_OK;
 }
 
@@ -42,7 +51,7 @@ void gd_row_optimize_free(void *result)
         for (int r = 0; r < o->runs; r++)
             gd_opt_result_free(&o->res[r]);
     free(o->res);
-    for (int j = 0; j < 3; j++)
+    for (int j = 0; j < 4; j++)
         gd_ltca_result_free(&o->lte[j]);
     free(o->run_f);
     gd_opt_gear_free(o->gear_problem);
@@ -59,23 +68,32 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
     gd_opt_case_objectives(c, objs, GD_OBJ_NOBJECTIVES);
     o->objective = objs[0];
     o->gear = o->objective == GD_OBJ_GEAR_LTE;
-    o->dim = o->gear ? GD_OPT_GEAR_DIM : (int)c->opt_dimensions[0];
+    if (o->gear)
+        gd_opt_case_gear_vars(c, &o->vars);
+    o->dim = o->gear ? o->vars.n : (int)c->opt_dimensions[0];
     o->runs = c->opt_runs;
     gd_status st;
     if (o->gear) {
         const gd_pair pair = gd_pair_from_case(c);
         gd_ltca_settings set = gd_ltca_settings_from_case(c);
         set.stop = stop; /* every evaluation's LTCA */
-        double lower[GD_OPT_GEAR_DIM], upper[GD_OPT_GEAR_DIM];
-        gd_opt_gear_bounds(c, lower, upper);
-        st = gd_opt_gear_create(&pair, &set, lower, upper, gear, err);
+        double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
+        gd_opt_gear_bounds(c, &o->vars, lower, upper);
+        st = gd_opt_gear_create(&pair, &set, &o->vars, lower, upper, gear, err);
         if (st == GD_OK) {
             gd_opt_gear_problem(*gear, p);
             o->active_mm = gd_opt_gear_active_profile_mm(*gear);
-            gd_opt_gear_table2(o->table2);
-            o->reference = o->table2;
+            o->pair = pair;
+            gd_opt_gear_from_pair(&o->vars, &pair, o->case_value);
+            o->reference = o->case_value;
+            o->paper = gd_opt_gear_is_paper_pair(&pair);
+            if (o->paper) {
+                gd_pair t = pair;
+                gd_opt_gear_table2(&t);
+                gd_opt_gear_from_pair(&o->vars, &t, o->table2);
+            }
             for (int i = 0; i < o->dim; i++)
-                snprintf(o->names[i], sizeof o->names[i], "%s", gd_opt_gear_variable(i, NULL, NULL));
+                snprintf(o->names[i], sizeof o->names[i], "%s", gd_opt_gear_variable(o->vars.var[i], NULL, NULL));
         }
     } else {
         st = gd_opt_testfn_init(tf, o->objective, o->dim, c->opt_shift, gd_opt_instance_seed(c, 0), err);
@@ -116,29 +134,76 @@ static gd_status run_all(const gd_run_env *env, const gd_case *c, const gd_opt_p
     return GD_OK;
 }
 
-/* The gear: LTE of the unmodified pair, Table 2 and the optimum (the same LTCA as the objective). */
+/* The gear: LTE of the unmodified pair, of the case's own modification, of the optimum and, for the
+ * paper's pair, of the paper's Table 2 (the same LTCA as the objective). */
 static gd_status compute_lte(const gd_case *c, gd_stop_hook stop, gd_optimize_outcome *o, gd_error *err)
 {
-    const double zero[GD_OPT_GEAR_DIM] = {0};
-    const double *xs[3] = {zero, o->table2, o->res[o->best].y};
     gd_status st = GD_OK;
-    for (int j = 0; j < 3 && st == GD_OK; j++) {
+    for (int j = 0; j < (o->paper ? 4 : 3) && st == GD_OK; j++) {
         gd_pair t = gd_pair_from_case(c);
         gd_ltca_settings set = gd_ltca_settings_from_case(c);
         set.stop = stop;
-        gd_opt_gear_apply(&t, xs[j]);
+        if (j == 0) { /* unmodified: every amount and length 0 */
+            t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
+            t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
+            t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
+        } else if (j == 2) {
+            gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
+        } else if (j == 3) {
+            gd_opt_gear_table2(&t);
+        }
         st = gd_ltca_run_opts(&t, &set, 0, 0, &o->lte[j], err);
     }
     return st;
 }
 
+/* The variables without effect at the optimum: a relief length (y2, y4) whose amount (y1, y3), or
+ * the unmodified lead band (y7, y8) when both lead reliefs (y5, y6) are, below 1 % of the optimum's
+ * LTE as a displacement normal to the flank (LTE r_b2 cos(beta_b)): a relief cannot change the
+ * LTE by more than its amount, so where it lies cannot matter; and the convergence of the best run:
+ * the relative fall of its best value over the last tenth of its evaluations. */
+static void assess_optimum(const gd_case *c, gd_optimize_outcome *o)
+{
+    const gd_opt_result *b = &o->res[o->best];
+    if (o->gear) {
+        for (int k = 0; k < o->dim; k++)
+            o->no_effect[k][0] = '\0';
+        gd_pair t = gd_pair_from_case(c);
+        gd_opt_gear_apply(&o->vars, &t, b->y);
+        gd_geometry g;
+        gd_error e = {0};
+        double tiny = 0.0; /* um */
+        if (gd_geometry_compute(&t, &g, &e) == GD_OK)
+            tiny = 0.01 * b->f * M_PI / (180.0 * 3600.0) * g.rb[1] * cos(g.beta_b) * 1e6;
+        double lead = fmax(t.lead_relief_inner_um, t.lead_relief_outer_um);
+        for (int k = 0; k < o->dim; k++) {
+            int id = o->vars.var[k];
+            if (id == 1 && t.root_relief_amount_um < tiny)
+                snprintf(o->no_effect[k], sizeof o->no_effect[k], "no effect: the root relief y1 is %.3g um",
+                         t.root_relief_amount_um);
+            else if (id == 3 && t.tip_relief_amount_um < tiny)
+                snprintf(o->no_effect[k], sizeof o->no_effect[k], "no effect: the tip relief y3 is %.3g um",
+                         t.tip_relief_amount_um);
+            else if ((id == 6 || id == 7) && lead < tiny)
+                snprintf(o->no_effect[k], sizeof o->no_effect[k], "no effect: the lead relief y5 / y6 is %.3g um",
+                         lead);
+        }
+        for (int k = 0; k < o->dim; k++)
+            o->no_effect_ptr[k] = o->no_effect[k][0] ? o->no_effect[k] : NULL;
+    }
+    long n = b->evaluations, m = n - (n >= 10 ? n / 10 : 1); /* the best before the last tenth */
+    double before = m >= 1 && b->best_history ? b->best_history[m - 1] : b->f;
+    o->last_tenth_improvement = (before - b->f) / fmax(fabs(b->f), 1e-300);
+    o->converged = o->last_tenth_improvement <= 1e-3;
+}
+
 /* The optimum's own analysis (LTCA or TCA) in the directory sub of out, through that analysis's
  * row, quietly (no progress), with its pictures (env); sub joins out's files. */
-static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const double *y, int analysis,
-                                 const char *sub, gd_run_dir *out, gd_error *err)
+static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const gd_opt_gear_vars *v, const double *y,
+                                 int analysis, const char *sub, gd_run_dir *out, gd_error *err)
 {
     gd_case t;
-    gd_status st = optimum_case(c, y, analysis, &t, err);
+    gd_status st = optimum_case(c, v, y, analysis, &t, err);
     if (st != GD_OK)
         return st;
     gd_run_env quiet = {0};
@@ -187,12 +252,14 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     o->threads = opt_threads(c.opt_algorithm == GD_OPT_ALO || c.opt_algorithm == GD_OPT_RANDOM ? threads : 1);
     if (st == GD_OK)
         st = run_all(env, &c, &p, s, o, o->run_f, &o->wall_s, err);
+    if (st == GD_OK)
+        assess_optimum(&c, o);
     if (st == GD_OK && o->gear)
         st = compute_lte(&c, stop, o, err);
     if (st == GD_OK && o->gear)
-        st = optimum_outputs(&c, env, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
+        st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
     if (st == GD_OK && o->gear)
-        st = optimum_outputs(&c, env, o->res[o->best].y, GD_ANALYSIS_TCA, "optimum-tca", out, err);
+        st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_TCA, "optimum-tca", out, err);
     if (st != GD_OK) {
         gd_row_optimize_free(o);
         return st;
@@ -239,8 +306,15 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     sm.run_f = run_f;
     sm.true_optimum = o->gear ? NULL : tf->optimum;
     sm.lte_unmodified = o->gear ? o->lte[0].lte_pp_arcsec : NAN;
-    sm.lte_table2 = o->gear ? o->lte[1].lte_pp_arcsec : NAN;
+    sm.lte_case = o->gear ? o->lte[1].lte_pp_arcsec : NAN;
     sm.lte_optimum = o->gear ? o->lte[2].lte_pp_arcsec : NAN;
+    sm.lte_table2 = o->gear && o->paper ? o->lte[3].lte_pp_arcsec : NAN;
+    sm.vars = o->gear ? &o->vars : NULL;
+    sm.case_value = o->gear ? o->case_value : NULL;
+    sm.table2 = o->gear && o->paper ? o->table2 : NULL;
+    sm.no_effect = o->gear ? o->no_effect_ptr : NULL;
+    sm.last_tenth_improvement = o->last_tenth_improvement;
+    sm.converged = o->converged;
     sm.active_profile_mm = o->active_mm;
     sm.wall_s = wall;
     return gd_summary_write_optimize(out, c, &sm, err);

@@ -102,8 +102,10 @@ gd_status gd_row_response_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     gd_model *m = &r->model;
     stream o = {m, env, NULL, NULL, NULL, &r->local, 0};
     gd_status st = gd_model_build(&c, m, err);
-    if (st == GD_OK)
+    if (st == GD_OK) {
+        gd_row_modes(&c, m, &r->modes);
         st = gd_local_resolve(&c, m, &r->local, err);
+    }
     if (st == GD_OK)
         st = open_streams(&c, out, &o, err);
     gd_response_hooks hooks = {on_sample, on_poincare, on_event, on_progress};
@@ -136,5 +138,5 @@ gd_status gd_row_response_write(const gd_case *c, const void *result, gd_run_dir
 gd_status gd_row_response_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     const gd_response_outcome *r = result;
-    return gd_summary_write_response(out, c, &r->model, &r->res, err);
+    return gd_summary_write_response(out, c, &r->model, &r->modes, &r->res, err);
 }

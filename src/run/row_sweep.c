@@ -55,8 +55,10 @@ gd_status gd_row_sweep_run(const gd_case *c, const gd_run_env *env, gd_run_dir *
         return st;
     }
     st = gd_sweep_points_create(&o->plan, &o->pts, err);
-    if (st == GD_OK)
+    if (st == GD_OK) {
+        gd_row_case_modes(c, &o->modes); /* before the points: the case's LTCA is still in the cache */
         st = run_points(c, env, out, o, err);
+    }
     if (st != GD_OK) {
         gd_row_sweep_free(o);
         return st;
@@ -76,5 +78,5 @@ gd_status gd_row_sweep_write(const gd_case *c, const void *result, gd_run_dir *o
 gd_status gd_row_sweep_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     const gd_sweep_outcome *o = result;
-    return gd_sweep_write_summary(out, c, &o->plan, o->pts, err);
+    return gd_sweep_write_summary(out, c, &o->modes, &o->plan, o->pts, err);
 }

@@ -4,6 +4,9 @@
 #define GD_RUN_ROWS_H
 
 #include "geardyn/gd_analysis.h"
+#include "geardyn/gd_scene.h"
+
+#include <stdio.h>
 
 #define GD_ROW_DECLARE(NAME)                                                                                     \
     gd_status gd_row_##NAME##_run(const gd_case *c, const gd_run_env *env, gd_run_dir *out, void **result,       \
@@ -23,11 +26,37 @@ GD_ROW_DECLARE(continuation)
 /* continuation's check_case: gd_contin_check_case, and the sweep's point with start = sweep */
 gd_status gd_row_continuation_check(gd_case *c, gd_error *err);
 
+GD_ROW_DECLARE(basins)
+/* basins' check_case: gd_basins_check_case, and the continuation's directory read */
+gd_status gd_row_basins_check(gd_case *c, gd_error *err);
+
 /* The environment's should_stop (the command line's signals) as the stop hook of a computation
  * that has no hook of its own in gd_run_env (TCA, LTCA, the optimisers); none without env. */
 static inline gd_stop_hook gd_row_stop(const gd_run_env *env)
 {
     return env ? (gd_stop_hook){env->should_stop, env->user} : (gd_stop_hook){NULL, NULL};
+}
+
+/* The modes of the model m of the resolved case c for summary.json (gd_scene_modes): a modal
+ * analysis that fails does not fail the run, its message goes into out->failed. */
+static inline void gd_row_modes(const gd_case *c, const gd_model *m, gd_modal *out)
+{
+    gd_error e = {0};
+    if (gd_scene_modes(c, m, out, &e) != GD_OK)
+        snprintf(out->failed, sizeof out->failed, "%s", e.msg[0] ? e.msg : "modal analysis failed");
+}
+
+/* The same for the model the case builds (with its LTCA excitation, from the cache resolving the
+ * case filled). */
+static inline void gd_row_case_modes(const gd_case *c, gd_modal *out)
+{
+    gd_error e = {0};
+    gd_model m;
+    if (gd_model_build(c, &m, &e) != GD_OK) {
+        snprintf(out->failed, sizeof out->failed, "%s", e.msg[0] ? e.msg : "the model did not build");
+        return;
+    }
+    gd_row_modes(c, &m, out);
 }
 
 #endif

@@ -63,6 +63,8 @@ static void interleave_rows(gd_nz *list, int n)
     memcpy(list, out, sizeof(gd_nz) * (size_t)n);
 }
 
+#define GD_GRAVITY_MPS2 9.80665 /* standard gravity (ISO 80000-3) */
+
 static void name_dof(gd_model *m, int i, const char *name) { snprintf(m->dof_name[i], sizeof m->dof_name[i], "%s", name); }
 
 /* A spur or single-helical pair: one mesh on the whole bodies, carrying the whole torque. */
@@ -131,7 +133,7 @@ static void model_excitations(const gd_case *c, gd_model *m)
         x->sph = sin(x->phase);
         double on = c->error_excitation ? 1.0 : 0.0;
         x->e_m = on * c->ste_mean_um * 1e-6 / m->bc_m;
-        x->e_r = on * c->ste_amplitude_um * 1e-6 / m->bc_m;
+        x->e_r = c->ste_source == GD_STE_LTCA ? 0.0 : on * c->ste_amplitude_um * 1e-6 / m->bc_m;
         x->e_phi = c->ste_phase_deg * deg;
         for (int j = 0; j < x->nh; j++) {
             x->cphi[j] = cos(x->phi[j]);
@@ -242,9 +244,14 @@ static void bta_supports(const gd_case *c, gd_model *m, const build_scales *b, i
             bl->wval[0] = 1.0;
             bl->h = b->eh;
             bl->k = k / km;
-            bl->c = 0.0;
             snprintf(bl->name, sizeof bl->name, "bearing-%d%s", body + 1, half_suffix(m, s));
-            add_nz(m->C0, &m->nc, i, i, cy * cscale); /* bearing damping acts always */
+            if (c->bearing_damping_mode == GD_DAMP_CONTACT) { /* only while the journal touches */
+                bl->c = cy * cscale;
+                bl->damp_contact_only = 1;
+            } else { /* on the journal's velocity always, inside the clearance too */
+                bl->c = 0.0;
+                add_nz(m->C0, &m->nc, i, i, cy * cscale);
+            }
         } else {
             spring(m, i, -1, k / km, cy * cscale);
         }
@@ -278,6 +285,11 @@ static void build_bta(const gd_case *c, gd_model *m, const build_scales *b)
         m->mass[b0 + 3] = m2 / mn;
         m->mass[b0 + 4] = 1.0;
         m->F0[b0 + 4] = m->static_load_n * b->fscale;
+        if (c->gravity) { /* the weights along y: their component along the line of action */
+            double gy = GD_GRAVITY_MPS2 * cos(c->gravity_angle_deg * M_PI / 180.0);
+            m->F0[b0 + 0] = m1 * gy * b->fscale;
+            m->F0[b0 + 2] = m2 * gy * b->fscale;
+        }
         bta_mesh(c, m, b, s, b0, &nclr);
         bta_supports(c, m, b, s, b0, &nclr);
     }
@@ -323,6 +335,61 @@ GD_API gd_status gd_model_build(const gd_case *c, gd_model *m, gd_error *err)
     return gd_model_apply_ltca(c, m, err);
 }
 
+/* The pulse of one half's mesh-in impact im at the pinion speed omega1 (docs/model.md section 8.4): its
+ * force F (N) and duration (s). The peak F_s is the energy balance with the contact law F = c delta^n
+ * and the normal equivalent mass of a half. impact_form = contact: the rectangle of that peak and of
+ * the impulse m_n v_s that stops the approach (the compression phase's), m_n v_s / F_s long, at most a
+ * mesh period (beyond it F_s acts throughout: a contact of that peak cannot stop the approach within a
+ * cycle). paper: F_s for the rise time of the linearised contact, at most a quarter of the mesh period
+ * (the paper gives no duration). */
+static void impact_pulse(const gd_case *c, const gd_model *m, const gd_ltca_impact *im, double omega1, double *F,
+                         double *dur)
+{
+    double vs = fabs(im->vs_per_omega * omega1), rise, Tm = 1.0 / m->mesh_freq_hz;
+    gd_impact_force(vs, m->m_ref, im->ks, im->delta_m, c->impact_exponent, F, &rise);
+    if (!(*F > 0))
+        *dur = 0.0; /* no approach: no pulse */
+    else if (c->impact_form == GD_IMPACT_PAPER)
+        *dur = fmin(rise, 0.25 * Tm);
+    else
+        *dur = fmin(m->m_ref * vs / *F, Tm);
+}
+
+/* excitation.ste = ltca: LTCA's transmission error as the error excitation of mesh j (docs/ltca.md
+ * section 8). Under the static load F of the mesh the model's mesh coordinate sits at q = e(t) +
+ * F/k(t) (+ the half backlash); LTCA's loaded approach of the half is q_LTCA = -LTE r_b2 cos(beta_b)
+ * along the normal (the gear lags). So e = q_LTCA - F/k(t), its mean removed: the quasi-static
+ * model reproduces LTCA's loaded transmission error whatever part of it the stiffness carries. The
+ * torsional model of a herringbone has one mesh for both halves: their mean. */
+static gd_status apply_ltca_error(const gd_case *c, gd_model *m, const gd_ltca_excitation *x, double rb2, double cbb,
+                                  gd_error *err)
+{
+    const double arcsec = M_PI / (180.0 * 3600.0);
+    int two = x->halves > 1 && x->lte_half_arcsec[1] != NULL;
+    double *buf = malloc(sizeof(double) * (size_t)x->npos);
+    if (!buf)
+        return gd_error_set(err, GD_ERR_NOMEM, "LTCA error excitation: out of memory");
+    gd_status st = GD_OK;
+    for (int j = 0; j < m->nmesh && st == GD_OK; j++) {
+        int h = j < 1 || !two ? 0 : 1;
+        double mean = 0;
+        for (int i = 0; i < x->npos; i++) {
+            double lte = m->kind == GD_MODEL_TORSIONAL && two ?
+                0.5 * (x->lte_half_arcsec[0][i] + x->lte_half_arcsec[1][i]) : x->lte_half_arcsec[h][i];
+            double k = c->stiffness == GD_STIFF_LTCA ?
+                (m->kind == GD_MODEL_TORSIONAL && two ? 0.5 * (x->k[0][i] + x->k[1][i]) : x->k[h][i]) : m->k_ref;
+            buf[i] = -lte * arcsec * rb2 * cbb - m->static_load_n / k;
+            mean += buf[i];
+        }
+        mean /= x->npos;
+        for (int i = 0; i < x->npos; i++)
+            buf[i] -= mean;
+        st = gd_model_set_error_table(m, j, buf, x->npos, err);
+    }
+    free(buf);
+    return st == GD_OK ? GD_OK : gd_error_prefix(err, "LTCA error excitation");
+}
+
 /* The LTCA excitation x applied to m; x is only read here (gd_model_set_stiffness_table keeps the
  * Fourier coefficients of the samples, gd_model_set_impact scalars). */
 static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_excitation *x, gd_error *err)
@@ -348,16 +415,24 @@ static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_e
     }
     if (c->impact) {
         double omega1 = 2.0 * M_PI * c->speed_rpm / 60.0;
+        int halves = x->halves > 1 ? 2 : 1;
         for (int j = 0; j < m->nmesh; j++) {
-            const gd_ltca_impact *im = &x->impact[(m->kind == GD_MODEL_TORSIONAL || !two) ? 0 : j];
-            if (!im->found)
-                continue;
-            double F, dur;
-            gd_impact_force(im->vs_per_omega * omega1, m->m_ref, im->ks, im->delta_m, c->impact_exponent, &F, &dur);
-            /* the paper gives no duration: the rise time of the linearised contact, but at most a
-             * quarter of the mesh period (the incoming pair takes over its share within the cycle) */
-            dur = fmin(dur, 0.25 / m->mesh_freq_hz);
-            st = gd_model_set_impact(m, j, F, 2.0 * M_PI * im->phase, dur, err);
+            gd_mesh_excitation *mx = &m->mesh[j];
+            mx->nimp = 0;
+            mx->imp_contact_only = c->impact_form == GD_IMPACT_CONTACT;
+            /* the halves whose impacts the mesh receives: its own; both on the one mesh of a
+             * herringbone's torsional model, each at its own phase with its own force */
+            int h0 = m->kind == GD_MODEL_TORSIONAL ? 0 : j, h1 = m->kind == GD_MODEL_TORSIONAL ? halves - 1 : j;
+            for (int h = h0; h <= h1 && st == GD_OK; h++) {
+                const gd_ltca_impact *im = &x->impact[h];
+                if (!im->found)
+                    continue;
+                double F, dur;
+                impact_pulse(c, m, im, omega1, &F, &dur);
+                st = gd_model_add_impact(m, j, F, 2.0 * M_PI * im->phase, dur, err);
+                if (st == GD_OK && dur > 0)
+                    mx->imp_half[mx->nimp - 1] = h;
+            }
             if (st != GD_OK)
                 return gd_error_prefix(err, "mesh-in impact of mesh %d", j);
         }
@@ -367,7 +442,8 @@ static gd_status apply_excitation(const gd_case *c, gd_model *m, const gd_ltca_e
 
 GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *err)
 {
-    if ((c->stiffness != GD_STIFF_LTCA && !c->impact) || c->ltca_deferred)
+    int ste = c->ste_source == GD_STE_LTCA && c->error_excitation;
+    if ((c->stiffness != GD_STIFF_LTCA && !c->impact && !ste) || c->ltca_deferred)
         return GD_OK;
     const gd_ltca_excitation *x;
     const gd_pair pair = gd_pair_from_case(c);
@@ -376,6 +452,12 @@ GD_API gd_status gd_model_apply_ltca(const gd_case *c, gd_model *m, gd_error *er
     if (st != GD_OK)
         return st;
     st = apply_excitation(c, m, x, err);
+    if (st == GD_OK && ste) {
+        gd_geometry g;
+        st = gd_geometry_compute(&pair, &g, err);
+        if (st == GD_OK)
+            st = apply_ltca_error(c, m, x, g.rb[1], cos(g.beta_b), err);
+    }
     gd_ltca_excitation_release(x); /* the model keeps no pointer into x */
     return st;
 }

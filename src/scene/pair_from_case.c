@@ -32,6 +32,8 @@ GD_API gd_pair gd_pair_from_case(const gd_case *c)
         .lead_relief_inner_um = c->lead_relief_inner_um,
         .lead_relief_outer_um = c->lead_relief_outer_um,
         .lead_unmodified_length_mm = c->lead_unmodified_length_mm,
+        .lead_unmodified_centre_mm = c->lead_unmodified_centre_mm,
+        .helix_slope_um = c->helix_slope_um,
         .axis_in_plane_arcmin = c->axis_in_plane_arcmin,
         .axis_cross_plane_arcmin = c->axis_cross_plane_arcmin,
         .centre_distance_error_mm = c->centre_distance_error_mm,
@@ -47,6 +49,8 @@ GD_API void gd_pair_modification_to_case(const gd_pair *pair, gd_case *c)
     c->lead_relief_inner_um = pair->lead_relief_inner_um;
     c->lead_relief_outer_um = pair->lead_relief_outer_um;
     c->lead_unmodified_length_mm = pair->lead_unmodified_length_mm;
+    c->lead_unmodified_centre_mm = pair->lead_unmodified_centre_mm;
+    c->helix_slope_um = pair->helix_slope_um;
 }
 
 GD_API gd_tca_settings gd_tca_settings_from_case(const gd_case *c)

@@ -48,10 +48,10 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
     if (!c->modification_apply) { /* the unmodified pair: amounts and lengths resolve to 0, marked derived */
         static const char *const mk[] = { "root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
                                           "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
-                                          "lead_unmodified_length_mm" };
+                                          "lead_unmodified_length_mm", "lead_unmodified_centre_mm", "helix_slope_um" };
         double *mf[] = { &c->root_relief_amount_um, &c->root_relief_length_mm, &c->tip_relief_amount_um,
                          &c->tip_relief_length_mm, &c->lead_relief_inner_um, &c->lead_relief_outer_um,
-                         &c->lead_unmodified_length_mm };
+                         &c->lead_unmodified_length_mm, &c->lead_unmodified_centre_mm, &c->helix_slope_um };
         for (size_t k = 0; k < sizeof mk / sizeof mk[0]; k++) {
             *mf[k] = 0.0;
             c->src[gd_case_key_index("modification", mk[k])] = GD_SRC_DERIVED;
@@ -76,15 +76,27 @@ static gd_status resolve_flank(gd_case *c, const gd_geometry *g, gd_error *err)
 }
 
 /* A spur or single-helical pair is one mesh on the whole bodies (docs/model.md section 5.4): no
- * model of two halves, no stagger of a second half, and a single helical mesh's axial force must
- * meet a pinion support in bta. */
-static gd_status resolve_single_pair(const gd_case *c, gd_error *err)
+ * model of two halves, no stagger of a second half, a single helical mesh's axial force must
+ * meet a pinion support in bta, and its pinion is axially fixed for LTCA (nothing else balances
+ * the axial force; support.pinion_axial resolves to fixed, derived, and floating is refused). */
+static gd_status resolve_single_pair(gd_case *c, gd_error *err)
 {
     if (c->arrangement == GD_ARR_HERRINGBONE)
         return GD_OK;
     char w[GD_PATH_MAX + 32], wa[GD_PATH_MAX + 32];
     const char *arr = c->arrangement == GD_ARR_SPUR ? "spur" : "helical";
     gd_case_key_where(c, "gear", "arrangement", wa, sizeof wa);
+    if (gd_case_key_given(c, "support", "pinion_axial")) {
+        if (c->pinion_axial == GD_PINION_FLOATING) {
+            gd_case_key_where(c, "support", "pinion_axial", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: support.pinion_axial: floating with gear.arrangement = %s (%s) "
+                                "(valid: fixed; a floating pinion needs the two halves of a herringbone, whose axial "
+                                "forces balance)", w, arr, wa);
+        }
+    } else {
+        c->pinion_axial = GD_PINION_FIXED;
+        c->src[gd_case_key_index("support", "pinion_axial")] = GD_SRC_DERIVED;
+    }
     if (c->model == GD_MODEL_TORSIONAL_LR) {
         gd_case_key_where(c, "scene", "model", w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: scene.model: torsional-lr with gear.arrangement = %s (%s) (valid: "
@@ -122,12 +134,12 @@ static void resolve_bodies(gd_case *c, const gd_geometry *g)
            I1 * I2 / (I1 * g->rb[1] * g->rb[1] + I2 * g->rb[0] * g->rb[0]));
 }
 
-/* The LTCA excitation (stiffness = ltca, or the mesh-in impact): it needs a load; with
- * stiffness = ltca its mean stiffness is the mesh stiffness. */
+/* The LTCA excitation (stiffness = ltca, the mesh-in impact, or ste = ltca): it needs a load;
+ * with stiffness = ltca its mean stiffness is the mesh stiffness. */
 static gd_status resolve_ltca(gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    const char *k = c->stiffness == GD_STIFF_LTCA ? "stiffness" : "impact";
+    const char *k = c->stiffness == GD_STIFF_LTCA ? "stiffness" : c->impact ? "impact" : "ste";
     if (!(c->torque_nm > 0)) {
         gd_case_key_where(c, "excitation", k, w, sizeof w);
         return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.%s: LTCA needs a load, the torque is %g N m "
@@ -158,7 +170,7 @@ static gd_status resolve_ltca(gd_case *c, gd_error *err)
 static gd_status resolve_stiffness(gd_case *c, const gd_geometry *g, gd_error *err)
 {
     const gd_pair pair = gd_pair_from_case(c);
-    if (c->stiffness == GD_STIFF_LTCA || c->impact) {
+    if (c->stiffness == GD_STIFF_LTCA || c->impact || (c->ste_source == GD_STE_LTCA && c->error_excitation)) {
         gd_status st = resolve_ltca(c, err);
         if (st != GD_OK)
             return st;

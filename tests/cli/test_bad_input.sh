@@ -52,7 +52,7 @@ teeth_pinion = 12
 helix_angle_deg = 0
 profile_shift_pinion = 1.2" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
 check_bad "[scene]
-analysis = optimise" "case.ini:2: scene.analysis: unknown choice 'optimise' \\(valid: one of response,sweep,tca,ltca,optimize,compare-optimizers,work-precision,continuation\\)" "unknown analysis"
+analysis = optimise" "case.ini:2: scene.analysis: unknown choice 'optimise' \\(valid: one of response,sweep,tca,ltca,optimize,compare-optimizers,work-precision,continuation,basins\\)" "unknown analysis"
 # [optimize] (docs/optimisation.md)
 check_bad "[scene]
 analysis = compare-optimizers
