@@ -139,8 +139,9 @@ static const struct {
     {GD_BIF_PERIOD_DOUBLING, 5, "PD", "period doubling (PD)"},
     {GD_BIF_NEIMARK_SACKER, 13, "NS", "Neimark–Sacker (NS)"},
     {GD_BIF_CONTACT_CHANGE, 9, "C", "contact change, grazing (C)"},
+    {GD_BIF_BRANCH_POINT, 3, "BP", "branch point (BP)"},
 };
-#define NKINDS 4
+#define NKINDS 5
 
 typedef struct frame {
     double x0, x1, y0, y1;   /* data */
@@ -257,16 +258,17 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
     for (int b = 0; b < res->nbranches; b++)
         nb += res->branch[b].br.nbif;
     double *bx = malloc(sizeof(double) * (size_t)(nb + 1)), *by = malloc(sizeof(double) * (size_t)(nb + 1));
-    int *bk = malloc(sizeof(int) * (size_t)(nb + 1));
+    int *bk = malloc(sizeof(int) * (size_t)(nb + 1)), *bloc = malloc(sizeof(int) * (size_t)(nb + 1));
     int present[NKINDS] = {0};
     nb = 0;
-    for (int b = 0; b < res->nbranches && bx && by && bk; b++)
+    for (int b = 0; b < res->nbranches && bx && by && bk && bloc; b++)
         for (int i = 0; i < res->branch[b].br.nbif; i++) {
             const gd_bifurcation *bf = &res->branch[b].br.bif[i];
             for (int k = 0; k < NKINDS; k++)
                 if (kinds[k].kind == bf->kind) {
                     bx[nb] = gd_contin_value(res, bf->p);
                     by[nb] = resp_value(r, &res->branch[b].bif_meas[i]);
+                    bloc[nb] = bf->location == GD_LOC_LOCATED;
                     bk[nb++] = k;
                     present[k] = 1;
                 }
@@ -295,7 +297,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
     cli_label *lab = malloc(sizeof(cli_label) * (size_t)(nb + 1));
     char (*text)[24] = malloc(sizeof *text * (size_t)(nb + 1));
     int nl = 0;
-    if (obst && lab && text && bx) {
+    if (obst && lab && text && bx && bloc) {
         int o = 0;
         for (int i = 0; i < nb; i++) {
             obst[2 * o] = px_x(f, bx[i]);
@@ -322,7 +324,9 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
             obst[2 * o] = px_x(f, sp->x[i]);
             obst[2 * o++ + 1] = px_y(f, sp->y[i]);
         }
-        /* groups: points of one kind within 40 pixels of the group's last point, in order of x */
+        /* groups: points of one kind and location status within 40 pixels of the group's last point,
+         * in order of x; a point on another of the group (one bifurcation found from the two
+         * branches that cross there) is counted once */
         int *order = malloc(sizeof(int) * (size_t)(nb + 1)), *used = calloc((size_t)nb + 1, sizeof(int));
         for (int i = 0; order && i < nb; i++)
             order[i] = i;
@@ -341,10 +345,12 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
             int cnt = 1;
             for (int z = a + 1; z < nb; z++) {
                 int j = order[z];
-                if (used[j] || bk[j] != bk[i])
+                if (used[j] || bk[j] != bk[i] || bloc[j] != bloc[i])
                     continue;
                 double jx = px_x(f, bx[j]), jy = px_y(f, by[j]);
-                if (hypot(jx - lx, jy - ly) < 40) {
+                if (hypot(jx - lx, jy - ly) < 2) {
+                    used[j] = 1;
+                } else if (hypot(jx - lx, jy - ly) < 40) {
                     used[j] = 1;
                     sx += jx;
                     sy += jy;
@@ -353,10 +359,11 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                     cnt++;
                 }
             }
+            /* "?": not located to the tolerance (bifurcations.csv's location says how it ended) */
             if (cnt > 1)
-                snprintf(text[nl], sizeof text[nl], "%d %s", cnt, kinds[bk[i]].mark);
+                snprintf(text[nl], sizeof text[nl], "%d %s%s", cnt, kinds[bk[i]].mark, bloc[i] ? "" : "?");
             else
-                snprintf(text[nl], sizeof text[nl], "%s", kinds[bk[i]].mark);
+                snprintf(text[nl], sizeof text[nl], "%s%s", kinds[bk[i]].mark, bloc[i] ? "" : "?");
             lab[nl].x = sx / cnt;
             lab[nl].y = sy / cnt;
             lab[nl].w = cli_text_width(text[nl], CLI_FIG_PX);
@@ -407,6 +414,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
     free(bx);
     free(by);
     free(bk);
+    free(bloc);
 }
 
 gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err)
