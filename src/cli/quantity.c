@@ -14,7 +14,7 @@
 static const struct {
     const char *suffix, *unit;
 } suffixes[] = {
-    {"_n_per_mm", "N/mm"}, {"_n_per_m", "N/m"}, {"_per_period", "per mesh period"}, {"_per_s", "1/s"},
+    {"_half_backlash_per_tau", "half backlashes per τ"}, {"_half_backlash", "half backlashes"}, {"_n_per_mm", "N/mm"}, {"_n_per_m", "N/m"}, {"_per_period", "per mesh period"}, {"_per_s", "1/s"},
     {"_mps2", "m/s²"}, {"_mps", "m/s"}, {"_um", "µm"}, {"_mm", "mm"}, {"_hz", "Hz"}, {"_rpm", "rpm"},
     {"_kw", "kW"}, {"_nm", "N m"}, {"_mpa", "MPa"}, {"_gpa", "GPa"}, {"_arcsec", "arcsec"}, {"_deg", "deg"},
     {"_periods", "mesh periods"}, {"_relative", "-"}, {"_kg", "kg"}, {"_s", "s"}, {"_n", "N"},
@@ -210,6 +210,10 @@ int cli_qty_column(const char *column, int halves, cli_qty *q)
             snprintf(q->name + l, sizeof q->name - l, " of the %s", cli_half_words(half, halves));
         }
         copy(q->unit, sizeof q->unit, unit ? unit : stems[i].unit);
+        /* a rate in dimensionless time (the basins' sections): d/dτ, τ = ω_n t */
+        char *dt = strstr(q->sym, "/dt");
+        if (dt && strstr(q->unit, "per τ"))
+            snprintf(dt, sizeof q->sym - (size_t)(dt - q->sym), "/dτ");
         return 1;
     }
     /* not known: the column's words */

@@ -268,12 +268,65 @@ def significant_digits(s):
     return len(digits)
 
 
+def png_colours(href):
+    """The colours (r, g, b) of an image embedded as a PNG (data:image/png;base64): 8-bit RGB or RGBA,
+    not interlaced, as gnuplot writes them; an empty set for anything else."""
+    import base64
+    import zlib
+    m = re.match(r'data:image/png;base64,(.*)$', href.strip(), re.S)
+    if not m:
+        return set()
+    try:
+        data = base64.b64decode(re.sub(r'\s+', '', m.group(1)))
+        pos, idat, hdr = 8, b'', None
+        while pos < len(data):
+            n, kind = struct.unpack('>I4s', data[pos:pos + 8])
+            body = data[pos + 8:pos + 8 + n]
+            if kind == b'IHDR':
+                hdr = struct.unpack('>IIBBBBB', body)
+            elif kind == b'IDAT':
+                idat += body
+            pos += 12 + n
+        w, h, depth, ctype, _, _, interlace = hdr
+        if depth != 8 or ctype not in (2, 6) or interlace:
+            return set()
+        bpp = 3 if ctype == 2 else 4
+        raw = zlib.decompress(idat)
+        stride = w * bpp
+        prev = bytearray(stride)
+        out = set()
+        for r in range(h):
+            f = raw[r * (stride + 1)]
+            line = bytearray(raw[r * (stride + 1) + 1:(r + 1) * (stride + 1)])
+            for i in range(stride):
+                a = line[i - bpp] if i >= bpp else 0
+                b = prev[i]
+                c = prev[i - bpp] if i >= bpp else 0
+                if f == 1:
+                    line[i] = (line[i] + a) & 255
+                elif f == 2:
+                    line[i] = (line[i] + b) & 255
+                elif f == 3:
+                    line[i] = (line[i] + (a + b) // 2) & 255
+                elif f == 4:
+                    pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                    line[i] = (line[i] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+            for i in range(0, stride, bpp):
+                if bpp == 3 or line[i + 3] > 0:
+                    out.add((line[i], line[i + 1], line[i + 2]))
+            prev = line
+        return out
+    except (ValueError, TypeError, struct.error, zlib.error):
+        return set()
+
+
 class Element:
     """A drawn element of a plot: a path (subpaths), markers (use), an image or a filled area."""
 
     def __init__(self, kind, subpaths, colour, dash, width, marker=None, fill=None, opacity=1.0):
         self.kind, self.subpaths, self.colour, self.dash, self.width = kind, subpaths, colour, dash, width
         self.marker, self.fill, self.opacity = marker, fill, opacity
+        self.colours = set()       # an image's colours
 
     def points(self):
         for pts, _ in self.subpaths:
@@ -390,6 +443,8 @@ class Figure:
             x, y = float(el.get('x', 0)), float(el.get('y', 0))
             w, h = float(el.get('width', 0)), float(el.get('height', 0))
             e = Element('image', [([(x, y), (x + w, y), (x + w, y + h), (x, y + h)], True)], None, None, 0)
+            href = el.get(XLINK + 'href') or el.get('href') or ''
+            e.colours = png_colours(href)
             self._add(e, plot)
         elif tag in ('polygon', 'polyline'):
             nums = [float(u) for u in re.findall(r'-?\d+(?:\.\d+)?', el.get('points') or '')]

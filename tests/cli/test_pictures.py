@@ -39,7 +39,8 @@ bifurcation.csv and its Poincare panel is not squashed by one column; regime_map
 inside the swept ranges, its key names the classes that occur and its exponent's colour scale is
 set by the bulk of the cells; gte.png of a pair whose GTE is round-off says so and draws it flat;
 contact_pattern.png draws a path, not a scatter; continuation.png's markers each of their own
-shape (a sweep's points are not bifurcations); the optimiser comparison draws no overlapping
+shape (a sweep's points are not bifurcations) and every row of bifurcations.csv drawn as a marker
+of its kind (branch points too); the optimiser comparison draws no overlapping
 translucent bands.
 
 The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its layout is the PNG's.
@@ -51,6 +52,7 @@ The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its l
                                    its memory checks are the same on every case)
 TAP; python3 standard library.
 """
+import csv
 import glob
 import json
 import math
@@ -102,6 +104,10 @@ SHORTEN = [
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
+    # basins: a coarser picture and smaller samples, five values of the parameter
+    ('cases/basins/ks-hysteresis.ini', ['basins.resolution=60', 'basins.samples=300']),
+    ('cases/basins/ks-fractions.ini', ['basins.points=5', 'basins.samples=200']),
+    ('cases/basins/paper-4750rpm.ini', ['basins.resolution=12', 'basins.samples=40']),
 ]
 
 # variants: pictures no shipped case draws as written: (name, case, --set, a run before it whose
@@ -125,12 +131,30 @@ VARIANTS = [
     ('herringbone-y1L', 'cases/quickstart.ini', ['run.transient_periods=300', 'run.record_periods=60',
                                                  'output.response_variable=y1L'], None),
     ('spur-dte', 'cases/guide/spur.ini', ['output.response_variable=dte_L'], None),
+    # a continuation with branch points, and bifurcations located only to a bracket (the NASA Glenn
+    # spur rig pair in the bta model, as tests/cli/test_continuation_cli.sh runs it)
+    ('spur-branch-points', 'cases/guide/spur.ini',
+     ['scene.analysis=continuation', 'scene.model=bta', 'scene.title=', 'gear.normal_module_mm=3.175',
+      'gear.teeth_pinion=28', 'gear.teeth_gear=28', 'gear.profile_shift_pinion=0', 'gear.profile_shift_gear=0',
+      'gear.face_width_pinion_mm=6.35', 'gear.face_width_gear_mm=6.35', 'gear.bore_diameter_pinion_mm=0',
+      'gear.bore_diameter_gear_mm=0', 'operating.speed_rpm=5000', 'operating.torque_nm=72',
+      'clearance.backlash_um=127', 'excitation.stiffness=harmonic', 'excitation.ste_amplitude_um=10',
+      'continuation.parameter=operating.speed_rpm', 'continuation.from=2000', 'continuation.to=16000',
+      'continuation.branch_switching=off'], None),
+    # the basins with the continuation's orbits marked (basins.png) and its branches (fractions.png)
+    ('ks-basins-continuation', 'cases/basins/ks-hysteresis.ini',
+     ['basins.resolution=60', 'basins.samples=300', 'basins.continuation={before}'],
+     ('cases/continuation/kahraman-singh.ini', ['output.plots=off'])),
+    ('ks-fractions-continuation', 'cases/basins/ks-fractions.ini',
+     ['basins.points=5', 'basins.samples=200', 'basins.continuation={before}'],
+     ('cases/continuation/kahraman-singh.ini', ['output.plots=off'])),
 ]
 
 # the sanitizer build: one run per kind of picture
 SUBSET = {'cases/quickstart.ini', 'cases/guide/spur.ini', 'cases/paper/sweep-speed.ini', 'cases/paper/tca-modified.ini',
           'cases/paper/ltca-modified.ini', 'cases/paper/optimize-alo.ini', 'cases/optimize/compare-test-functions.ini',
-          'cases/accuracy/period1-7000rpm.ini', 'cases/continuation/paper-speed.ini', 'regime-map', 'spur-tca'}
+          'cases/accuracy/period1-7000rpm.ini', 'cases/continuation/paper-speed.ini', 'regime-map', 'spur-tca',
+          'ks-basins-continuation', 'ks-fractions-continuation'}
 
 
 def runs(src):
@@ -178,7 +202,8 @@ SUFFIX_UNITS = [  # column suffix -> the unit as a picture writes it (and its sc
     ('_hz', ['Hz', 'kHz']), ('_rpm', ['rpm']), ('_kw', ['kW', 'MW']), ('_nm', ['N m', 'kN m']),
     ('_n', ['N', 'kN']), ('_mpa', ['MPa', 'GPa']), ('_arcsec', ['arcsec', 'µrad']), ('_deg', ['deg', '°']),
     ('_per_period', ['per mesh period']), ('_per_s', ['1/s']), ('_kg', ['kg']), ('_bytes', ['bytes', 'MB']),
-    ('_periods', ['mesh periods']), ('_relative', ['-']),
+    ('_periods', ['mesh periods']), ('_relative', ['-']), ('_half_backlash', ['half backlashes']),
+    ('_half_backlash_per_tau', ['half backlashes per τ']),
 ]
 SUMMARY_UNITS = {'um': ['µm', 'mm'], 'mm': ['mm'], 'rpm': ['rpm'], 'kW': ['kW'], 'N m': ['N m'], 'N/m': ['N/m', 'N/µm'],
                  'deg': ['deg', '°'], 'per mesh period': ['per mesh period'], 'arcsec': ['arcsec'],
@@ -424,7 +449,7 @@ def check_key(fig, bad):
             colour = st[0] if st else None
             same = [q for q in allplots if q is not p and list(q.data_points()) and
                     (q.style() == st or any((e.colour == colour and (e.kind != 'path' or (e.dash or '') == st[1]))
-                                            or e.fill == colour for e in q.elements))]
+                                            or e.fill == colour or colour in e.colours for e in q.elements))]
             if not same:
                 bad.append('key: the entry %r draws nothing' % p.key_texts[0].s)
                 continue
@@ -873,6 +898,26 @@ def check_continuation(fig, bad):
             bad.append('continuation: %s drawn with the same shape of marker (%s)' % (' and '.join(repr(s) for s in v), k))
 
 
+BIF_MARKS = {'fold': 'F', 'period-doubling': 'PD', 'neimark-sacker': 'NS', 'contact-change': 'C', 'branch-point': 'BP'}
+
+
+def check_continuation_points(fig, outdir, bad):
+    """Every row of bifurcations.csv drawn, as a marker of its kind's key entry ('... (BP)')."""
+    try:
+        rows = list(csv.DictReader(open(os.path.join(outdir, 'bifurcations.csv'), encoding='utf-8')))
+    except OSError:
+        return
+    want = {}
+    for r in rows:
+        want[r['kind']] = want.get(r['kind'], 0) + 1
+    for kind, n in want.items():
+        mark = BIF_MARKS.get(kind)
+        plots = [p for p in fig.plots.values() if p.key_texts and p.key_texts[0].s.endswith('(%s)' % mark)]
+        drawn = sum(1 for p in plots for e in p.elements if e.kind == 'use' for _ in e.points())
+        if drawn != n:
+            bad.append('continuation: %d %s in bifurcations.csv, %d drawn' % (n, kind, drawn))
+
+
 def check_bands(fig, bad):
     for pn in fig.panels:
         fills = []
@@ -937,6 +982,7 @@ def check_picture(path, outdir, keys, single, summary):
         check_path_scatter(fig, bad)
     if name == 'continuation.svg':
         check_continuation(fig, bad)
+        check_continuation_points(fig, os.path.dirname(path), bad)
     if name in ('convergence.svg', 'ecdf.svg'):
         check_bands(fig, bad)
     return bad
