@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerate every figure of docs/figures/ from the shipped cases, with the commands the docs name
 # beside each figure (docs/guide.md, docs/continuation.md, docs/paper-reproduction.md,
-# docs/optimisation.md, docs/accuracy.md), and copy each picture over its figure.
+# docs/optimisation.md, docs/accuracy.md, docs/basins.md), and copy each picture over its figure.
 #
 #   bash scripts/figures.sh [GEARDYN [WORKDIR]]
 #
@@ -100,6 +100,24 @@ fi
 if wanted opt-testfn-ecdf; then
     run compare-test-functions cases/optimize/compare-test-functions.ini --threads 2
     fig opt-testfn-ecdf compare-test-functions/ecdf.png
+fi
+
+# docs/basins.md: Kahraman & Singh at Omega 0.65 and over Omega with the continuation's orbits, the
+# paper's pair at 4750 rpm at 40 x 40 cells and 400 states
+if wanted basins-kahraman-singh basins-kahraman-singh-fractions; then
+    [ -d "$W/kahraman-singh" ] || run kahraman-singh cases/continuation/kahraman-singh.ini
+fi
+if wanted basins-kahraman-singh; then
+    run basins-ks cases/basins/ks-hysteresis.ini --set basins.continuation="$W/kahraman-singh" --threads 2
+    fig basins-kahraman-singh basins-ks/basins.png
+fi
+if wanted basins-kahraman-singh-fractions; then
+    run basins-ks-fractions cases/basins/ks-fractions.ini --set basins.continuation="$W/kahraman-singh" --threads 2
+    fig basins-kahraman-singh-fractions basins-ks-fractions/fractions.png
+fi
+if wanted basins-paper-4750rpm; then
+    run basins-paper cases/basins/paper-4750rpm.ini --set basins.resolution=40 --set basins.samples=400 --threads 2
+    fig basins-paper-4750rpm basins-paper/basins.png
 fi
 
 # docs/accuracy.md: the work-precision diagrams of the five scenes
