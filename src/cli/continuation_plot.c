@@ -24,7 +24,7 @@
 
 /* The response drawn: its value at a measure, its column of branch.csv and of a sweep's tables. */
 typedef struct resp {
-    int kind;
+    int kind, nmesh;
     double scale;
     cli_qty q;
     char label[300];
@@ -37,14 +37,18 @@ static double resp_value(const resp *r, const gd_contin_measure *m)
     case GD_CONT_RESP_MAX_DEFLECTION: return m->lambda_max_um[0];
     case GD_CONT_RESP_MIN_DEFLECTION: return m->lambda_min_um[0];
     case GD_CONT_RESP_POINCARE: return m->lambda_poincare * r->scale;
+    case GD_CONT_RESP_DYNAMIC_LOAD_FACTOR:
+        return r->nmesh > 1 ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0];
     default: return m->rms_accel_mps2[2];
     }
 }
 
 static void resp_of(const gd_case *c, const gd_contin_result *res, resp *r)
 {
-    static const char *col[] = {"rms_accel_mps2", "lambda_max_L_um", "lambda_min_L_um", "lambda_L"};
-    r->kind = c->cont_response >= 0 && c->cont_response <= 3 ? c->cont_response : 0;
+    static const char *col[] = {"rms_accel_mps2", "lambda_max_L_um", "lambda_min_L_um", "lambda_L",
+                                "dynamic_load_factor"};
+    r->kind = c->cont_response >= 0 && c->cont_response <= 4 ? c->cont_response : 0;
+    r->nmesh = res->nmesh;
     r->scale = r->kind == GD_CONT_RESP_POINCARE ? c->characteristic_length_um : 1;
     cli_qty_column(col[r->kind], res->nmesh, &r->q);
     if (r->kind == GD_CONT_RESP_POINCARE) {
@@ -53,7 +57,9 @@ static void resp_of(const gd_case *c, const gd_contin_result *res, resp *r)
     }
     cli_qty_label(&r->q, r->label, sizeof r->label);
     r->sweep_file = r->kind == GD_CONT_RESP_POINCARE ? "bifurcation.csv" : "sweep.csv";
-    r->sweep_col = r->kind == GD_CONT_RESP_POINCARE ? "lambda_L" : "rms_accel_mps2";
+    r->sweep_col = r->kind == GD_CONT_RESP_POINCARE                ? "lambda_L"
+                   : r->kind == GD_CONT_RESP_DYNAMIC_LOAD_FACTOR ? "dynamic_load_factor"
+                                                                 : "rms_accel_mps2";
 }
 
 /* The overlay sweep's points (parameter, response, up 1 / down 0): read from its table. */

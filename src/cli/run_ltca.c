@@ -45,7 +45,7 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
             cli_flank_panel(&s, h, H);
             gd_gnuplot_printf(&s, "set title '%s: load share %.3f, largest pressure %.0f MPa%s'\n",
                               H > 1 ? cli_half_words(h, H) : "the pair", r->load_share[h], r->pressure_max[h] * 1e-6,
-                              r->edge_kinds[h] ? ", edge loading" : "");
+                              r->edge_positions[h] ? ", edge loading" : "");
             gd_gnuplot_printf(&s, "plot 'load_distribution.csv' using (strcol('half') eq '%s' && column('load_n') > 0 ? "
                                   "column('face_mm') : 1/0):'roll_mm':'line_load_n_per_mm' with points pt 7 ps 0.6 "
                                   "lc palette\n",
@@ -116,10 +116,17 @@ void cli_ltca_report(const cli_case_args *a, const char *dir, const gd_case *c, 
         iso = gd_iso6336_mesh_stiffness(&pair, &g);
     printf("%s: LTCA, %d positions, %d slices per half, %s pinion, %.6g N m: LTE %.6g arcsec p-p\n", dir, r->npos,
            r->nslices, r->floating ? "floating" : "fixed", r->torque_nm, r->lte_pp_arcsec);
-    for (int h = 0; h < r->halves; h++)
+    for (int h = 0; h < r->halves; h++) {
         printf("  %-5s mean mesh stiffness %.6g N/m (%.4g .. %.4g; ISO 6336-1 %.4g), load share %.4f, max pressure "
-               "%.0f MPa, edge loading %s\n", half_name[h], r->stiffness_mean[h], r->stiffness_min[h],
-               r->stiffness_max[h], iso, r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_kinds[h] ? "yes" : "no");
+               "%.0f MPa, edge loading %s", half_name[h], r->stiffness_mean[h], r->stiffness_min[h],
+               r->stiffness_max[h], iso, r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_positions[h] ? "yes" : "no");
+        if (r->edge_positions[h])
+            printf(" at %d of %d positions (face-end line load up to %.3g x its line's mean)", r->edge_positions[h],
+                   r->npos, r->edge_ratio_max[h]);
+        if (r->tip_positions[h])
+            printf(", tip contact at %d of %d positions", r->tip_positions[h], r->npos);
+        printf("\n");
+    }
     printf("  %ld active-set iterations, largest residual %.3g m, %.3f s\n", r->iterations, r->max_residual,
            r->wall_s);
 }

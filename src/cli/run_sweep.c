@@ -370,7 +370,7 @@ static const char *model_words(const gd_case *c)
 static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_sweep_plan *p,
                                const gd_sweep_point *pts, const int *has, int mle, int svg)
 {
-    int panels = mle ? 3 : 2, h = 180 + 300 * panels;
+    int panels = mle ? 4 : 3, h = 180 + (panels > 3 ? 250 : 300) * panels;
     double x0, x1;
     param_range(p, 0, 0.025, &x0, &x1);
     char xl[256], title[512], q0[256];
@@ -440,13 +440,18 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
                              "title 'beyond the axis'",
                           off_x, 1e-9 * fmax(1, fabs(off_x)), rc, ylo - tol, rc, yhi + tol, edge, off_v < ylo ? 11 : 9);
     gd_gnuplot_printf(b, "\nunset label 1\nunset key\nset yrange [*:*]\n");
-    const char *what[2] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s²)"};
-    const char *col[2] = {"mle", "rms_accel_mps2"};
-    for (int q = mle ? 0 : 1; q < 2; q++) {
-        if (q == 1)
+    /* sweep.csv's columns: the exponent, the RMS acceleration, the dynamic load factor (the larger
+     * of the meshes') */
+    const char *what[3] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s²)",
+                           "dynamic load factor, largest mesh force over the static (-)"};
+    const char *col[3] = {"mle", "rms_accel_mps2", "dynamic_load_factor"};
+    for (int q = mle ? 0 : 1; q < 3; q++) {
+        if (q == 2)
             gd_gnuplot_printf(b, "unset xzeroaxis\nset format x '%% h'\nset xlabel '%s'\n", xl);
-        else
+        else if (q == 0)
             gd_gnuplot_printf(b, "set xzeroaxis lt -1 lw 0.8\n");
+        else
+            gd_gnuplot_printf(b, "unset xzeroaxis\n");
         gd_gnuplot_printf(b, "set ylabel '%s'\nplot ", what[q]);
         first = 1;
         for (int br = 0; br < 3; br++)
@@ -658,6 +663,24 @@ void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *re
     }
 }
 
+/* Where a point of the summary lines lies: " at key = value unit" and, in a map, the second key; its
+ * branch (up, down) unless the points are independent; and whether it is an end of the range
+ * (the largest value found there may lie beyond it). */
+static void print_where(const gd_sweep_plan *p, const gd_sweep_point *pt)
+{
+    printf(" at %s = %.6g %s", p->parameter[0], pt->value[0], p->unit[0]);
+    if (p->naxes > 1)
+        printf(", %s = %.6g %s", p->parameter[1], pt->value[1], p->unit[1]);
+    if (pt->branch != GD_BRANCH_INDEPENDENT)
+        printf(" (%s branch)", gd_sweep_branch_name(pt->branch));
+    int end = 0;
+    for (int a = 0; a < p->naxes; a++)
+        end |= p->npoints[a] > 1 && (pt->idx[a] == 0 || pt->idx[a] == p->npoints[a] - 1);
+    if (end)
+        printf(", an end of the swept range: the largest may lie beyond it");
+    printf("\n");
+}
+
 /* After summary.json: the journal goes; the summary lines. */
 static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir *out)
 {
@@ -677,7 +700,8 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
     char counts[512] = "";
     const char *seen[24];
     int cnt[24], nseen = 0;
-    double rmax = -INFINITY, rmax_at = NAN, lmax = -INFINITY, lmax_at = NAN;
+    double lmax = -INFINITY, lmax_at = NAN;
+    const gd_sweep_point *rmax = NULL, *dmax = NULL;
     for (int i = 0; i < p->nslots; i++) {
         const gd_sweep_point *pt = &o->pts[i];
         failed += pt->status == GD_POINT_FAILED;
@@ -690,8 +714,12 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
         }
         if (k < nseen)
             cnt[k]++;
-        if (pt->status == GD_POINT_DONE && pt->rms_accel_mps2[2] > rmax)
-            rmax = pt->rms_accel_mps2[2], rmax_at = pt->value[0];
+        if (pt->status == GD_POINT_DONE && (!rmax || pt->rms_accel_mps2[2] > rmax->rms_accel_mps2[2]))
+            rmax = pt;
+        double dlf = fmax(pt->dynamic_load_factor[0], pt->dynamic_load_factor[1]);
+        if (pt->status == GD_POINT_DONE && isfinite(dlf) &&
+            (!dmax || dlf > fmax(dmax->dynamic_load_factor[0], dmax->dynamic_load_factor[1])))
+            dmax = pt;
         if (pt->status == GD_POINT_DONE && isfinite(pt->mle_per_period) && pt->mle_per_period > lmax)
             lmax = pt->mle_per_period, lmax_at = pt->value[0];
     }
@@ -710,9 +738,14 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
         if (s->size > 1)
             printf(" x %d ranks", s->size);
         printf("\n  motion: %s\n", counts);
-        if (isfinite(rmax))
-            printf("  largest RMS mesh acceleration %.6g m/s^2 at %s = %.6g %s\n", rmax, p->parameter[0], rmax_at,
-                   p->unit[0]);
+        if (rmax) {
+            printf("  largest RMS mesh acceleration %.6g m/s^2", rmax->rms_accel_mps2[2]);
+            print_where(p, rmax);
+        }
+        if (dmax) {
+            printf("  largest dynamic load factor %.4g", fmax(dmax->dynamic_load_factor[0], dmax->dynamic_load_factor[1]));
+            print_where(p, dmax);
+        }
         if (isfinite(lmax))
             printf("  largest Lyapunov exponent %.4g per mesh period at %s = %.6g %s\n", lmax, p->parameter[0],
                    lmax_at, p->unit[0]);

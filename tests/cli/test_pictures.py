@@ -356,7 +356,8 @@ def check_units(fig, units, bad):
         if len(s[:m.start()].split()) < 2:
             bad.append('units: %r does not say what quantity it is' % s)
         if u == '-':
-            if DIMENSIONAL.search(s[:m.start()]) and not re.match(r'(order|ratio|fraction|(relative )?error)\b', s):
+            if DIMENSIONAL.search(s[:m.start()]) and not re.match(r'(order|ratio|fraction|(relative )?error|dynamic '
+                                                                    r'load factor)\b', s):
                 bad.append('units: %r says "(-)" for a quantity with a dimension' % s)
             continue
         if u not in units and not COUNT.search(s):
