@@ -51,7 +51,7 @@ static const struct {
     {"order", "order of the mesh frequency", "", "-"},
     {"amplitude", "amplitude", "", ""},
     {"mle", "largest Lyapunov exponent", "", "per mesh period"},
-    {"dynamic_load_factor", "dynamic load factor, largest mesh force over the static", "", "-"},
+    {"dynamic_load_factor", "dynamic load factor", "", "-"},
     {"cpu", "CPU time", "", ""},
     {"err_poincare", "error of the Poincaré points", "", "-"},
     {"err_short_horizon", "error of the trajectory", "", "-"},

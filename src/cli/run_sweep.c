@@ -370,7 +370,7 @@ static const char *model_words(const gd_case *c)
 static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_sweep_plan *p,
                                const gd_sweep_point *pts, const int *has, int mle, int svg)
 {
-    int panels = mle ? 4 : 3, h = 180 + (panels > 3 ? 250 : 300) * panels;
+    int panels = mle ? 4 : 3, h = 180 + 300 * panels;
     double x0, x1;
     param_range(p, 0, 0.025, &x0, &x1);
     char xl[256], title[512], q0[256];
@@ -443,7 +443,7 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
     /* sweep.csv's columns: the exponent, the RMS acceleration, the dynamic load factor (the larger
      * of the meshes') */
     const char *what[3] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s²)",
-                           "dynamic load factor, largest mesh force over the static (-)"};
+                           "dynamic load factor (-)"};
     const char *col[3] = {"mle", "rms_accel_mps2", "dynamic_load_factor"};
     for (int q = mle ? 0 : 1; q < 3; q++) {
         if (q == 2)
