@@ -54,6 +54,18 @@ if wanted guide-spur-sweep; then
     fig guide-spur-sweep spur-sweep/bifurcation.png
 fi
 
+# docs/guide.md section 13: the NASA Glenn spur pair's speed sweep, and its continuation with the
+# sweep over it (the case names the sweep's directory results/nasa-grc-spur-sweep)
+if wanted guide-nasa-sweep guide-nasa-continuation; then
+    run nasa-grc-spur-sweep cases/guide/nasa-grc-spur-sweep.ini --threads 2
+    fig guide-nasa-sweep nasa-grc-spur-sweep/bifurcation.png
+fi
+if wanted guide-nasa-continuation; then
+    run nasa-grc-spur-continuation cases/guide/nasa-grc-spur-continuation.ini \
+        --set continuation.overlay_sweep="$W/nasa-grc-spur-sweep"
+    fig guide-nasa-continuation nasa-grc-spur-continuation/continuation.png
+fi
+
 # docs/continuation.md: Kahraman & Singh by continuation
 if wanted continuation-kahraman-singh; then
     run kahraman-singh cases/continuation/kahraman-singh.ini

@@ -104,6 +104,10 @@ SHORTEN = [
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
+    # the NASA Glenn spur pair: the sweep every 1000 rpm with 40 recorded periods; the continuation
+    # without the sweep its case names in results/ (the variant nasa-overlay draws it over)
+    ('cases/guide/nasa-grc-spur-sweep.ini', ['sweep.points=15', 'run.record_periods=40']),
+    ('cases/guide/nasa-grc-spur-continuation.ini', ['continuation.overlay_sweep=']),
     # basins: a coarser picture and smaller samples, five values of the parameter
     ('cases/basins/ks-hysteresis.ini', ['basins.resolution=60', 'basins.samples=300']),
     ('cases/basins/ks-fractions.ini', ['basins.points=5', 'basins.samples=200']),
@@ -141,6 +145,8 @@ VARIANTS = [
       'clearance.backlash_um=127', 'excitation.stiffness=harmonic', 'excitation.ste_amplitude_um=10',
       'continuation.parameter=operating.speed_rpm', 'continuation.from=2000', 'continuation.to=16000',
       'continuation.branch_switching=off'], None),
+    ('nasa-overlay', 'cases/guide/nasa-grc-spur-continuation.ini', ['continuation.overlay_sweep={before}'],
+     ('cases/guide/nasa-grc-spur-sweep.ini', ['sweep.points=15', 'run.record_periods=40', 'output.plots=off'])),
     # the basins with the continuation's orbits marked (basins.png) and its branches (fractions.png)
     ('ks-basins-continuation', 'cases/basins/ks-hysteresis.ini',
      ['basins.resolution=60', 'basins.samples=300', 'basins.continuation={before}'],
