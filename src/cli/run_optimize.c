@@ -62,18 +62,30 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                                   "mean'\nset xlabel 'pinion angle φ_1 (deg)'\nset ylabel 'loaded transmission error "
                                   "about its mean, gear (arcsec)'\nset key outside below horizontal\n",
                               c->torque_nm);
-            gd_gnuplot_printf(&s, "plot 'lte.csv' using 'phi1_deg':(column('lte_unmodified_arcsec') - %.10g) with linespoints pt 7 ps 0.6 lw 2 lc rgb '%s' "
-                                  "title 'unmodified: %.4f arcsec peak-to-peak', "
-                                  "'' using 'phi1_deg':(column('lte_case_arcsec') - %.10g) with linespoints pt 5 ps 0.6 lw 2 dt 2 lc rgb '%s' "
-                                  "title 'the case''s modification: %.4f arcsec peak-to-peak', "
-                                  "'' using 'phi1_deg':(column('lte_optimum_arcsec') - %.10g) with linespoints pt 9 ps 0.7 lw 3 lc rgb '%s' "
-                                  "title 'optimum: %.4f arcsec peak-to-peak'",
-                              m[0], cli_colour[0], o->lte[0].lte_pp_arcsec, m[1], cli_colour[1],
-                              o->lte[1].lte_pp_arcsec, m[2], cli_colour[4], o->lte[2].lte_pp_arcsec);
+            /* the case's own modification drawn apart only where it differs from the unmodified flank
+             * (a case without one would hide the unmodified curve under its own) */
+            double d = 0, sc = 0;
+            for (int k = 0; k < o->lte[0].npos; k++) {
+                d = fmax(d, fabs(o->lte[1].lte_arcsec[k] - o->lte[0].lte_arcsec[k]));
+                sc = fmax(sc, fabs(o->lte[0].lte_arcsec[k]));
+            }
+            int same = d <= 1e-9 * fmax(sc, 1e-300);
+            gd_gnuplot_printf(&s, "plot 'lte.csv' using 'phi1_deg':(column('lte_unmodified_arcsec') - %.10g) with "
+                                  "linespoints pt 7 ps 0.6 lw 2 lc rgb '%s' title 'unmodified%s: %.4f arcsec "
+                                  "peak-to-peak'",
+                              m[0], cli_colour[0], same ? ", as the case is" : "", o->lte[0].lte_pp_arcsec);
+            if (!same)
+                gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_case_arcsec') - %.10g) with linespoints pt 5 "
+                                      "ps 0.6 lw 2 dt 2 lc rgb '%s' title 'the case''s modification: %.4f arcsec "
+                                      "peak-to-peak'",
+                                  m[1], cli_colour[1], o->lte[1].lte_pp_arcsec);
+            gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_optimum_arcsec') - %.10g) with linespoints pt 9 "
+                                  "ps 0.7 lw 3 lc rgb '%s' title 'optimum: %.4f arcsec peak-to-peak'",
+                              m[2], cli_colour[4], o->lte[2].lte_pp_arcsec);
             if (o->paper)
                 gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_paper_table2_arcsec') - %.10g) with linespoints "
-                                      "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the paper''s Table 2: %.4f arcsec "
-                                      "peak-to-peak'",
+                                      "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the modification published with "
+                                      "the paper''s pair: %.4f arcsec peak-to-peak'",
                                   m[3], cli_colour[2], o->lte[3].lte_pp_arcsec);
             gd_gnuplot_printf(&s, "\n");
             cli_fig_end(&s, 0);
