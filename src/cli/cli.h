@@ -6,6 +6,7 @@
 
 #include "geardyn/geardyn.h"
 #include "gnuplot.h"
+#include "quantity.h"
 
 #define CLI_MAX_SETS 256
 
@@ -89,6 +90,29 @@ void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void 
 void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 /* the four-panel figure of the local analysis (response.png, response.svg) */
 void cli_local_draw(const gd_case *c, const gd_response_outcome *r, gd_run_dir *out);
+/* How the local analysis's variable is drawn (local_analysis.c), for response.png and for
+ * time_history.png and phase.png: its quantity and rate, the window of the time history (the last
+ * periods, as many as a panel width_px wide shows readably), the ranges of the phase plane. */
+typedef struct cli_local_view {
+    cli_qty x, v;
+    char xlabel[256], vlabel[256];
+    size_t i0, p0;            /* first samples of the time window and of the phase portrait */
+    int shown;                /* mesh periods of the time window */
+    double t_from_ms, t_end_ms;
+    double xlo, xhi, vlo, vhi;
+} cli_local_view;
+void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double width_px, cli_local_view *v);
+/* the data blocks $TH (time window) and $PH (phase portrait): samples and the curve through them */
+void cli_local_blocks(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v);
+/* the time history panel ($TH) with key entry key (NULL: no key) and more plots after it (more:
+ * ", ..." or NULL) */
+void cli_local_time_panel(gd_gnuplot_script *s, const cli_local_view *v, const char *title, const char *key,
+                          const char *more);
+/* the phase portrait panel ($PH), with the Poincare points when with_poincare (2: with a key) */
+void cli_local_phase_panel(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v,
+                           const char *title, int with_poincare);
+/* "period-1, single-sided impacts, largest Lyapunov exponent -0.213 per mesh period" */
+void cli_local_motion(const gd_response_result *r, char *buf, size_t len);
 
 void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
                       const char **note);

@@ -1,73 +1,264 @@
 /* The four-panel figure of the local analysis of one operating point (the paper's Figs. 16-42):
  * the chosen response variable's time history, phase portrait, amplitude spectrum and Poincare
- * section, drawn from the tables the response row wrote. */
+ * section, drawn from the tables the response row wrote and from the samples in memory (the
+ * curves through the samples). The time history and the phase portrait of time_history.png and
+ * phase.png (run_response.c) are drawn with the same view. */
 #include "cli.h"
+#include "figure.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
-/* The four panels (PNG and SVG), drawn under temporary names then renamed; a failure is a note. */
+/* The variable's quantity, the window of the time history and the axes of the phase plane. */
+void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double width_px, cli_local_view *v)
+{
+    const gd_model *m = &ro->model;
+    const gd_local *L = &ro->local;
+    memset(v, 0, sizeof *v);
+    int halves = m->nmesh;
+    cli_qty_column(L->name, halves, &v->x);
+    snprintf(v->x.unit, sizeof v->x.unit, "µm"); /* the samples are in um whatever the variable */
+    char rate[64];
+    snprintf(rate, sizeof rate, "%s_rate_mps", L->name);
+    cli_qty_column(rate, halves, &v->v);
+    cli_qty_label(&v->x, v->xlabel, sizeof v->xlabel);
+    cli_qty_label(&v->v, v->vlabel, sizeof v->vlabel);
+    /* the periods of the time history: enough for the motion's period (two of them), few enough
+     * that the highest component of the spectrum within a third of the largest turns at most
+     * every 16 pixels */
+    double fm = m->mesh_freq_hz, amax = 0, kdom = 0.5;
+    for (size_t k = 1; k < L->nfreq; k++)
+        amax = fmax(amax, L->amp_um[k]);
+    for (size_t k = 1; k < L->nfreq; k++)
+        if (L->amp_um[k] >= amax / 3)
+            kdom = fmax(kdom, L->freq_hz[k] / fm);
+    int readable = (int)floor(width_px / (16.0 * kdom));
+    int need = ro->res.period_n > 0 ? 2 * ro->res.period_n : 0;
+    int shown = readable > 20 ? 20 : readable;
+    if (shown < need)
+        shown = need;
+    if (shown < 1)
+        shown = 1;
+    if (shown > c->record_periods)
+        shown = c->record_periods;
+    v->shown = shown;
+    double t_end = L->n ? L->t[L->n - 1] : 0;
+    double t_from = t_end - shown / fm;
+    v->i0 = 0;
+    while (v->i0 + 1 < L->n && L->t[v->i0] < t_from - 1e-12 / fm)
+        v->i0++;
+    /* the phase plane: the last 40 periods at most (a period-n orbit is drawn over and over) */
+    int phase_periods = c->record_periods < 40 ? c->record_periods : 40;
+    double p_from = t_end - phase_periods / fm;
+    v->p0 = 0;
+    while (v->p0 + 1 < L->n && L->t[v->p0] < p_from - 1e-12 / fm)
+        v->p0++;
+    double xlo = INFINITY, xhi = -INFINITY, vlo = INFINITY, vhi = -INFINITY;
+    for (size_t i = 0; i < L->n; i++) {
+        xlo = fmin(xlo, L->x[i]);
+        xhi = fmax(xhi, L->x[i]);
+        vlo = fmin(vlo, L->xd[i]);
+        vhi = fmax(vhi, L->xd[i]);
+    }
+    for (size_t i = 0; i < L->np; i++) {
+        xlo = fmin(xlo, L->px[i]);
+        xhi = fmax(xhi, L->px[i]);
+        vlo = fmin(vlo, L->pxd[i]);
+        vhi = fmax(vhi, L->pxd[i]);
+    }
+    if (!(xhi >= xlo))
+        xlo = xhi = vlo = vhi = 0;
+    cli_pad(xlo, xhi, 0.07, 0, &v->xlo, &v->xhi);
+    cli_pad(vlo, vhi, 0.07, 0, &v->vlo, &v->vhi);
+    v->t_from_ms = 1e3 * L->t[v->i0];
+    v->t_end_ms = 1e3 * t_end;
+    if (!(v->t_end_ms > v->t_from_ms))
+        v->t_end_ms = v->t_from_ms + 1;
+}
+
+/* The data blocks of the view: $TH the time history's window, $PH the phase portrait's periods,
+ * each the samples and the curve through them. */
+void cli_local_blocks(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v)
+{
+    const gd_local *L = &ro->local;
+    /* t in ms, x in um, v in m/s: dx/dt in um/ms = 1e3 * v (m/s) */
+    size_t n = L->n;
+    double *t = malloc((n ? n : 1) * sizeof *t);
+    if (!t) {
+        s->bad = 1;
+        return;
+    }
+    for (size_t i = 0; i < n; i++)
+        t[i] = 1e3 * L->t[i];
+    cli_hermite_block(s, "TH", t, L->x, L->xd, v->i0, n, 1e3);
+    cli_hermite_block(s, "PH", t, L->x, L->xd, v->p0, n, 1e3);
+    free(t);
+}
+
+/* The time history panel: the window of the last periods, over exactly that window. */
+void cli_local_time_panel(gd_gnuplot_script *s, const cli_local_view *v, const char *title, const char *key,
+                          const char *more)
+{
+    gd_gnuplot_printf(s, "set title '%s'\nset xlabel 'time t (ms)'\nset ylabel '%s'\n", title, v->xlabel);
+    gd_gnuplot_printf(s, "set xrange [%.12g:%.12g]\nset yrange [*:*]\n", v->t_from_ms, v->t_end_ms);
+    gd_gnuplot_printf(s, "plot $TH using 1:2 with lines lw 1.3 lc rgb '%s' ", cli_colour[4]);
+    if (key)
+        gd_gnuplot_printf(s, "title '%s'", key);
+    else
+        gd_gnuplot_printf(s, "notitle");
+    gd_gnuplot_printf(s, "%s\n", more ? more : "");
+    gd_gnuplot_printf(s, "set xrange [*:*]\nset yrange [*:*]\n");
+}
+
+/* The phase portrait panel: the curve through the samples of the last periods and, when wanted,
+ * the Poincare points over it. */
+void cli_local_phase_panel(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v,
+                           const char *title, int with_poincare)
+{
+    (void)ro;
+    gd_gnuplot_printf(s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", title, v->xlabel, v->vlabel);
+    gd_gnuplot_printf(s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v->xlo, v->xhi, v->vlo, v->vhi);
+    gd_gnuplot_printf(s, "plot $PH using 2:3 with lines lw 0.8 lc rgb '%s' %s", cli_colour[4],
+                      with_poincare > 1 ? "title 'trajectory (the last periods)'" : "notitle");
+    if (with_poincare)
+        gd_gnuplot_printf(s, ", 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.7 lc rgb '%s' %s",
+                          cli_colour[5], with_poincare > 1 ? "title 'Poincaré points'" : "notitle");
+    gd_gnuplot_printf(s, "\nset xrange [*:*]\nset yrange [*:*]\n");
+}
+
+/* "period-1, single-sided impacts, largest Lyapunov exponent -0.213 per mesh period" */
+void cli_local_motion(const gd_response_result *r, char *buf, size_t len)
+{
+    static const char *impacts[] = {"no impacts", "single-sided impacts", "double-sided impacts"};
+    int reg = r->impact_regime[2];
+    int k = snprintf(buf, len, "%s, %s", r->motion, reg >= 0 && reg <= 2 ? impacts[reg] : "impacts unknown");
+    if (r->n_lyapunov && k > 0 && (size_t)k < len)
+        snprintf(buf + k, len - (size_t)k, ", largest Lyapunov exponent %.3g per mesh period", r->mle_per_period);
+}
+
+/* The spectrum panel: impulses up to the order that holds the largest component and those near
+ * it, a frequency axis of round values on top. */
+static void spectrum_panel(gd_gnuplot_script *s, const gd_case *c, const gd_response_outcome *ro,
+                           const cli_local_view *v)
+{
+    const gd_local *L = &ro->local;
+    double fm = ro->model.mesh_freq_hz, amax = 0, kmax = 0, klast = 0;
+    for (size_t k = 1; k < L->nfreq; k++)
+        if (L->amp_um[k] > amax) {
+            amax = L->amp_um[k];
+            kmax = L->freq_hz[k] / fm;
+        }
+    for (size_t k = 1; k < L->nfreq; k++)
+        if (L->amp_um[k] >= 1e-2 * amax)
+            klast = L->freq_hz[k] / fm;
+    double nyq = c->samples_per_period / 2.0;
+    double top = fmax(kmax + 2, klast + 1);
+    if (top < 5)
+        top = 5;
+    double step = cli_nice_step(top, 8);
+    top = ceil(top / step) * step;
+    if (top > nyq)
+        top = nyq;
+    /* the components of a millionth of the largest and more, the axis down to a third of the
+     * smallest of them drawn (so that each stands above the axis's end) */
+    double cut = amax > 0 ? 1e-6 * amax : 1e-12, ytop = amax > 0 ? amax * 4 : 1, amin = amax > 0 ? amax : 1;
+    for (size_t k = 1; k < L->nfreq && L->freq_hz[k] / fm <= top + 0.25; k++)
+        if (L->amp_um[k] >= cut && L->amp_um[k] < amin)
+            amin = L->amp_um[k];
+    double floor_amp = amin / 3;
+    char name[200];
+    cli_gp_text(v->x.name, name, sizeof name);
+    gd_gnuplot_printf(s, "set title 'Amplitude spectrum of the %d recorded mesh periods (Hann window)'\n",
+                      c->record_periods);
+    gd_gnuplot_printf(s, "set xlabel 'order of the mesh frequency f_m = %.4g Hz (-)'\n", fm);
+    if (v->x.sym[0])
+        gd_gnuplot_printf(s, "set ylabel 'amplitude of %s (µm)'\n", v->x.sym);
+    else
+        gd_gnuplot_printf(s, "set ylabel 'amplitude of the %s (µm)'\n", name);
+    gd_gnuplot_printf(s, "set xrange [%.6g:%.6g]\nset logscale y\nset format y '%s'\nset yrange [%.6g:%.6g]\n",
+                      -0.5, top + 0.5, ytop / floor_amp >= 100 ? "10^{%L}" : "%g", floor_amp, ytop);
+    double fstep = cli_nice_step(top * fm, 6);
+    gd_gnuplot_printf(s, "set link x2\nset x2tics out nomirror (");
+    int first = 1;
+    for (double f = 0; f <= top * fm * (1 + 1e-9); f += fstep) {
+        gd_gnuplot_printf(s, "%s'%.6g' %.12g", first ? "" : ", ", f, f / fm);
+        first = 0;
+    }
+    gd_gnuplot_printf(s, ")\nset xtics nomirror\nset x2label 'frequency f (Hz)'\n");
+    gd_gnuplot_printf(s, "plot 'spectrum.csv' using 'order':(column('amplitude_um') >= %.9g && column('order') <= %.6g ? "
+                         "column('amplitude_um') : 1/0) with impulses lw 1.5 lc rgb '%s' notitle\n", cut,
+                      top + 0.25, cli_colour[4]);
+    gd_gnuplot_printf(s, "unset logscale y\nset format y '%% h'\nset yrange [*:*]\nset xrange [*:*]\nunset x2tics\n"
+                         "unset x2label\nunset link x2\nset xtics mirror\n");
+}
+
 void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir *out)
 {
     const char *dir = gd_run_dir_stage(out);
-    const gd_model *m = &ro->model;
     const gd_response_result *r = &ro->res;
     const gd_local *L = &ro->local;
-    int shown = c->record_periods < 20 ? c->record_periods : 20;
-    double t_end = L->n ? L->t[L->n - 1] : 0, t_from = t_end - shown / m->mesh_freq_hz;
-    double fmax_order = c->samples_per_period / 2.0 < 10 ? c->samples_per_period / 2.0 : 10;
-    static const char *fmt[2][2] = {{"pngcairo size 1400,1000 font ',11'", ".png"},
-                                    {"svg size 1400,1000 dynamic font 'sans,11'", ".svg"}};
-    char script[8192];
-    int n = 0;
-    const char *v = L->name;
-    double floor_amp = L->spec_amax > 0 ? 1e-6 * L->spec_amax : 1e-12;
-    /* the Poincare section in the axes of the phase portrait (a zoom onto a converged point
-     * would only show the integration noise) */
-    double xlo = 0, xhi = 0, vlo = 0, vhi = 0;
-    for (size_t i = 0; i < L->n; i++) {
-        if (i == 0 || L->x[i] < xlo) xlo = L->x[i];
-        if (i == 0 || L->x[i] > xhi) xhi = L->x[i];
-        if (i == 0 || L->xd[i] < vlo) vlo = L->xd[i];
-        if (i == 0 || L->xd[i] > vhi) vhi = L->xd[i];
+    cli_local_view v;
+    cli_local_view_of(c, ro, 600, &v);
+    char motion[200], name[200], title[400];
+    cli_local_motion(r, motion, sizeof motion);
+    cli_qty_label(&v.x, name, sizeof name);
+    /* the variable's name, its unit off, its first letter up */
+    char *paren = strrchr(name, '(');
+    if (paren && paren > name)
+        paren[-1] = '\0';
+    if (name[0] >= 'a' && name[0] <= 'z')
+        name[0] = (char)(name[0] - 'a' + 'A');
+    snprintf(title, sizeof title, "%s: %s", name, motion);
+    gd_gnuplot_script s = {0};
+    cli_local_blocks(&s, ro, &v);
+    char section[160];
+    if (r->poincare_distinct == 1)
+        snprintf(section, sizeof section, "Poincaré section at mesh phase 0: %zu returns to one point", L->np);
+    else
+        snprintf(section, sizeof section, "Poincaré section at mesh phase 0: %zu returns, %d distinct", L->np,
+                 r->poincare_distinct);
+    double pxl = INFINITY, pxh = -INFINITY, pvl = INFINITY, pvh = -INFINITY;
+    for (size_t i = 0; i < L->np; i++) {
+        pxl = fmin(pxl, L->px[i]);
+        pxh = fmax(pxh, L->px[i]);
+        pvl = fmin(pvl, L->pxd[i]);
+        pvh = fmax(pvh, L->pxd[i]);
     }
-    double px = 0.05 * (xhi - xlo) + 1e-9, pv = 0.05 * (vhi - vlo) + 1e-12;
-    xlo -= px;
-    xhi += px;
-    vlo -= pv;
-    vhi += pv;
+    if (pxh > pxl && pvh > pvl) {
+        cli_pad(pxl, pxh, 0.1, 0, &pxl, &pxh);
+        cli_pad(pvl, pvh, 0.1, 0, &pvl, &pvh);
+    }
+    char thtitle[120];
+    snprintf(thtitle, sizeof thtitle, "Time history, the last %d mesh period%s", v.shown, v.shown == 1 ? "" : "s");
     for (int k = 0; k < 2; k++) {
-        n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '.response%s.tmp'\nset datafile separator ','\n"
-            "set multiplot layout 2,2 title '%s: %s, %s, largest Lyapunov exponent %.4g per mesh period'\n"
-            "set grid\nunset key\n"
-            "set title 'Time history (last %d mesh periods)'\nset xlabel 't (ms)'\nset ylabel '%s (um)'\n"
-            "set xrange [%.12g:%.12g]\n"
-            "plot 'variable.csv' every ::1 using ($1*1e3):($1 >= %.12g ? $2 : 1/0) with lines lw 1.2\n"
-            "set xrange [*:*]\n"
-            "set title 'Phase portrait'\nset xlabel '%s (um)'\nset ylabel 'rate (m/s)'\n"
-            "plot 'variable.csv' every ::1 using 2:3 with lines lw 0.6 lc rgb '#4477aa', "
-            "'variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
-            "set title 'Amplitude spectrum (Hann window)'\nset xlabel 'order of the mesh frequency (%.6g Hz)'\n"
-            "set ylabel 'amplitude (um)'\nset xrange [0:%g]\nset x2tics\nset x2label 'frequency (Hz)'\n"
-            "set link x2 via x*%.12g inverse x/%.12g\nset logscale y\nset format y '%%g'\nset yrange [%.6g:*]\n"
-            "plot 'spectrum.csv' every ::1 using 2:($3 > %.6g ? $3 : %.6g) with impulses lw 1.5\n"
-            "unset logscale y\nset yrange [*:*]\nunset x2tics\nunset x2label\nunset link x2\nset xrange [*:*]\n"
-            "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n"
-            "set title 'Poincare section (%d distinct points)'\nset xlabel '%s (um)'\nset ylabel 'rate (m/s)'\n"
-            "plot 'variable_poincare.csv' every ::1 using 1:2 with points pt 7 ps 0.8 lc rgb '#cc2222'\n"
-            "unset multiplot\nunset output\nset xrange [*:*]\nset yrange [*:*]\n",
-            fmt[k][0], fmt[k][1], v, r->motion, gd_impact_regime_name(r->impact_regime[2]),
-            r->n_lyapunov ? r->mle_per_period : 0.0 / 0.0, shown, v, 1e3 * t_from, 1e3 * t_end, t_from, v,
-            m->mesh_freq_hz, fmax_order, m->mesh_freq_hz, m->mesh_freq_hz, floor_amp, floor_amp, floor_amp,
-            xlo, xhi, vlo, vhi, r->poincare_distinct, v);
+        cli_fig_begin(&s, k, 1400, 1000, "response");
+        gd_gnuplot_printf(&s, "set multiplot layout 2,2 title '%s'\n", title);
+        cli_local_time_panel(&s, &v, thtitle, NULL, NULL);
+        cli_local_phase_panel(&s, ro, &v, "Phase portrait, the last periods, and the Poincaré points", 1);
+        spectrum_panel(&s, c, ro, &v);
+        gd_gnuplot_printf(&s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", section, v.xlabel, v.vlabel);
+        /* a cloud of points that spreads over a twentieth of the phase portrait at least: its own
+         * extent; a few, or a tight cloud (a periodic orbit's, whose scatter is the integration's
+         * noise, or a slowly converging one's): the axes of the phase portrait */
+        if (r->poincare_distinct > 8 && pxh - pxl > 0.05 * (v.xhi - v.xlo) && pvh - pvl > 0.05 * (v.vhi - v.vlo))
+            gd_gnuplot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", pxl, pxh, pvl, pvh);
+        else
+            gd_gnuplot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v.xlo, v.xhi, v.vlo, v.vhi);
+        gd_gnuplot_printf(&s, "plot 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.9 lc rgb '%s' notitle\n",
+                          cli_colour[5]);
+        cli_fig_end(&s, 1);
     }
     gd_error perr = {0};
     static const char *names[] = {"response"};
-    if (gd_gnuplot_draw(dir, script, names, 1, &perr) == GD_OK) {
+    gd_status st = s.bad ? gd_error_set(&perr, GD_ERR_NOMEM, "out of memory for the gnuplot script")
+                         : gd_gnuplot_draw(dir, s.p, names, 1, &perr);
+    free(s.p);
+    if (st == GD_OK) {
         gd_run_dir_add(out, "response.png", NULL);
         gd_run_dir_add(out, "response.svg", NULL);
     } else {
         fprintf(stderr, "geardyn: note: the four-panel picture was not drawn: %s\n", perr.msg);
     }
 }
-

@@ -1,6 +1,7 @@
 /* The `optimize` analysis on the command line (docs/optimisation.md): a line per run as it
  * finishes, the pictures of the convergence and (the gear) of the LTE, the summary lines. */
 #include "cli.h"
+#include "figure.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -19,55 +20,84 @@ void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const g
 
 static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outcome *o, gd_error *err)
 {
-    static const char *fmt[2][2] = {{"pngcairo size 1100,700 font ',11'", ".png"},
-                                    {"svg size 1100,700 dynamic font 'sans,11'", ".svg"}};
     static const char *names[NPICS] = {"convergence", "lte"};
     int npics = o->gear ? 2 : 1;
-    char script[16384];
-    int n = 0;
     const gd_opt_result *b = &o->res[o->best];
-    n += snprintf(script + n, sizeof script - n, "set datafile separator ','\n");
+    gd_gnuplot_script s = {0};
+    char obj[160];
+    if (o->gear)
+        snprintf(obj, sizeof obj, "the LTE of the gear pair");
+    else
+        cli_gp_text(gd_opt_objective_name(o->objective), obj, sizeof obj);
     for (int fi = 0; fi < 2; fi++) {
-        n += snprintf(script + n, sizeof script - n,
-            "set terminal %s\nset output '.convergence%s.tmp'\n"
-            "set title '%s on %s (%d variables): %d run%s of %ld evaluations, best %.6g%s' noenhanced\n"
-            "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\nset grid\nset key top right\n"
-            "plot 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):4 with points pt 7 ps 0.25 lc rgb '#b0b0b0' "
-            "title 'every evaluation (best run)'",
-            fmt[fi][0], fmt[fi][1], gd_opt_algorithm_name(c->opt_algorithm), gd_opt_objective_name(o->objective),
-            o->dim, o->runs, o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " arcsec" : "",
-            o->gear ? "LTE peak-to-peak (arcsec)" : "objective", o->best + 1);
-        for (int r = 0; r < o->runs && r < 20; r++)
-            n += snprintf(script + n, sizeof script - n, ", 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):5 "
-                          "with lines lw %d title 'best so far, run %d'", r + 1, r == o->best ? 3 : 1, r + 1);
-        n += snprintf(script + n, sizeof script - n, "\nunset output\nunset logscale y\n");
+        cli_fig_begin(&s, fi, 1250, 720, "convergence");
+        gd_gnuplot_printf(&s, "set title '%s on %s (%d variable%s): %d run%s of %ld evaluations, best %.6g%s'\n",
+                          cli_optimizer_words(c->opt_algorithm), obj, o->dim, o->dim == 1 ? "" : "s", o->runs,
+                          o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " arcsec" : "");
+        gd_gnuplot_printf(&s, "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\n"
+                              "set format y '%%g'\nset key outside right top vertical Left reverse\n",
+                          o->gear ? "peak-to-peak loaded transmission error (arcsec)" : "objective value f (-)");
+        gd_gnuplot_printf(&s, "plot 'convergence.csv' using (column('run') == %d ? column('evaluation') : 1/0):"
+                              "(column('f') > 0 ? column('f') : 1/0) with points pt 7 ps 0.3 lc rgb '#999999' "
+                              "title 'every evaluation of the best run'",
+                          o->best + 1);
+        for (int r = 0; r < o->runs && r < 20; r++) {
+            const char *colour;
+            int dash;
+            cli_series_style(r, &colour, &dash);
+            gd_gnuplot_printf(&s, ", 'convergence.csv' using (column('run') == %d ? column('evaluation') : 1/0):"
+                                  "(column('best_f') > 0 ? column('best_f') : 1/0) with lines lw %g dt %d lc rgb '%s' "
+                                  "title 'best so far, run %d%s'",
+                              r + 1, r == o->best ? 3.0 : 1.3, dash, colour, r + 1, r == o->best ? " (the best)" : "");
+        }
+        gd_gnuplot_printf(&s, "\n");
+        cli_fig_end(&s, 0);
         if (o->gear) {
             int nl = o->paper ? 4 : 3;
             double m[4];
             for (int j = 0; j < nl; j++)
                 m[j] = o->lte[j].lte_mean_arcsec;
-            n += snprintf(script + n, sizeof script - n,
-                "set terminal %s\nset output '.lte%s.tmp'\n"
-                "set title 'Loaded transmission error over one mesh cycle, %.0f N m (about each mean)'\n"
-                "set xlabel 'pinion angle (deg)'\nset ylabel 'LTE (arcsec of the gear)'\nset key bottom right\n"
-                "plot 'lte.csv' every ::1 using 1:($2 - %.10g) with linespoints pt 7 ps 0.5 lw 2 "
-                "title sprintf('unmodified: %.4f arcsec p-p'), "
-                "'' every ::1 using 1:($3 - %.10g) with linespoints pt 5 ps 0.5 lw 2 dt 2 "
-                "title sprintf('the case''s modification: %.4f arcsec p-p'), "
-                "'' every ::1 using 1:($4 - %.10g) with linespoints pt 9 ps 0.6 lw 3 "
-                "title sprintf('optimum: %.4f arcsec p-p')",
-                fmt[fi][0], fmt[fi][1], c->torque_nm, m[0], o->lte[0].lte_pp_arcsec, m[1],
-                o->lte[1].lte_pp_arcsec, m[2], o->lte[2].lte_pp_arcsec);
+            cli_fig_begin(&s, fi, 1250, 680, "lte");
+            gd_gnuplot_printf(&s, "set title 'Loaded transmission error over one mesh cycle, %.0f N m, each about its "
+                                  "mean'\nset xlabel 'pinion angle φ_1 (deg)'\nset ylabel 'loaded transmission error "
+                                  "about its mean, gear (arcsec)'\nset key outside below horizontal\n",
+                              c->torque_nm);
+            /* the case's own modification drawn apart only where it differs from the unmodified flank
+             * (a case without one would hide the unmodified curve under its own) */
+            double d = 0, sc = 0;
+            for (int k = 0; k < o->lte[0].npos; k++) {
+                d = fmax(d, fabs(o->lte[1].lte_arcsec[k] - o->lte[0].lte_arcsec[k]));
+                sc = fmax(sc, fabs(o->lte[0].lte_arcsec[k]));
+            }
+            int same = d <= 1e-9 * fmax(sc, 1e-300);
+            gd_gnuplot_printf(&s, "plot 'lte.csv' using 'phi1_deg':(column('lte_unmodified_arcsec') - %.10g) with "
+                                  "linespoints pt 7 ps 0.6 lw 2 lc rgb '%s' title 'unmodified%s: %.4f arcsec "
+                                  "peak-to-peak'",
+                              m[0], cli_colour[0], same ? ", as the case is" : "", o->lte[0].lte_pp_arcsec);
+            if (!same)
+                gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_case_arcsec') - %.10g) with linespoints pt 5 "
+                                      "ps 0.6 lw 2 dt 2 lc rgb '%s' title 'the case''s modification: %.4f arcsec "
+                                      "peak-to-peak'",
+                                  m[1], cli_colour[1], o->lte[1].lte_pp_arcsec);
+            gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_optimum_arcsec') - %.10g) with linespoints pt 9 "
+                                  "ps 0.7 lw 3 lc rgb '%s' title 'optimum: %.4f arcsec peak-to-peak'",
+                              m[2], cli_colour[4], o->lte[2].lte_pp_arcsec);
             if (o->paper)
-                n += snprintf(script + n, sizeof script - n,
-                    ", '' every ::1 using 1:($5 - %.10g) with linespoints pt 4 ps 0.5 lw 1 dt 3 "
-                    "title sprintf('the paper''s Table 2: %.4f arcsec p-p')", m[3], o->lte[3].lte_pp_arcsec);
-            n += snprintf(script + n, sizeof script - n, "\nunset output\n");
+                gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_paper_table2_arcsec') - %.10g) with linespoints "
+                                      "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the modification published with "
+                                      "the paper''s pair: %.4f arcsec peak-to-peak'",
+                                  m[3], cli_colour[2], o->lte[3].lte_pp_arcsec);
+            gd_gnuplot_printf(&s, "\n");
+            cli_fig_end(&s, 0);
         }
     }
-    if (n >= (int)sizeof script)
-        return gd_error_set(err, GD_ERR_INTERNAL, "gnuplot script too long");
-    return gd_gnuplot_draw(dir, script, names, npics, err);
+    if (s.bad) {
+        free(s.p);
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
+    }
+    gd_status st = gd_gnuplot_draw(dir, s.p, names, npics, err);
+    free(s.p);
+    return st;
 }
 
 void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,

@@ -171,6 +171,7 @@ gd_status gd_summary_write_compare(gd_run_dir *d, const gd_case *c, const gd_opt
         json_object_set_new(o, "objective", json_string(gd_opt_objective_name(pb[p].objective)));
         json_object_set_new(o, "dimension", json_integer(pb[p].dim));
         json_object_set_new(o, "shift", gd_json_num(pb[p].shift));
+        json_object_set_new(o, "objective_unit", json_string(pb[p].objective == GD_OBJ_GEAR_LTE ? "arcsec" : ""));
         json_object_set_new(o, "f_ref", gd_json_num(r->f_ref));
         json_object_set_new(o, "f_ref_is", json_string(r->f_ref_known ? "the known minimum"
                                                                        : "the best value found by any run"));

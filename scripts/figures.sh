@@ -1,0 +1,142 @@
+#!/usr/bin/env bash
+# Regenerate every figure of docs/figures/ from the shipped cases, with the commands the docs name
+# beside each figure (docs/guide.md, docs/continuation.md, docs/paper-reproduction.md,
+# docs/optimisation.md, docs/accuracy.md, docs/basins.md), and copy each picture over its figure.
+#
+#   bash scripts/figures.sh [GEARDYN [WORKDIR]]
+#
+# GEARDYN: the executable (default build/src/cli/geardyn); WORKDIR: where the runs go (default a new
+# directory under /tmp, kept: its results hold every table a figure was drawn from). ONLY=REGEX
+# regenerates the figures whose names match (ONLY='^wp-' the work-precision diagrams). Prints one
+# line per figure and the time each run took. The optimiser comparisons on the gear are the long
+# runs (tens of minutes of CPU each), then the work-precision studies (45 s to 8 min each).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+REPO=$(pwd)
+G=${1:-build/src/cli/geardyn}
+case "$G" in /*) ;; *) G="$REPO/$G" ;; esac
+[ -x "$G" ] || { echo "figures: not an executable: $G" >&2; exit 2; }
+W=${2:-$(mktemp -d /tmp/geardyn-figures.XXXXXX)}
+mkdir -p "$W"
+W=$(cd "$W" && pwd)
+ONLY=${ONLY:-.}
+FIG="$REPO/docs/figures"
+
+wanted() { # any of the figure names matches ONLY
+    local f
+    for f in "$@"; do [[ $f =~ $ONLY ]] && return 0; done
+    return 1
+}
+
+# run OUT CASE [ARGS...]: geardyn run CASE ARGS --out WORKDIR/OUT, from the repository (the cases'
+# relative paths, and an overlay sweep named relative to it)
+run() {
+    local out=$1 case=$2
+    shift 2
+    local t0=$SECONDS
+    "$G" run "$case" "$@" --out "$W/$out" --quiet
+    echo "  $case $* -> $W/$out ($((SECONDS - t0)) s)"
+}
+
+# fig NAME PICTURE: copy WORKDIR/PICTURE over docs/figures/NAME.png
+fig() {
+    cp "$W/$2" "$FIG/$1.png"
+    echo "docs/figures/$1.png <- $2"
+}
+
+# docs/guide.md: the spur pair's response and speed sweep
+if wanted guide-spur-response; then
+    run spur cases/guide/spur.ini
+    fig guide-spur-response spur/response.png
+fi
+if wanted guide-spur-sweep; then
+    run spur-sweep cases/guide/spur-sweep.ini --threads 2
+    fig guide-spur-sweep spur-sweep/bifurcation.png
+fi
+
+# docs/guide.md section 13: the NASA Glenn spur pair's speed sweep, and its continuation with the
+# sweep over it (the case names the sweep's directory results/nasa-grc-spur-sweep)
+if wanted guide-nasa-sweep guide-nasa-continuation; then
+    run nasa-grc-spur-sweep cases/guide/nasa-grc-spur-sweep.ini --threads 2
+    fig guide-nasa-sweep nasa-grc-spur-sweep/bifurcation.png
+fi
+if wanted guide-nasa-continuation; then
+    run nasa-grc-spur-continuation cases/guide/nasa-grc-spur-continuation.ini \
+        --set continuation.overlay_sweep="$W/nasa-grc-spur-sweep"
+    fig guide-nasa-continuation nasa-grc-spur-continuation/continuation.png
+fi
+
+# docs/continuation.md: Kahraman & Singh by continuation
+if wanted continuation-kahraman-singh; then
+    run kahraman-singh cases/continuation/kahraman-singh.ini
+    fig continuation-kahraman-singh kahraman-singh/continuation.png
+fi
+
+# docs/paper-reproduction.md: the speed sweeps, and the sweep beside its continuation
+if wanted paper-speed-100-8000rpm-modified; then
+    run sweep-speed cases/paper/sweep-speed.ini --threads 2
+    fig paper-speed-100-8000rpm-modified sweep-speed/bifurcation.png
+fi
+if wanted paper-speed-1000-3400rpm-modified; then
+    run sweep-speed-1000-3400 cases/paper/sweep-speed.ini --set sweep.from=1000 --set sweep.to=3400 \
+        --set sweep.points=49 --threads 2
+    fig paper-speed-1000-3400rpm-modified sweep-speed-1000-3400/bifurcation.png
+fi
+if wanted paper-speed-sweep-3000-5500rpm paper-speed-continuation-3000-5500rpm; then
+    run sweep-3000-5500 cases/paper/sweep-speed.ini --set sweep.from=3000 --set sweep.to=5500 --set sweep.points=26 \
+        --set run.lyapunov_exponents=0 --threads 2
+    run paper-speed cases/continuation/paper-speed.ini --set continuation.overlay_sweep="$W/sweep-3000-5500"
+    fig paper-speed-sweep-3000-5500rpm sweep-3000-5500/bifurcation.png
+    fig paper-speed-continuation-3000-5500rpm paper-speed/continuation.png
+fi
+
+# docs/optimisation.md: ALO on the gear, the optimisers on the gear at two budgets and on the test
+# functions
+if wanted opt-alo-lte opt-alo-load-distribution opt-alo-convergence; then
+    run optimize-alo cases/paper/optimize-alo.ini --threads 2
+    fig opt-alo-lte optimize-alo/lte.png
+    fig opt-alo-load-distribution optimize-alo/optimum/load_distribution.png
+    fig opt-alo-convergence optimize-alo/convergence.png
+fi
+if wanted opt-gear400-convergence opt-gear400-ecdf; then
+    run compare-optimizers cases/paper/compare-optimizers.ini --threads 2
+    fig opt-gear400-convergence compare-optimizers/convergence.png
+    fig opt-gear400-ecdf compare-optimizers/ecdf.png
+fi
+if wanted opt-gear3030-convergence; then
+    run compare-optimizers-3030 cases/paper/compare-optimizers.ini \
+        --set optimize.optimizers=alo,gn_esch,gn_crs2_lm,gn_direct_l,random --set optimize.runs=5 \
+        --set optimize.budget_evals=3030 --set optimize.population=30 --threads 2
+    fig opt-gear3030-convergence compare-optimizers-3030/convergence.png
+fi
+if wanted opt-testfn-ecdf; then
+    run compare-test-functions cases/optimize/compare-test-functions.ini --threads 2
+    fig opt-testfn-ecdf compare-test-functions/ecdf.png
+fi
+
+# docs/basins.md: Kahraman & Singh at Omega 0.65 and over Omega with the continuation's orbits, the
+# paper's pair at 4750 rpm at 40 x 40 cells and 400 states
+if wanted basins-kahraman-singh basins-kahraman-singh-fractions; then
+    [ -d "$W/kahraman-singh" ] || run kahraman-singh cases/continuation/kahraman-singh.ini
+fi
+if wanted basins-kahraman-singh; then
+    run basins-ks cases/basins/ks-hysteresis.ini --set basins.continuation="$W/kahraman-singh" --threads 2
+    fig basins-kahraman-singh basins-ks/basins.png
+fi
+if wanted basins-kahraman-singh-fractions; then
+    run basins-ks-fractions cases/basins/ks-fractions.ini --set basins.continuation="$W/kahraman-singh" --threads 2
+    fig basins-kahraman-singh-fractions basins-ks-fractions/fractions.png
+fi
+if wanted basins-paper-4750rpm; then
+    run basins-paper cases/basins/paper-4750rpm.ini --set basins.resolution=40 --set basins.samples=400 --threads 2
+    fig basins-paper-4750rpm basins-paper/basins.png
+fi
+
+# docs/accuracy.md: the work-precision diagrams of the five scenes
+for s in period1-7000rpm periodn-2000rpm chaotic-1500rpm rattle-4000rpm stiff-supports; do
+    if wanted "wp-$s"; then
+        run "wp-$s" "cases/accuracy/$s.ini"
+        fig "wp-$s" "wp-$s/work_precision.png"
+    fi
+done
+echo "results in $W"
