@@ -48,6 +48,15 @@ void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_c
                    br->bif[i].location != GD_LOC_LOCATED ? gd_bif_location_name(br->bif[i].location) : "",
                    br->bif[i].location != GD_LOC_LOCATED ? ")" : "");
     }
+    for (int i = 0; i < res->ncurves; i++) {
+        const gd_curve *cv = &res->curve[i].cv;
+        const gd_curve_point *z = &cv->pt[cv->npoints - 1];
+        printf("  curve %d, %s%s%s, period %d, from branch %d, %s in %s: %d points to (%.10g, %.10g) (%s)\n", i,
+               gd_curve_kind_name(cv->kind), cv->clearance >= 0 ? " of " : "",
+               cv->clearance >= 0 ? res->clear_name[cv->clearance] : "", cv->nper, res->curve[i].branch,
+               res->curve[i].direction > 0 ? "up" : "down", res->parameter2, cv->npoints, gd_contin_value(res, z->orbit.p),
+               z->p2 * res->scale2, cv->end_reason);
+    }
     for (int i = 0; i < res->nnotes; i++)
         printf("  note: %s\n", res->notes[i]);
 }
