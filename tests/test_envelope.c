@@ -18,7 +18,14 @@
  *    1e-8 relative in Omega.
  * 4. No curve ends on a change of its orbit's contact events inside the box: the lower fold curve runs
  *    down to F_a 0.05 (an event that crosses the start of the orbit rotates the order of its events
- *    and is no contact change; a fingerprint of the events in their order ended it at F_a 0.051). */
+ *    and is no contact change; a fingerprint of the events in their order would end it at F_a 0.051).
+ * 5. Neimark-Sacker, on a system whose multipliers are known: y' = [[s, -w], [w, s]] y + (1e-3 cos t, 0)
+ *    with s = p1 - p2^2, w = 0.2 + 0.5 p2 (period 2 pi) has the multipliers exp(2 pi (s +- i w)), so
+ *    its Neimark-Sacker curve is p1 = p2^2 with kappa = cos(2 pi w). Followed from p2 = 0.05 both ways
+ *    in p2 0 .. 0.7: p1 = p2^2 and kappa to 1e-8 at every point, and the strong resonances 1:4
+ *    (w = 1/4, p2 = 0.1) and 1:3 (w = 1/3, p2 = 0.2667) located there to 1e-8. (At w = 1/2, p2 = 0.6,
+ *    the pair of this rotation touches -1 and leaves it again, kappa's minimum: no 1:2 point, and the
+ *    curve runs on to the bound.) */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_envelope.h"
@@ -109,8 +116,113 @@ static void follow(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bifurca
         au_die(&e);
 }
 
+/* check 5: the linear rotation with known multipliers */
+typedef struct rot {
+    double p1, p2;
+    gd_custom_system sys;
+} rot;
+static double rot_s(const rot *R) { return R->p1 - R->p2 * R->p2; }
+static double rot_w(double p2) { return 0.2 + 0.5 * p2; }
+static void rot_rhs(double t, const double *y, double *yd, void *ctx)
+{
+    const rot *R = ctx;
+    double s = rot_s(R), w = rot_w(R->p2);
+    yd[0] = s * y[0] - w * y[1] + 1e-3 * cos(t);
+    yd[1] = w * y[0] + s * y[1];
+}
+static void rot_tangent(double t, const double *y, const double *v, double *out, void *ctx)
+{
+    (void)t;
+    (void)y;
+    const rot *R = ctx;
+    double s = rot_s(R), w = rot_w(R->p2);
+    out[0] = s * v[0] - w * v[1];
+    out[1] = w * v[0] + s * v[1];
+}
+static gd_status rot_at(double p1, double p2, gd_model *m, void *ctx, gd_error *err)
+{
+    (void)err;
+    rot *R = ctx;
+    R->p1 = p1;
+    R->p2 = p2;
+    gd_model_custom(m, &R->sys, 2.0 * M_PI);
+    return GD_OK;
+}
+
+static void neimark_sacker(void)
+{
+    rot R;
+    memset(&R, 0, sizeof R);
+    R.sys.n = 2;
+    R.sys.rhs = rot_rhs;
+    R.sys.tangent = rot_tangent;
+    R.sys.ctx = &R;
+    gd_solver_opts o;
+    memset(&o, 0, sizeof o);
+    o.method = GD_METHOD_ERK;
+    o.order = 5;
+    o.rtol = 1e-11;
+    o.atol = 1e-13;
+    o.max_step_fraction = 1.0;
+    o.max_events_per_period = 10;
+    o.max_separated_periods = 10;
+    o.root_finding = 1;
+    gd_curve_opts co;
+    gd_curve_opts_default(&co);
+    co.p_min[0] = -0.5;
+    co.p_max[0] = 1.0;
+    co.p_min[1] = 0.0;
+    co.p_max[1] = 0.7;
+    gd_curve_start s;
+    memset(&s, 0, sizeof s);
+    s.kind = GD_CURVE_NEIMARK_SACKER;
+    s.nper = 1;
+    s.clearance = -1;
+    s.p1 = 0.0025;
+    s.p2 = 0.05;
+    for (int dir = -1; dir <= 1; dir += 2) {
+        gd_error e = {0};
+        gd_curve cv;
+        co.direction = dir;
+        if (gd_curve_follow(rot_at, &R, &o, &co, &s, &cv, &e) != GD_OK)
+            au_die(&e);
+        double w1 = 0, wk = 0;
+        for (int i = 0; i < cv.npoints; i++) {
+            double p1 = cv.pt[i].orbit.p, p2 = cv.pt[i].p2;
+            w1 = fmax(w1, fabs(p1 - p2 * p2));
+            wk = fmax(wk, fabs(cv.pt[i].kappa - cos(2.0 * M_PI * rot_w(p2))));
+        }
+        printf("# Neimark-Sacker curve %s: %d points, %ld corrections, %ld Newton iterations: %s\n",
+               dir > 0 ? "up" : "down", cv.npoints, cv.corrections, cv.newton_iterations, cv.end_reason);
+        for (int i = 0; i < cv.nc2; i++)
+            printf("#   %s at (%.10f, %.10f), kappa %.10f, location %s\n", gd_codim2_kind_name(cv.c2[i].kind),
+                   cv.c2[i].p1, cv.c2[i].p2, cv.c2[i].kappa, gd_bif_location_name(cv.c2[i].location));
+        double top = dir > 0 ? 0.7 : 0.0;
+        tap_ok(cv.end == GD_CEND_BOUND && fabs(cv.pt[cv.npoints - 1].p2 - top) < 1e-12,
+               "Neimark-Sacker curve %s: to the bound p2 = %g (%s)", dir > 0 ? "up" : "down", top, cv.end_reason);
+        tap_ok(w1 < 1e-8 && wk < 1e-8, "Neimark-Sacker curve %s: p1 = p2^2 to %.2g, kappa = cos(2 pi w) to %.2g at "
+               "every point", dir > 0 ? "up" : "down", w1, wk);
+        if (dir > 0) {
+            const double want[2] = {0.1, 0.8 / 3.0};
+            const int kind[2] = {GD_C2_R4, GD_C2_R3};
+            int found = 0;
+            for (int j = 0; j < 2; j++)
+                for (int i = 0; i < cv.nc2; i++)
+                    if (cv.c2[i].kind == kind[j] && fabs(cv.c2[i].p2 - want[j]) < 1e-8 &&
+                        fabs(cv.c2[i].p1 - want[j] * want[j]) < 1e-8)
+                        found++;
+            tap_ok(found == 2 && cv.nc2 == 2, "the strong resonances 1:4 at p2 = 0.1 and 1:3 at p2 = 0.2667 located "
+                   "to 1e-8, and no other codimension-two point (%d found, %d of them right)", cv.nc2, found);
+        } else {
+            tap_ok(cv.nc2 == 0, "no codimension-two point below p2 = 0.05 (%d)", cv.nc2);
+        }
+        gd_curve_free(&cv);
+    }
+}
+
 int main(void)
 {
+    neimark_sacker();
     gd_case c;
     gd_model m;
     gd_solver_opts o;

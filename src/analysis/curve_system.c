@@ -391,8 +391,10 @@ static gd_status par_runs(csys *S, const double *u, jacx *x, gd_error *err)
                 for (int i = 0; i < n; i++)
                     for (int di = 0; di < nd; di++)
                         V[i * nd + di] = x->Rd[di][k][i];
+                /* more directions than the state has (Neimark-Sacker on n < 4): the whole monodromy, applied */
+                const int whole = nd > n;
                 gd_map_probe pr;
-                st = seg_run(S, &m, k, u + k * n, phi, nd, nd ? V : NULL, &pr, NULL, err);
+                st = seg_run(S, &m, k, u + k * n, phi, whole ? n : nd, whole ? NULL : nd ? V : NULL, &pr, NULL, err);
                 if (st != GD_OK) {
                     S->m = keep;
                     return st;
@@ -403,8 +405,11 @@ static gd_status par_runs(csys *S, const double *u, jacx *x, gd_error *err)
                 }
                 memcpy(yv[side][k], pr.y1, sizeof(double) * (size_t)n);
                 for (int di = 0; di < nd; di++)
-                    for (int i = 0; i < n; i++)
-                        Tv[side][di][k][i] = pr.T1[i * nd + di];
+                    if (whole)
+                        matvec(n, pr.T1, x->Rd[di][k], Tv[side][di][k]);
+                    else
+                        for (int i = 0; i < n; i++)
+                            Tv[side][di][k][i] = pr.T1[i * nd + di];
                 if (pr.t_probe >= 0) {
                     gd_model_clearance(&m, S->gclr, pr.t_probe, pr.yp, &pr.mdp, &xg[side], &xdg[side]);
                 }

@@ -1,5 +1,6 @@
-/* The `continuation` analysis on the command line: progress per branch, the picture
- * (continuation_plot.c) and the branches and bifurcations found, on stdout. */
+/* The `continuation` analysis on the command line: progress per branch, the pictures
+ * (continuation_plot.c; curves_plot.c with continuation.parameter2) and the branches, bifurcations
+ * and curves found, on stdout. */
 #include "cli.h"
 
 #include <stdio.h>
@@ -21,6 +22,13 @@ void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const v
         gd_status pst = cli_continuation_draw(gd_run_dir_stage(out), c, result, &perr);
         static const char *pics[] = {"continuation.png", "continuation.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 2, out);
+        const gd_contin_result *res = result;
+        if (res->ncurves > 0) {
+            gd_error cerr = {0};
+            gd_status cst = cli_curves_draw(gd_run_dir_stage(out), c, res, &cerr);
+            static const char *cpics[] = {"curves.png", "curves.svg"};
+            gd_gnuplot_drawn(cst, &cerr, cpics, 2, out);
+        }
     }
 }
 

@@ -7,7 +7,8 @@
 # (each both ways), every one ending on the box; the grazing curve on its closed form
 # F_a Omega^2 = F_m sqrt((1 - Omega^2)^2 + (2 zeta Omega)^2) to 1e-8 at every point; on every fold
 # and period-doubling point tr M = +-(1 + det M) with det M = exp(-4 pi zeta / Omega) (one degree of
-# freedom, Liouville) to 1e-8; the curves pass through the branch's bifurcations. Bad keys are
+# freedom, Liouville) to 1e-8; the curves pass through the branch's bifurcations; with gnuplot,
+# curves.png and curves.svg are drawn and listed. Bad keys are
 # refused with exit 2 naming file, line and key, and nothing is written. TAP output.
 . "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 KS="$SRC/cases/continuation/kahraman-singh-curves.ini"
@@ -16,11 +17,15 @@ KS="$SRC/cases/continuation/kahraman-singh-curves.ini"
 grep -Eq "^parameter2 = excitation.ste_amplitude_um +; file line" "$work/check.txt"; ok $? "check lists continuation.parameter2"
 
 out="$work/ks"
-"$G" run "$KS" --out "$out" --quiet --set output.plots=off > "$work/run.txt" 2>&1
+"$G" run "$KS" --out "$out" --quiet --set output.plots=on > "$work/run.txt" 2>&1
 ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
 for f in branch.csv bifurcations.csv curves.csv summary.json; do
     [ -s "$out/$f" ]; ok $? "wrote $f"
 done
+if command -v gnuplot > /dev/null; then
+    [ -s "$out/curves.png" ] && [ -s "$out/curves.svg" ] && grep -q '"curves.png"' "$out/summary.json"
+    ok $? "the curves' picture drawn (PNG, SVG) and listed"
+fi
 python3 - "$out" > "$work/checks.txt" <<'PY'
 import csv, json, math, sys
 d = sys.argv[1]
