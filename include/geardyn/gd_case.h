@@ -51,7 +51,7 @@ typedef enum gd_cont_shooting { GD_SHOOT_MULTIPLE = 0, GD_SHOOT_SINGLE = 1 } gd_
 typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1, GD_CONT_START_SWEEP = 2 } gd_cont_start;
 typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
-    GD_CONT_RESP_POINCARE = 3
+    GD_CONT_RESP_POINCARE = 3, GD_CONT_RESP_DYNAMIC_LOAD_FACTOR = 4
 } gd_cont_response;
 /* [basins] base: the components off the section at the static state or at a given state */
 typedef enum gd_basins_base { GD_BASINS_BASE_STATIC = 0, GD_BASINS_BASE_STATE = 1 } gd_basins_base;
@@ -76,6 +76,10 @@ typedef struct gd_case {
     double profile_shift_pinion, profile_shift_gear, addendum_coefficient, dedendum_coefficient;
     double face_width_pinion_mm, face_width_gear_mm, groove_width_mm;
     double bore_diameter_pinion_mm, bore_diameter_gear_mm;
+    /* the blank of a body that is not a solid disc (docs/model.md section 9.2): a rim down to its inner
+     * diameter (0: none, a solid blank), a web of an axial thickness, a hub of a diameter and length */
+    double rim_inner_diameter_pinion_mm, rim_inner_diameter_gear_mm, web_thickness_pinion_mm, web_thickness_gear_mm;
+    double hub_diameter_pinion_mm, hub_diameter_gear_mm, hub_length_pinion_mm, hub_length_gear_mm;
     double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
     double pinion_mass_kg, gear_mass_kg, pinion_inertia_kgm2, gear_inertia_kgm2;
     double equivalent_mass_kg; /* torsional equivalent mass of one half, m_e */
@@ -289,6 +293,13 @@ GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
  * at all (a single pair's groove width and groove shafts), so that a listing may leave it out. */
 GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent);
 GD_API const char *gd_source_name(gd_source s);
+/* The physical values a resolved case takes from the schema's defaults: the numbers of [gear],
+ * [modification], [misalignment], [clearance], [excitation], [damping] and [support] that its
+ * analysis and model use, that neither the file nor --set gives, that no other key derives and that
+ * its sweep or continuation does not vary. Writes up to cap schema indices into idx (may be NULL)
+ * and returns how many there are. (The operating point has no default: gd_case_check refuses a case
+ * whose analysis needs it and lacks it.) */
+GD_API size_t gd_case_defaulted_keys(const gd_case *c, size_t *idx, size_t cap);
 
 #ifdef __cplusplus
 }

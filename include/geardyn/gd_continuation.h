@@ -23,6 +23,7 @@ typedef struct gd_contin_measure {
     double rms_accel_mps2[3];    /* left, right, combined, as a sweep's rms_accel_mps2 */
     double lambda_min_um[2], lambda_max_um[2]; /* mesh deflections of the left and right half */
     double lambda_poincare;      /* lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv) */
+    double dynamic_load_factor[2]; /* left, right: the largest mesh force on the orbit over the static one */
 } gd_contin_measure;
 
 typedef struct gd_contin_branch {

@@ -127,7 +127,7 @@ static gd_status check_settings(gd_case *c, gd_error *err)
     if (c->cont_overlay_sweep[0]) {
         if (c->cont_response == GD_CONT_RESP_MAX_DEFLECTION || c->cont_response == GD_CONT_RESP_MIN_DEFLECTION)
             return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.overlay_sweep: a sweep has no deflection "
-                                "extremes to draw (valid: response = rms_accel or poincare with an overlay)",
+                                "extremes to draw (valid: response = rms_accel, poincare or dynamic_load_factor with an overlay)",
                                 WHERE("overlay_sweep"));
         char f[GD_PATH_MAX + 32];
         struct stat sb;
@@ -210,6 +210,7 @@ static gd_status measure(crun *r, double p, const double *y, int nper, gd_contin
     memcpy(out->rms_accel_mps2, rr.rms_accel_mps2, sizeof out->rms_accel_mps2);
     memcpy(out->lambda_min_um, rr.lambda_min_um, sizeof out->lambda_min_um);
     memcpy(out->lambda_max_um, rr.lambda_max_um, sizeof out->lambda_max_um);
+    memcpy(out->dynamic_load_factor, rr.dynamic_load_factor, sizeof out->dynamic_load_factor);
     double x, xd;
     gd_model_clearance(&m, m.mesh_clear[0], 0.0, y, &md, &x, &xd);
     out->lambda_poincare = x;
@@ -555,10 +556,12 @@ static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_
         if (st == GD_OK && progress && progress(user, res->nbranches, nd))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
-    /* every branch, those switched to included (res->nbranches grows): the period-doubling cascade */
+    /* every branch, those switched to included (res->nbranches grows): the period-doubling cascade;
+     * the progress counts the branches followed, so it is told when a switching adds some */
     for (int ib = 0; ib < res->nbranches && st == GD_OK && c->cont_branch_switching; ib++) {
+        int before = res->nbranches;
         st = switch_branches(r, ib, err);
-        if (st == GD_OK && progress && progress(user, ib + 1, res->nbranches))
+        if (st == GD_OK && res->nbranches > before && progress && progress(user, res->nbranches, res->nbranches))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
     return st;

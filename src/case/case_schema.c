@@ -47,6 +47,23 @@ static const gd_keyspec schema[] = {
     D("gear", "groove_width_mm", "mm", groove_width_mm, 0, 5000, 0, 0, 50, "relief groove between the halves (herringbone; none in a single pair)"),
     D("gear", "bore_diameter_pinion_mm", "mm", bore_diameter_pinion_mm, 0, 10000, 0, 0, 0, "bore of the pinion body (0: solid)"),
     D("gear", "bore_diameter_gear_mm", "mm", bore_diameter_gear_mm, 0, 10000, 0, 0, 0, "bore of the gear body (0: solid)"),
+    D("gear", "rim_inner_diameter_pinion_mm", "mm", rim_inner_diameter_pinion_mm, 0, 10000, 0, 0, 0,
+      "inner diameter of the pinion's rim, where its web begins (0: a solid blank; between the hub or bore and the root "
+      "circle); the masses and inertias only (docs/model.md section 9.2)"),
+    D("gear", "rim_inner_diameter_gear_mm", "mm", rim_inner_diameter_gear_mm, 0, 10000, 0, 0, 0,
+      "inner diameter of the gear's rim (see rim_inner_diameter_pinion_mm)"),
+    D("gear", "web_thickness_pinion_mm", "mm", web_thickness_pinion_mm, 0, 10000, 1, 0, NAN,
+      "axial thickness of the pinion's web between rim and hub (needed with rim_inner_diameter_pinion_mm)"),
+    D("gear", "web_thickness_gear_mm", "mm", web_thickness_gear_mm, 0, 10000, 1, 0, NAN,
+      "axial thickness of the gear's web (needed with rim_inner_diameter_gear_mm)"),
+    D("gear", "hub_diameter_pinion_mm", "mm", hub_diameter_pinion_mm, 0, 10000, 0, 0, 0,
+      "outer diameter of the pinion's hub (0: none, the web or the blank reaches the bore)"),
+    D("gear", "hub_diameter_gear_mm", "mm", hub_diameter_gear_mm, 0, 10000, 0, 0, 0,
+      "outer diameter of the gear's hub (0: none)"),
+    D("gear", "hub_length_pinion_mm", "mm", hub_length_pinion_mm, 0, 10000, 1, 0, NAN,
+      "axial length of the pinion's hub (derived: the body's width, the face, or both halves and the groove)"),
+    D("gear", "hub_length_gear_mm", "mm", hub_length_gear_mm, 0, 10000, 1, 0, NAN,
+      "axial length of the gear's hub (derived likewise)"),
     D("gear", "youngs_modulus_gpa", "GPa", youngs_modulus_gpa, 1, 1000, 0, 0, 206, "Young's modulus E"),
     D("gear", "poisson_ratio", "", poisson_ratio, 0, 0.5, 0, 1, 0.3, "Poisson's ratio nu"),
     D("gear", "density_kg_per_m3", "kg/m^3", density_kg_per_m3, 100, 30000, 0, 0, 7850, "density"),
@@ -102,8 +119,11 @@ static const gd_keyspec schema[] = {
 
 
     /* [operating] */
-    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, 4000, "pinion (input) speed n"),
-    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it; default 500, or from power_kw)"),
+    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, NAN,
+      "pinion (input) speed n; no default: a response, sweep, continuation or work-precision needs it (a sweep or "
+      "continuation of this key gives it)"),
+    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it); no default: this or power_kw is needed by "
+      "every analysis but tca (and the optimisers' test functions)"),
     D("operating", "power_kw", "kW", power_kw, 0, 1e6, 1, 0, NAN, "input power P: torque = 9550 P / n (exclusive with torque_nm)"),
 
     /* [clearance] */
@@ -307,9 +327,10 @@ static const gd_keyspec schema[] = {
       "branches at most, those from the start and those switched to; a switching beyond it is listed under notes"),
     S("continuation", "overlay_sweep", cont_overlay_sweep, "",
       "a finished sweep's directory (as output.directory: relative to the working directory) whose points are drawn over the branches"),
-    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
+    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare|dynamic_load_factor",
       "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
-      "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
+      "deflection lambda_L (um) on the orbit, lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv), "
+      "or the dynamic load factor (the largest mesh force on the orbit over the static one, of the more loaded mesh)"),
     S("continuation", "parameter2", cont_parameter2, "",
       "a second numeric key, section.key: every fold, period doubling and grazing of the branches is continued in "
       "(parameter, parameter2), both ways, into curves.csv (\"\": none; docs/continuation.md section 8)"),

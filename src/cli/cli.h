@@ -2,6 +2,8 @@
 #ifndef GD_CLI_H
 #define GD_CLI_H
 
+#include <stdio.h>
+
 #include "geardyn/geardyn.h"
 #include "gnuplot.h"
 
@@ -28,6 +30,9 @@ int cli_load_case(cli_case_args *a, gd_case *c);
  * (the caller frees it), else the exit status with nothing left to free. */
 int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
+/* The physical values a resolved case takes from the schema's defaults (gd_case_defaulted_keys), one
+ * line per section, every line starting with prefix; nothing when there are none. */
+void cli_print_defaulted(FILE *f, const gd_case *c, const char *prefix);
 /* geardyn check's section of natural frequencies, resonance speeds and strain-energy shares of the
  * case's model m (check_modes.c). */
 void cli_check_modes(const gd_case *c, const gd_model *m);

@@ -122,6 +122,8 @@ int cmd_run(int argc, char **argv)
         snprintf(dir, sizeof dir, "%s", c.directory);
     else
         default_out_dir(a.case_path, dir, sizeof dir);
+    if (!a.quiet)
+        cli_print_defaulted(stderr, &c, "geardyn: ");
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
     static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);

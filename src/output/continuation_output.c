@@ -27,7 +27,8 @@ static void num(FILE *fp, double v)
 static void measure_header(FILE *fp)
 {
     fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2,rms_accel_R_mps2,lambda_min_L_um,lambda_max_L_um,"
-                "lambda_min_R_um,lambda_max_R_um,lambda_L");
+                "lambda_min_R_um,lambda_max_R_um,lambda_L,dynamic_load_factor,dynamic_load_factor_L,"
+                "dynamic_load_factor_R");
 }
 
 static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_measure *m)
@@ -40,6 +41,9 @@ static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_m
     num(fp, res->nmesh > 1 ? m->lambda_min_um[1] : NAN);
     num(fp, res->nmesh > 1 ? m->lambda_max_um[1] : NAN);
     num(fp, m->lambda_poincare);
+    num(fp, res->nmesh > 1 ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0]);
+    num(fp, m->dynamic_load_factor[0]);
+    num(fp, res->nmesh > 1 ? m->dynamic_load_factor[1] : NAN);
 }
 
 static gd_status write_branch(gd_run_dir *d, const gd_contin_result *res, gd_error *err)

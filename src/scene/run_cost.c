@@ -100,7 +100,7 @@ static double slowest_speed(const gd_case *c, const char **key)
     for (int axis = 0; c->analysis == GD_ANALYSIS_SWEEP && axis < 2; axis++)
         if (strcmp(axis ? c->sweep_parameter2 : c->sweep_parameter, "operating.speed_rpm") == 0) {
             double lo = fmin(axis ? c->sweep_from2 : c->sweep_from, axis ? c->sweep_to2 : c->sweep_to);
-            if (lo < n) {
+            if (lo < n || (lo == n && !gd_case_key_given(c, "operating", "speed_rpm"))) { /* the sweep's own speed */
                 n = lo;
                 *key = lo == (axis ? c->sweep_from2 : c->sweep_from) ? (axis ? "from2" : "from")
                                                                       : (axis ? "to2" : "to");

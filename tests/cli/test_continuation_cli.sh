@@ -21,6 +21,13 @@ grep -Eq "^locate_tol = 1e-08 +; file line" "$work/check.txt"; ok $? "check list
 
 out="$work/ks"
 "$G" run "$KS" --out "$out" --quiet > "$work/run.txt" 2>&1; ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
+# the progress on stderr: one line per count of branches followed, never the same line twice (both
+# directions from the middle, then the switchings at the doublings, which add two branches)
+"$G" run "$KS" --out "$work/ks-progress" --set output.plots=off --set continuation.direction=both \
+    --set continuation.max_branches=4 > /dev/null 2> "$work/progress.txt"
+grep "continuation:" "$work/progress.txt" > "$work/progress2.txt"
+[ -s "$work/progress2.txt" ] && [ -z "$(sort "$work/progress2.txt" | uniq -d)" ] && tail -1 "$work/progress2.txt" | grep -q "4 of 4 branches"
+ok $? "progress: each line once, ending at 4 of 4 branches ($(tr '\n' ' ' < "$work/progress2.txt"))"
 for f in branch.csv bifurcations.csv summary.json; do
     [ -s "$out/$f" ]; ok $? "wrote $f"
 done
