@@ -75,11 +75,11 @@ SHORTEN=(
 
 # Allowed to differ. JSON keys (any depth): geardyn_version; wall_s (solver/optimiser/LTCA/TCA/
 # work-precision wall times), cpu_s and us_per_period (work-precision cost), wall_mean_s and
-# wall_total_s (optimiser comparison); and `cheapest` of work-precision's cheapest_at_target[],
+# wall_total_s (optimiser comparison), curve_cpu_s (the continuation's curves in two parameters); and `cheapest` of work-precision's cheapest_at_target[],
 # the label of the run with the least measured CPU time among those meeting an error target: it
 # is chosen by timing and changes between two runs of the same binary (its target, cpu_s and
 # us_per_period beside it are skipped anyway; target and event_times_too stay compared).
-JSON_SKIP='geardyn_version wall_s cpu_s us_per_period wall_mean_s wall_total_s cheapest'
+JSON_SKIP='geardyn_version wall_s cpu_s us_per_period wall_mean_s wall_total_s cheapest curve_cpu_s'
 CSV_SKIP='cpu_s us_per_period wall_s wall_mean_s wall_total_s'
 PIC_SKIP='work_precision.png work_precision.svg'
 

@@ -216,6 +216,9 @@ typedef struct gd_case {
     int cont_branch_switching;
     char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
     int cont_response;       /* gd_cont_response */
+    char cont_parameter2[256]; /* "section.key" of the curves' second parameter ("": no curves) */
+    double cont_from2, cont_to2; /* its bounds, in the unit of its key */
+    int cont_curve_max_points; /* points of one curve in one direction at most */
 
     /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
     char bas_x[32], bas_y[32];   /* the section's coordinates */

@@ -11,6 +11,7 @@
 
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_periodic.h"
+#include "geardyn/gd_envelope.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -39,6 +40,14 @@ typedef struct gd_contin_branch {
     gd_contin_measure *bif_meas; /* one per bifurcation */
 } gd_contin_branch;
 
+/* A curve of fold, period-doubling or grazing points continued in (parameter, parameter2) from a
+ * bifurcation of a branch (docs/continuation.md section 8). */
+typedef struct gd_contin_curve {
+    int branch, bif;             /* the branch and its bifurcation the curve starts from */
+    int direction;               /* +1: set out towards increasing parameter2, -1 decreasing */
+    gd_curve cv;                 /* its points: orbit.p = value / scale, p2 = value2 / scale2 */
+} gd_contin_curve;
+
 typedef struct gd_contin_result {
     char parameter[256];         /* "section.key" */
     char unit[32];               /* of the key ("" when dimensionless) */
@@ -59,6 +68,13 @@ typedef struct gd_contin_result {
     int notes_dropped;           /* notes beyond GD_CONTIN_NOTES */
     long corrections, newton_iterations;
     double cpu_s;
+    /* continuation.parameter2: the curves (none when it is "") */
+    char parameter2[256], unit2[32];
+    double scale2;               /* key value per unit of p2 */
+    int ncurves;
+    gd_contin_curve *curve;      /* from each fold, period doubling and grazing, down then up in parameter2 */
+    long curve_corrections;
+    double curve_cpu_s;
 } gd_contin_result;
 
 /* Check the [continuation] keys of a resolved case (gd_case_resolve calls it through the table

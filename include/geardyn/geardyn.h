@@ -23,6 +23,7 @@
 #include "geardyn/gd_periodic.h"
 #include "geardyn/gd_continuation.h"
 #include "geardyn/gd_basins.h"
+#include "geardyn/gd_envelope.h"
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"

@@ -6,6 +6,7 @@
 #include "geardyn/gd_response.h"
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_workprec.h"
+#include "geardyn/gd_continuation.h"
 
 /* Which variable [output] response_variable names (GD_ERR_INPUT naming the key when none). */
 gd_status gd_local_resolve(const gd_case *c, const gd_model *m, gd_local *L, gd_error *err);
@@ -47,6 +48,12 @@ void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, c
 /* The parameter's value at the starting orbit: continuation.start_value, else from with
  * direction up, to with down, the middle with both. */
 double gd_contin_start_value(const gd_case *c);
+/* continuation_curves.c: the keys of the curves (continuation.parameter2), and the curves of the
+ * folds, period doublings and grazings of res's branches in (parameter, parameter2) (work: the run's
+ * case, left with parameter2 at its value; co: the branches' options) */
+gd_status gd_contin_check_curves(const gd_case *c, gd_error *err);
+gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts *o, const gd_cont_opts *co,
+                           gd_contin_result *res, gd_error *err);
 
 /* ---- work-precision ---- */
 /* The method families of the case's [workprecision] (families, root_finding_off): n <= max. */

@@ -143,7 +143,9 @@ static gd_status check_settings(gd_case *c, gd_error *err)
 GD_API gd_status gd_contin_check_case(gd_case *c, gd_error *err)
 {
     gd_status st = check_parameter(c, err);
-    return st == GD_OK ? check_settings(c, err) : st;
+    if (st == GD_OK)
+        st = check_settings(c, err);
+    return st == GD_OK ? gd_contin_check_curves(c, err) : st;
 }
 
 double gd_contin_start_value(const gd_case *c)
@@ -166,6 +168,11 @@ GD_API void gd_contin_result_free(gd_contin_result *res)
     free(res->branch);
     res->branch = NULL;
     res->nbranches = res->branch_cap = 0;
+    for (int i = 0; i < res->ncurves; i++)
+        gd_curve_free(&res->curve[i].cv);
+    free(res->curve);
+    res->curve = NULL;
+    res->ncurves = 0;
 }
 
 /* The run: the case (changed as the parameter moves), its model at the start and the options. */
@@ -606,6 +613,8 @@ GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd
     }
     if (st == GD_OK)
         st = run_branches(&r, c, &start, progress, user, err);
+    if (st == GD_OK)
+        st = gd_contin_curves(c, &r.c, &r.o, &r.co, res, err);
     res->cpu_s = gd_clock_thread_cpu_s() - t0;
     if (r.c.src)
         gd_case_free(&r.c);

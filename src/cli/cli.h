@@ -148,6 +148,7 @@ int cmd_run(int argc, char **argv);
 /* The continuation: its picture (continuation_plot.c: continuation.png and .svg into dir) and its
  * lines on stdout (run_continuation.c). */
 gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
+gd_status cli_curves_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
 void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
                                const char **note);
 void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);

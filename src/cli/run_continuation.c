@@ -1,5 +1,6 @@
-/* The `continuation` analysis on the command line: progress per branch, the picture
- * (continuation_plot.c) and the branches and bifurcations found, on stdout. */
+/* The `continuation` analysis on the command line: progress per branch, the pictures
+ * (continuation_plot.c; curves_plot.c with continuation.parameter2) and the branches, bifurcations
+ * and curves found, on stdout. */
 #include "cli.h"
 
 #include <stdio.h>
@@ -21,6 +22,13 @@ void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const v
         gd_status pst = cli_continuation_draw(gd_run_dir_stage(out), c, result, &perr);
         static const char *pics[] = {"continuation.png", "continuation.svg"};
         gd_gnuplot_drawn(pst, &perr, pics, 2, out);
+        const gd_contin_result *res = result;
+        if (res->ncurves > 0) {
+            gd_error cerr = {0};
+            gd_status cst = cli_curves_draw(gd_run_dir_stage(out), c, res, &cerr);
+            static const char *cpics[] = {"curves.png", "curves.svg"};
+            gd_gnuplot_drawn(cst, &cerr, cpics, 2, out);
+        }
     }
 }
 
@@ -47,6 +55,15 @@ void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_c
                    gd_contin_value(res, br->bif[i].p), br->bif[i].location != GD_LOC_LOCATED ? " (location: " : "",
                    br->bif[i].location != GD_LOC_LOCATED ? gd_bif_location_name(br->bif[i].location) : "",
                    br->bif[i].location != GD_LOC_LOCATED ? ")" : "");
+    }
+    for (int i = 0; i < res->ncurves; i++) {
+        const gd_curve *cv = &res->curve[i].cv;
+        const gd_curve_point *z = &cv->pt[cv->npoints - 1];
+        printf("  curve %d, %s%s%s, period %d, from branch %d, %s in %s: %d points to (%.10g, %.10g) (%s)\n", i,
+               gd_curve_kind_name(cv->kind), cv->clearance >= 0 ? " of " : "",
+               cv->clearance >= 0 ? res->clear_name[cv->clearance] : "", cv->nper, res->curve[i].branch,
+               res->curve[i].direction > 0 ? "up" : "down", res->parameter2, cv->npoints, gd_contin_value(res, z->orbit.p),
+               z->p2 * res->scale2, cv->end_reason);
     }
     for (int i = 0; i < res->nnotes; i++)
         printf("  note: %s\n", res->notes[i]);

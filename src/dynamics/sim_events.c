@@ -28,7 +28,7 @@ static int root_fn(sunrealtype t, N_Vector y, sunrealtype *g, void *user)
     gd_model_roots_sc(&s->m, t, sn, cs, NV_DATA_S(y), g, &s->md);
     s->nroot_evals++;
     for (int i = 0; i < s->nroots; i++)
-        if (g[i] == 0.0) {
+        if (g[i] == 0.0 || (s->hold_on && sim_root_held(s, i, t))) {
             int mode = s->md.mode[i / 2]; /* g[2c] = x - h > 0 in mode +1; g[2c+1] = x + h < 0 in mode -1 */
             g[i] = (i % 2 == 0 ? mode > 0 : mode >= 0) ? ON_BOUNDARY : -ON_BOUNDARY;
         }
@@ -162,8 +162,11 @@ static double grazing_check(gd_sim *s, double t0, double t1)
     for (int c = 0; c < s->m.nclear; c++) {
         double x0 = s->cx0[c], x1 = s->cx[c], d0 = s->cv0[c] * dt, d1 = s->cv[c] * dt;
         double h = s->m.clear[c].h, reach = (4.0 / 27.0) * (fabs(d0) + fabs(d1));
-        best = graze_side(x0 + -h, x1 + -h, d0, d1, reach, t0, dt, best); /* g = x - h */
-        best = graze_side(x0 + h, x1 + h, d0, d1, reach, t0, dt, best);   /* g = x + h */
+        for (int side = 0; side < 2; side++) { /* g = x - h, x + h */
+            double off = side ? h : -h, tc = graze_side(x0 + off, x1 + off, d0, d1, reach, t0, dt, -1.0);
+            if (tc > 0 && !(s->hold_on && sim_root_held(s, 2 * c + side, tc)) && (best < 0 || tc < best))
+                best = tc;
+        }
     }
     return best;
 }
@@ -476,6 +479,8 @@ double gd_sim_crossing_in_step(gd_sim *s, double t0, double t1)
              * handled at t0) still gets a piece of step for ARKODE to find it in (hi > 0: fmax
              * written out) */
             double tc = t0 + (hi > 1e-9 ? hi : 1e-9) * dt;
+            if (s->hold_on && sim_root_held(s, 2 * c + side, tc))
+                continue;
             if (best < 0 || tc < best)
                 best = tc;
         }
@@ -563,7 +568,7 @@ static gd_status handle_roots(gd_sim *s, gd_error *err)
      * with the root function already past zero, would never see that crossing. */
     gd_sim_clearances_now(s);
     for (int c = 0; c < s->m.nclear; c++) {
-        if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1])
+        if (s->rootsfound[2 * c] || s->rootsfound[2 * c + 1] || (s->hold_on && sim_clear_held(s, c, s->t)))
             continue;
         double x = s->cx[c], xd = s->cv[c];
         int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
@@ -637,7 +642,7 @@ gd_status gd_sim_repair_held_modes(gd_sim *s, gd_error *err)
     for (int c = 0; c < s->m.nclear; c++) {
         double x = s->cx[c], h = s->m.clear[c].h;
         int old = s->md.mode[c], nw = model_mode_of(&s->m, c, x);
-        if (nw == old)
+        if (nw == old || (s->hold_on && sim_clear_held(s, c, s->t)))
             continue;
         /* distance past the boundary of the region the held mode allows */
         double past = old > 0 ? h - x : old < 0 ? x + h : fabs(x) - h;

@@ -88,6 +88,11 @@ struct gd_sim {
     gd_rhs_plan plan[SIM_PLANS];
     gd_plan_excitation plan_ex[GD_MAX_MESH];
     int plan_cur, plan_next, use_plan;
+    /* a held side (sim_probe.h): while the absolute time lies in [hold_t0, hold_t1] (t0 > t1: outside (t1, t0)) the
+     * root function hold_root (2c: x - h, 2c + 1: x + h of clearance hold_clear) reports no crossing and
+     * the state's side of it switches no mode: the vector field of the held mode is continued there */
+    int hold_on, hold_clear, hold_root;
+    double hold_t0, hold_t1;
 };
 
 /* sin(Omega t) and cos(Omega t), from the cache when t was one of the last four times */
@@ -110,6 +115,21 @@ static inline void sim_phase_at(gd_sim *s, double t, double *sn, double *cs)
 static inline double sim_abs_time(const gd_sim *s, double t_local)
 {
     return t_local + (double)s->shift * s->m.period;
+}
+
+/* Whether the root function i is held at the local time t (gd_sim_hold_side). */
+static inline int sim_root_held(const gd_sim *s, int i, double t_local)
+{
+    if (!s->hold_on || i != s->hold_root)
+        return 0;
+    double ta = sim_abs_time(s, t_local);
+    return s->hold_t0 <= s->hold_t1 ? ta >= s->hold_t0 && ta <= s->hold_t1 : ta >= s->hold_t0 || ta <= s->hold_t1;
+}
+
+/* Whether clearance c is held at the local time t: its mode is not switched from the state there. */
+static inline int sim_clear_held(const gd_sim *s, int c, double t_local)
+{
+    return s->hold_on && c == s->hold_clear && sim_root_held(s, s->hold_root, t_local);
 }
 
 /* simulate.c: the driver */

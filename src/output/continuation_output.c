@@ -1,5 +1,6 @@
 /* The files of a continuation (include/geardyn/gd_continuation.h): branch.csv (every branch point),
- * bifurcations.csv (every located bifurcation) and summary.json. Writers only: nothing computed. */
+ * bifurcations.csv (every located bifurcation), curves.csv (every point of the curves in two
+ * parameters, with continuation.parameter2) and summary.json. Writers only: nothing computed. */
 #include "output_internal.h"
 #include "json_util.h"
 
@@ -117,10 +118,83 @@ static gd_status write_bifurcations(gd_run_dir *d, const gd_contin_result *res, 
     return gd_run_dir_commit(d, fp, err);
 }
 
+/* curves.csv: every point of every curve in (parameter, parameter2) */
+static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
+{
+    FILE *fp;
+    gd_status st = gd_run_dir_create(d, "curves.csv", &fp, err);
+    if (st != GD_OK)
+        return st;
+    const char *dot = strchr(res->parameter2, '.'), *k2 = dot ? dot + 1 : res->parameter2;
+    fprintf(fp, "curve,kind,period_n,from_branch,direction,point,%s,%s,continuation_p,continuation_p2,clearance,"
+            "graze_phase,stable,mu_max", key_column(res), k2);
+    for (int j = 0; j < res->n; j++)
+        fprintf(fp, ",mu%d_re,mu%d_im", j + 1, j + 1);
+    fprintf(fp, ",test_fold,test_period_doubling,test_cusp");
+    for (int j = 0; j < res->nclear; j++)
+        fprintf(fp, ",events_%s", res->clear_name[j]);
+    fprintf(fp, ",residual,ds");
+    for (int j = 0; j < res->n; j++)
+        fprintf(fp, ",%s", res->state_name[j]);
+    fprintf(fp, "\n");
+    for (int ic = 0; ic < res->ncurves; ic++) {
+        const gd_contin_curve *cu = &res->curve[ic];
+        for (int i = 0; i < cu->cv.npoints; i++) {
+            const gd_curve_point *pt = &cu->cv.pt[i];
+            const gd_po *o = &pt->orbit;
+            fprintf(fp, "%d,%s,%d,%d,%s,%d,%.12g,%.12g,%.12g,%.12g,%s", ic, gd_curve_kind_name(cu->cv.kind),
+                    cu->cv.nper, cu->branch, cu->direction > 0 ? "up" : "down", i, gd_contin_value(res, o->p),
+                    pt->p2 * res->scale2, o->p, pt->p2,
+                    cu->cv.clearance >= 0 ? res->clear_name[cu->cv.clearance] : "");
+            num(fp, pt->t_graze);
+            fprintf(fp, ",%d,%.10g", o->stable, o->mu_max);
+            for (int j = 0; j < res->n; j++)
+                fprintf(fp, ",%.10g,%.10g", o->mu_re[j], o->mu_im[j]);
+            num(fp, pt->test[GD_CT_FOLD]);
+            num(fp, pt->test[GD_CT_PD]);
+            num(fp, pt->test[GD_CT_CUSP]);
+            for (int j = 0; j < res->nclear; j++)
+                fprintf(fp, ",%ld", o->events[j]);
+            fprintf(fp, ",%.3g,%.6g", o->residual, pt->ds);
+            for (int j = 0; j < res->n; j++)
+                fprintf(fp, ",%.17g", o->y[0][j]);
+            fprintf(fp, "\n");
+        }
+    }
+    return gd_run_dir_commit(d, fp, err);
+}
+
 gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
 {
     gd_status st = write_branch(d, res, err);
-    return st == GD_OK ? write_bifurcations(d, res, err) : st;
+    if (st == GD_OK)
+        st = write_bifurcations(d, res, err);
+    return st == GD_OK && res->parameter2[0] ? write_curves(d, res, err) : st;
+}
+
+static json_t *curve_json(const gd_contin_result *res, int ic)
+{
+    const gd_contin_curve *cu = &res->curve[ic];
+    const gd_curve *cv = &cu->cv;
+    const gd_curve_point *a = &cv->pt[0], *z = &cv->pt[cv->npoints - 1];
+    json_t *o = json_object();
+    json_object_set_new(o, "curve", json_integer(ic));
+    json_object_set_new(o, "kind", json_string(gd_curve_kind_name(cv->kind)));
+    json_object_set_new(o, "period_n", json_integer(cv->nper));
+    json_object_set_new(o, "clearance", cv->clearance >= 0 ? json_string(res->clear_name[cv->clearance]) : json_null());
+    json_object_set_new(o, "from_branch", json_integer(cu->branch));
+    json_object_set_new(o, "direction", json_string(cu->direction > 0 ? "up" : "down"));
+    json_object_set_new(o, "points", json_integer(cv->npoints));
+    json_object_set_new(o, "first", json_pack("[o, o]", gd_json_num(gd_contin_value(res, a->orbit.p)),
+                                              gd_json_num(a->p2 * res->scale2)));
+    json_object_set_new(o, "last", json_pack("[o, o]", gd_json_num(gd_contin_value(res, z->orbit.p)),
+                                             gd_json_num(z->p2 * res->scale2)));
+    json_object_set_new(o, "end", json_string(gd_curve_end_name(cv->end)));
+    json_object_set_new(o, "end_reason", json_string(cv->end_reason));
+    json_object_set_new(o, "corrections", json_integer(cv->corrections));
+    json_object_set_new(o, "newton_iterations", json_integer(cv->newton_iterations));
+    json_object_set_new(o, "newton_tol", gd_json_num(cv->tol));
+    return o;
 }
 
 static const char *end_name(int end)
@@ -201,6 +275,17 @@ gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_moda
     json_object_set_new(r, "newton_iterations_per_correction",
                         gd_json_num(res->corrections ? (double)res->newton_iterations / (double)res->corrections : NAN));
     json_object_set_new(r, "cpu_s", gd_json_num(res->cpu_s));
+    if (res->parameter2[0]) {
+        json_object_set_new(r, "parameter2", json_string(res->parameter2));
+        json_object_set_new(r, "unit2", json_string(res->unit2));
+        json_object_set_new(r, "scale2", gd_json_num(res->scale2));
+        json_t *cvs = json_array();
+        for (int i = 0; i < res->ncurves; i++)
+            json_array_append_new(cvs, curve_json(res, i));
+        json_object_set_new(r, "curves", cvs);
+        json_object_set_new(r, "curve_corrections", json_integer(res->curve_corrections));
+        json_object_set_new(r, "curve_cpu_s", gd_json_num(res->curve_cpu_s));
+    }
     json_object_set_new(root, "results", r);
     return gd_json_write_summary(d, root, err);
 }

@@ -10,7 +10,7 @@ The checks of every picture:
   frame     no drawn point on or beyond a panel's frame, unless a curve ends there because its
             range ends there (a time history over its own window), an impulse stands on its
             axis, or a map's cell fills to the range's end;
-  span      the curves of a panel span at least half of its x axis (the first start to the last end);
+  span      the curves and markers of a panel span at least half of its x axis (the first start to the last end);
   band      no time series so dense (turning every 3 px or less) that it draws a solid band;
   units     every axis label names its quantity (two words at least) and ends in a unit, "(unit)",
             that the run's tables name (their column suffixes, summary.json's units) or is a
@@ -319,24 +319,37 @@ def check_frame(fig, bad):
                 break
 
 
+def is_work_precision(pn):
+    """A panel of a work-precision diagram, whose points sit where the machine's CPU times put them."""
+    t = pn.title.s if pn.title else ''
+    return t.startswith('Error of ')
+
+
 def check_span(fig, bad):
     for pn in fig.panels:
         f = pn.frame
         if f is None:
             continue
-        xs = []
+        xs, marks = [], []
         for p in pn.plots:
             for e in p.elements:
+                if e.kind == 'use':   # the markers of the points drawn
+                    inside = [x for x, y in e.points() if f.contains(x, y, 1)]
+                    if inside:
+                        marks.append((min(inside), max(inside)))
+                    continue
                 if e.kind != 'path':
                     continue
                 for pts, _ in e.subpaths:
                     inside = [x for x, y in pts if f.contains(x, y, 1)]
                     if len(inside) >= 2 and max(inside) - min(inside) > 1:   # a curve, not an impulse
                         xs.append((min(inside), max(inside)))
-        if not xs:
+        if not xs:   # a panel of points only (a Poincaré section, a map): not judged here
             continue
-        # from the leftmost curve's start to the rightmost's end: the curves of a work-precision
-        # panel cluster by CPU time, which the machine's load spreads, with gaps between them
+        xs += [m for m in marks if is_work_precision(pn)]
+        # from the leftmost curve's start or marker to the rightmost's end: the curves of a
+        # work-precision panel cluster by CPU time, which the machine's load spreads, with gaps
+        # between them, and a family of one point draws a marker and no curve
         cover = max(b for _, b in xs) - min(a for a, _ in xs)
         if cover < 0.5 * f.w:
             bad.append('span: the curves of panel %r span %.0f %% of its x axis' %
