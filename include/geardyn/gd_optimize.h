@@ -287,6 +287,78 @@ GD_API int gd_opt_gear_is_paper_pair(const gd_pair *pair);
 /* The case's [optimize] bounds of the variables v, in their order. */
 GD_API void gd_opt_gear_bounds(const gd_case *c, const gd_opt_gear_vars *v, double *lower, double *upper);
 
+/* ---- what the gear problem minimises (docs/optimisation.md sections 1 and 13) ---- */
+
+/* A gear objective: a number of the modified pair, smaller is better, and naux numbers it records
+ * with every evaluation. One state per concurrent caller (state_alloc NULL: every caller gets user).
+ * The optimisers see it through the gear problem, which applies the candidate's variables to the
+ * pair first: an objective computed in a higher layer (the dynamic response, gd_dynobj.h) is such
+ * a callback, so the optimisers never see what it computes. */
+typedef struct gd_opt_gear_objective {
+    char name[32];           /* "gear-lte", "gear-lte-range", "gear-dynamic" */
+    int naux;                /* recorded numbers, 0 .. GD_OPT_MAX_AUX / 2 - 1 */
+    gd_status (*eval)(void *state, const gd_pair *pair, double *f, double *aux, gd_error *err);
+    gd_status (*state_alloc)(void *user, void **state, gd_error *err);
+    void (*state_free)(void *state);
+    void *user;
+} gd_opt_gear_objective;
+
+/* How the values at several torques (or over a speed range at each) become one: the largest (worst
+ * case) or the duty-weighted mean sum w_k f_k / sum w_k. */
+typedef enum gd_opt_combine { GD_OPT_COMBINE_MAX = 0, GD_OPT_COMBINE_MEAN = 1 } gd_opt_combine;
+#define GD_OPT_MAX_TORQUES 8
+
+/* gear-lte-range: the LTE amplitude (gd_opt_gear_lte_pp) at each torque, combined (gear-lte is the
+ * case of one torque). Records the amplitude at each torque (naux = n). */
+typedef struct gd_opt_lte_range {
+    gd_ltca_settings set;    /* its torque_nm is replaced by each of torques_nm */
+    int n;
+    double torques_nm[GD_OPT_MAX_TORQUES];
+    double weights[GD_OPT_MAX_TORQUES]; /* >= 0, a positive sum (mean) */
+    int combine;             /* gd_opt_combine */
+} gd_opt_lte_range;
+/* The objective (user = r, which must outlive it). */
+GD_API void gd_opt_lte_range_objective(const gd_opt_lte_range *r, gd_opt_gear_objective *o);
+/* Its value for a pair, and the amplitude at each torque (each: n values, may be NULL). */
+GD_API gd_status gd_opt_lte_range_value(const gd_opt_lte_range *r, const gd_pair *pair, double *f, double *each,
+                                        gd_error *err);
+/* The combination of n values v with weights w. */
+GD_API double gd_opt_combine_values(int combine, int n, const double *v, const double *w);
+
+/* The robust variant of every objective: its quantile (0.9 by default) over a Monte Carlo sample of
+ * the pair's misalignment and of manufacturing deviations of the design variables, drawn once from
+ * GSL's MT19937 seeded with seed (serially, before any evaluation: the same sample for every
+ * candidate, whatever the threads). Sample s deviates the two tilt components of the axis (arcmin),
+ * the centre distance (mm) and each design variable (amounts y1, y3, y5, y6, y9 by amount_um,
+ * lengths y2, y4, y7, y8 by length_mm), each uniform in [-range, range]; a deviated variable is
+ * kept in the box of [optimize] and the linear constraints are repaired, so every deviated flank
+ * fits. Records, per objective, its value at the nominal flank before its own numbers. */
+typedef struct gd_opt_robust {
+    int samples;             /* 0: not robust */
+    unsigned long seed;
+    double quantile;         /* 0 < q <= 1 (0: 0.9) */
+    double tilt_arcmin, centre_distance_mm, amount_um, length_mm;
+} gd_opt_robust;
+
+/* The objectives of the gear problem (one or two) and its robust variant (NULL or samples = 0:
+ * none); without a call, the LTE amplitude at the LTCA settings' torque. The objectives' users must
+ * outlive g. */
+GD_API gd_status gd_opt_gear_set_objectives(gd_opt_gear *g, int nobj, const gd_opt_gear_objective *obj,
+                                            const gd_opt_robust *robust, gd_error *err);
+/* The Monte Carlo sample: its size, and dev (samples x (3 + the variables' count): in-plane and
+ * cross-plane tilt deviations in arcmin, the centre-distance deviation in mm, then each variable's
+ * deviation in its unit). */
+GD_API int gd_opt_gear_robust_sample(const gd_opt_gear *g, const double **dev);
+/* The objectives (and recorded numbers) of the pair with the variables x, as an optimiser's
+ * evaluation computes them (for the reports of a run: the unmodified flank, the case's, an optimum):
+ * f[nobj], aux[gd_opt_gear_naux]. */
+GD_API gd_status gd_opt_gear_value(const gd_opt_gear *g, const double *x, double *f, double *aux, gd_error *err);
+GD_API int gd_opt_gear_nobj(const gd_opt_gear *g);
+GD_API int gd_opt_gear_naux(const gd_opt_gear *g);
+/* The pair the gear problem modifies (the case's, with its own modification in the variables not
+ * optimised). */
+GD_API const gd_pair *gd_opt_gear_pair(const gd_opt_gear *g);
+
 
 /* ---- comparison -------------------------------------------------------------------------------- */
 
