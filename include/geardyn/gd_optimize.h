@@ -74,7 +74,7 @@ typedef gd_status (*gd_opt_eval_fn)(void *state, const double *y, double *f, gd_
  * (what the evaluation did: the dynamic objective's choice of continuation or sweep). */
 typedef gd_status (*gd_opt_evalv_fn)(void *state, const double *y, double *f, gd_error *err);
 
-#define GD_OPT_MAX_AUX 32
+#define GD_OPT_MAX_AUX 40
 typedef struct gd_opt_problem {
     int dim;
     const double *lower, *upper;  /* dim each, lower < upper */
@@ -353,6 +353,10 @@ GD_API int gd_opt_gear_robust_sample(const gd_opt_gear *g, const double **dev);
  * evaluation computes them (for the reports of a run: the unmodified flank, the case's, an optimum):
  * f[nobj], aux[gd_opt_gear_naux]. */
 GD_API gd_status gd_opt_gear_value(const gd_opt_gear *g, const double *x, double *f, double *aux, gd_error *err);
+/* The same for any flank: the pair's own modification (and misalignment, deviated by the robust
+ * sample as the candidates'). */
+GD_API gd_status gd_opt_gear_value_of_pair(const gd_opt_gear *g, const gd_pair *pair, double *f, double *aux,
+                                           gd_error *err);
 GD_API int gd_opt_gear_nobj(const gd_opt_gear *g);
 GD_API int gd_opt_gear_naux(const gd_opt_gear *g);
 /* The pair the gear problem modifies (the case's, with its own modification in the variables not
@@ -447,6 +451,14 @@ typedef struct gd_opt_optimize_summary {
     const double *table2;         /* gear-lte, the paper's pair: Table 2's value of each variable (else NULL) */
     const char *const *no_effect; /* gear-lte: per variable NULL, or why it has no effect at the optimum */
     double active_profile_mm;
+    /* gear-lte-range, gear-dynamic: the objective's unit; its value for the unmodified flank, the
+     * case's own and the optimum (0, 1, 2), with its recorded numbers (gd_opt_gear_naux: per torque,
+     * the LTE amplitude, or the dynamic peak and how its curve was found, gd_dyn_method) */
+    const char *objective_unit;
+    int ntorques;
+    const double *torques_nm;
+    double objective_of[3];
+    const double *aux_of[3];
     /* the best run's progress: the relative fall of its best value over the last tenth of its
      * evaluations; converged = that fall is at most 1e-3 */
     double last_tenth_improvement;
@@ -493,6 +505,13 @@ typedef struct gd_optimize_outcome {
     double wall_s;           /* the runs' wall time summed */
     gd_opt_gear *gear_problem;
     gd_opt_testfn tf;
+    /* gear-lte-range, gear-dynamic: the objective's own state (freed by user_free) and its value
+     * (with its recorded numbers) for the unmodified flank, the case's own and the optimum */
+    gd_opt_lte_range lte_range;
+    void *user;
+    void (*user_free)(void *user);
+    double objective_of[3];
+    double aux_of[3][GD_OPT_MAX_AUX];
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */

@@ -17,6 +17,14 @@ void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const g
                r->wall_s);
 }
 
+/* The unit of the objective: the LTE's arcsec, the dynamic response's m/s^2 or um, none. */
+static const char *unit_of(const gd_case *c, const gd_optimize_outcome *o)
+{
+    if (o->objective == GD_OBJ_GEAR_DYNAMIC)
+        return c->opt_dynamic_response == GD_DYN_DTE_PP ? "um" : "m/s^2";
+    return o->gear ? "arcsec" : "";
+}
+
 static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outcome *o, gd_error *err)
 {
     static const char *fmt[2][2] = {{"pngcairo size 1100,700 font ',11'", ".png"},
@@ -30,13 +38,13 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
     for (int fi = 0; fi < 2; fi++) {
         n += snprintf(script + n, sizeof script - n,
             "set terminal %s\nset output '.convergence%s.tmp'\n"
-            "set title '%s on %s (%d variables): %d run%s of %ld evaluations, best %.6g%s' noenhanced\n"
-            "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\nset grid\nset key top right\n"
+            "set title '%s on %s (%d variables): %d run%s of %ld evaluations, best %.6g%s%s' noenhanced\n"
+            "set xlabel 'objective evaluations'\nset ylabel '%s (%s)' noenhanced\nset logscale y\nset grid\nset key top right\n"
             "plot 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):4 with points pt 7 ps 0.25 lc rgb '#b0b0b0' "
             "title 'every evaluation (best run)'",
             fmt[fi][0], fmt[fi][1], gd_opt_algorithm_name(c->opt_algorithm), gd_opt_objective_name(o->objective),
-            o->dim, o->runs, o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " arcsec" : "",
-            o->gear ? "LTE peak-to-peak (arcsec)" : "objective", o->best + 1);
+            o->dim, o->runs, o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " " : "", unit_of(c, o),
+            o->gear ? gd_opt_objective_name(o->objective) : "objective", unit_of(c, o), o->best + 1);
         for (int r = 0; r < o->runs && r < 20; r++)
             n += snprintf(script + n, sizeof script - n, ", 'convergence.csv' every ::1 using ($1 == %d ? $3 : 1/0):5 "
                           "with lines lw %d title 'best so far, run %d'", r + 1, r == o->best ? 3 : 1, r + 1);
@@ -94,10 +102,11 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
     double wall = o->wall_s;
     int threads = o->threads;
     const gd_opt_result *b = &o->res[o->best];
-    printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s "
+    printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s%s "
            "(evaluation %ld of run %d)\n", dir, gd_opt_algorithm_name(c->opt_algorithm),
            gd_opt_objective_name(o->objective), o->dim, o->dim == 1 ? "" : "s", o->runs, o->runs == 1 ? "" : "s",
-           budget, wall, threads, threads == 1 ? "" : "s", b->f, o->gear ? " arcsec" : "", b->best_at, o->best + 1);
+           budget, wall, threads, threads == 1 ? "" : "s", b->f, o->gear ? " " : "", unit_of(c, o), b->best_at,
+           o->best + 1);
     for (int i = 0; i < o->dim; i++) {
         const char *unit = "", *sym = o->names[i];
         if (o->gear)
@@ -110,9 +119,24 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
             printf("   (%s)", o->no_effect[i]);
         printf("\n");
     }
+    if (o->gear && o->objective != GD_OBJ_GEAR_LTE) {
+        int dyn = o->objective == GD_OBJ_GEAR_DYNAMIC;
+        printf("  %s (%s): unmodified %.6g, the case's modification %.6g, optimum %.6g (%+.1f %% against the "
+               "unmodified pair)\n", gd_opt_objective_name(o->objective), unit_of(c, o), o->objective_of[0],
+               o->objective_of[1], o->objective_of[2],
+               100 * (o->objective_of[2] - o->objective_of[0]) / o->objective_of[0]);
+        for (int k = 0; k < c->n_opt_torques; k++) {
+            printf("    at %g N m: unmodified %.6g, the case's %.6g, optimum %.6g", c->opt_torques_nm[k],
+                   o->aux_of[0][dyn ? 2 * k : k], o->aux_of[1][dyn ? 2 * k : k], o->aux_of[2][dyn ? 2 * k : k]);
+            if (dyn)
+                printf(" (the optimum's curve by %s)", gd_dyn_method_name((int)o->aux_of[2][2 * k + 1]));
+            printf("\n");
+        }
+    }
     if (o->gear) {
-        printf("  LTE peak-to-peak: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec (%+.1f %% "
-               "against the unmodified pair, %+.1f %% against the case's)\n", o->lte[0].lte_pp_arcsec,
+        printf("  LTE peak-to-peak at %g N m: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec "
+               "(%+.1f %% against the unmodified pair, %+.1f %% against the case's)\n", c->torque_nm,
+               o->lte[0].lte_pp_arcsec,
                o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
                100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec,
                100 * (o->lte[2].lte_pp_arcsec - o->lte[1].lte_pp_arcsec) / o->lte[1].lte_pp_arcsec);

@@ -258,7 +258,7 @@ static void box_problem(const gd_opt_gear *g, gd_opt_problem *p)
 
 /* The pair of sample j of the robust variant at the point y: the deviated variables, kept in the
  * box and repaired, and the deviated misalignment. */
-static void sample_pair(const gd_opt_gear *g, int j, const double *y, gd_pair *pair)
+static void sample_pair(const gd_opt_gear *g, const gd_pair *base, int j, const double *y, gd_pair *pair)
 {
     const int nv = g->vars.n;
     const double *d = g->dev + (size_t)j * (size_t)(3 + nv);
@@ -270,7 +270,7 @@ static void sample_pair(const gd_opt_gear *g, int j, const double *y, gd_pair *p
     gd_opt_problem box;
     box_problem(g, &box);
     gd_opt_repair(&box, g->anchor, yd, yd);
-    *pair = g->pair;
+    *pair = *base;
     gd_opt_gear_apply(&g->vars, pair, yd);
     pair->axis_in_plane_arcmin += d[0];
     pair->axis_cross_plane_arcmin += d[1];
@@ -294,15 +294,16 @@ static double quantile(double *v, int n, double q)
     return i + 1 < n ? (1 - delta) * v[i] + delta * v[i + 1] : v[n - 1];
 }
 
-/* The objectives at y (variables applied to the state's pair) into f, the recorded numbers into aux. */
-static gd_status gear_values(gear_state *s, const double *y, double *f, double *aux, gd_error *err)
+/* The objectives at y (the variables applied to the pair base) into f, the recorded numbers into aux. */
+static gd_status gear_values_on(gear_state *s, const gd_pair *base, const double *y, double *f, double *aux,
+                                gd_error *err)
 {
     const gd_opt_gear *g = s->g;
     int na = 0;
     gd_status st = GD_OK;
     for (int k = 0; k < g->nobj && st == GD_OK; k++) {
         const gd_opt_gear_objective *o = &g->obj[k];
-        s->pair = g->pair;
+        s->pair = *base;
         gd_opt_gear_apply(&g->vars, &s->pair, y);
         if (g->rb.samples == 0) {
             st = o->eval(s->os[k], &s->pair, &f[k], aux + na, err);
@@ -313,7 +314,7 @@ static gd_status gear_values(gear_state *s, const double *y, double *f, double *
         st = o->eval(s->os[k], &s->pair, &nominal, aux + na + 1, err);
         aux[na] = nominal;
         for (int j = 0; j < g->rb.samples && st == GD_OK; j++) {
-            sample_pair(g, j, y, &s->pair);
+            sample_pair(g, base, j, y, &s->pair);
             st = o->eval(s->os[k], &s->pair, &s->vals[j], s->aux, err);
             if (st != GD_OK)
                 gd_error_prefix(err, "robust sample %d", j + 1);
@@ -328,6 +329,11 @@ static gd_status gear_values(gear_state *s, const double *y, double *f, double *
         return gd_error_prefix(err, "%s at %s", g->obj[0].name, at);
     }
     return GD_OK;
+}
+
+static gd_status gear_values(gear_state *s, const double *y, double *f, double *aux, gd_error *err)
+{
+    return gear_values_on(s, &s->g->pair, y, f, aux, err);
 }
 
 static gd_status gear_evalv(void *state, const double *y, double *f, gd_error *err)
@@ -350,6 +356,21 @@ GD_API gd_status gd_opt_gear_value(const gd_opt_gear *g, const double *x, double
         return st;
     gear_state *s = state;
     st = gear_values(s, x, f, aux ? aux : s->aux, err);
+    state_free(state);
+    return st;
+}
+
+GD_API gd_status gd_opt_gear_value_of_pair(const gd_opt_gear *g, const gd_pair *pair, double *f, double *aux,
+                                           gd_error *err)
+{
+    void *state;
+    gd_status st = state_alloc((void *)g, &state, err);
+    if (st != GD_OK)
+        return st;
+    gear_state *s = state;
+    double y[GD_OPT_GEAR_NVARS];
+    gd_opt_gear_from_pair(&g->vars, pair, y);
+    st = gear_values_on(s, pair, y, f, aux ? aux : s->aux, err);
     state_free(state);
     return st;
 }
