@@ -213,9 +213,11 @@ int main(int argc, char **argv)
     int repeats = argc > 1 ? atoi(argv[1]) : 3;
     printf("geardyn %s: the plain RK4 loop (no events, modes from the state) against geardyn, best of %d\n",
            GD_VERSION_STRING, repeats);
-    const char *tors[] = {"scene.model=torsional", NULL};
-    const char *smooth[] = {"scene.model=torsional", "clearance.backlash_um=0", "operating.torque_nm=20000", NULL};
-    const char *bta[] = {"scene.model=bta", "operating.speed_rpm=7000", "excitation.ste_amplitude_um=3", NULL};
+    const char *tors[] = {"scene.model=torsional", "operating.speed_rpm=4000", "operating.torque_nm=500", NULL};
+    const char *smooth[] = {"scene.model=torsional", "clearance.backlash_um=0", "operating.speed_rpm=4000",
+                            "operating.torque_nm=20000", NULL};
+    const char *bta[] = {"scene.model=bta", "operating.speed_rpm=7000", "operating.torque_nm=500",
+                         "excitation.ste_amplitude_um=3", NULL};
     int rc = 0;
     rc |= scene("torsional, 4000 rpm, double-sided impacts", tors, 100, repeats);
     rc |= scene("torsional, permanent contact (smooth)", smooth, 100, repeats);

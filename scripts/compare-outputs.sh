@@ -60,6 +60,14 @@ SHORTEN=(
   # problems, 6 s with 5.
   'cases/optimize/compare-test-functions.ini'
   'optimize.dimension=6 optimize.runs=2 optimize.budget_evals=500'
+  # basins (a 200 x 200 picture and 10 000 states; 13 values of 2 000 states; 100 x 100 of the bta
+  # model): a 50 x 50 picture and 1 000 states; 4 values of 300 states; 10 x 10 and 100 states.
+  'cases/basins/paper-*.ini'
+  'basins.resolution=10 basins.samples=100'
+  'cases/basins/*fractions*.ini'
+  'basins.points=4 basins.samples=300'
+  'cases/basins/*.ini'
+  'basins.resolution=50 basins.samples=1000'
 )
 
 # Allowed to differ. JSON keys (any depth): geardyn_version; wall_s (solver/optimiser/LTCA/TCA/

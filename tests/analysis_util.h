@@ -35,6 +35,7 @@ static inline void au_ks_case(gd_case *c, gd_model *m, double alpha, double zeta
 {
     gd_error e = {0};
     gd_case_init(c, &e);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     au_set(c, "scene.model=torsional");
     au_set(c, "clearance.backlash_um=2");
     au_set(c, "solver.characteristic_length_um=1");

@@ -83,6 +83,7 @@ static inline void ex_run_case(const char *const *sets, const char *const *extra
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     int k = 0;
     for (int pass = 0; pass < 2; pass++)
         for (const char *const *p = pass ? extra : sets; p && *p; p++)

@@ -29,6 +29,7 @@ static inline void pu_case(gd_case *c, const char *const *sets)
     gd_error e;
     memset(&e, 0, sizeof e);
     PU_CHECK(gd_case_init(c, &e), &e);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; sets && sets[i]; i++)
         PU_CHECK(gd_case_set(c, sets[i], i, &e), &e);
     PU_CHECK(gd_case_resolve(c, &e), &e);

@@ -33,6 +33,7 @@ static void make_case(gd_case *c, const char *const *sets)
 {
     gd_error e = {0};
     CHECK(gd_case_init(c, &e), &e);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; sets[i]; i++)
         CHECK(gd_case_set(c, sets[i], i, &e), &e);
     CHECK(gd_case_resolve(c, &e), &e);

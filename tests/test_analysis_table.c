@@ -31,6 +31,7 @@ int main(void)
     gd_status st = gd_case_init(&c, &err);
     if (st == GD_OK)
         st = gd_case_set(&c, "operating.torque_nm=0", 0, &err);
+    c.speed_rpm = 4000; /* the paper's speed: a case must give one */
     tap_ok(st == GD_OK, "case with torque_nm = 0: %s", err.msg);
     gd_case r = c;
     st = gd_case_copy(&r, &c, &err);

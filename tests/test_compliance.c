@@ -54,6 +54,7 @@ int main(void)
     for (int k = 0; k < 3; k++) {
         gd_case c;
         gd_case_init(&c, &e);
+        c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
         char buf[64];
         gd_case_set(&c, "gear.helix_angle_deg=0", 0, &e);
         snprintf(buf, sizeof buf, "gear.teeth_pinion=%d", pairs[k][0]);

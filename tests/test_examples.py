@@ -15,6 +15,12 @@ physics through the table of analyses and its writers:
                 stiffness equal those of `geardyn run cases/guide/spur.ini --set
                 scene.analysis=ltca` (the pair built in C is the case's pair), and the mean is
                 within 20 % of ISO 6336-1 (docs/ltca.md section 6).
+  basins EXE    examples/basins_duffing.c, the forced Duffing oscillator as a custom system, 10 000
+                random initial states each: the twin-well case (two attractors, Attractors.jl's test
+                suite: 0.511 and 0.489 of 1000 states) and the five-attractor case (bSTAB's reference:
+                0.2027, 0.495, 0.0288, 0.0257, 0.2478 of 10 000 states): every fraction within three
+                combined standard errors of its reference, the number of attractors exact, no state
+                left without an attractor.
 
 Standard library only; TAP output."""
 import json
@@ -118,10 +124,27 @@ def ltca(exe, tmp):
           "ltca: mean mesh stiffness within 20 % of ISO 6336-1")
 
 
+def basins(exe, tmp):
+    for system, nref in (("twin", 2), ("five", 5)):
+        ex = printed(run([exe, system, "10000"]))
+        ok(int(ex["attractors"]) == nref, "basins %s: %s attractors (reference %d)" % (system, ex["attractors"], nref))
+        other = sum(int(ex[k]) for k in ("diverged", "left-box", "iteration-cap", "integration-failed"))
+        ok(other == 0, "basins %s: every state reached an attractor (%d did not)" % (system, other))
+        seen = set()
+        for r in range(nref):
+            val = ex["fraction_%d" % r].split(";")[0].split()
+            p, se, ref, ref_se = (float(x) for x in val[:4])
+            comb = (se * se + ref_se * ref_se) ** 0.5
+            ok(abs(p - ref) <= 3 * comb, "basins %s: fraction %.4f +- %.4f against the reference %.4f +- %.4f "
+               "(%.2f combined standard errors; at most 3)" % (system, p, se, ref, ref_se, abs(p - ref) / comb))
+            seen.add(ex["fraction_%d" % r].split("attractor ")[1].split(",")[0])
+        ok(len(seen) == nref, "basins %s: each reference value on its own attractor (%s)" % (system, sorted(seen)))
+
+
 def main():
     which, exe = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as tmp:
-        {"response": response, "sweep": sweep, "ltca": ltca}[which](exe, tmp)
+        {"response": response, "sweep": sweep, "ltca": ltca, "basins": basins}[which](exe, tmp)
     print("1..%d" % n_checks)
     return 0
 

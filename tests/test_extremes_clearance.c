@@ -23,6 +23,7 @@ static long steady_events(const char *amp)
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[] = {"scene.model=torsional", "excitation.stiffness=constant", "solver.rtol=1e-10",
                           "run.transient_periods=200", "run.record_periods=100", "run.lyapunov_exponents=0", amp, NULL};
     for (int i = 0; sets[i]; i++)
@@ -43,6 +44,7 @@ static void grazing(void)
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *base[] = {"scene.model=torsional", "excitation.stiffness=constant", NULL};
     for (int i = 0; base[i]; i++)
         gd_case_set(&c, base[i], i, &e);

@@ -16,6 +16,7 @@ static void stepped(double after, double rtol, ex_run *out)
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[] = {"run.transient_periods=200", "run.record_periods=1", "run.lyapunov_exponents=0", NULL};
     for (int i = 0; sets[i]; i++)
         gd_case_set(&c, sets[i], i, &e);
@@ -33,6 +34,7 @@ static void stepped(double after, double rtol, ex_run *out)
     memset(out, 0, sizeof *out);
     out->finite = 1;
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     gd_case_set_number(&c, "operating.torque_nm", after, &e);
     gd_case_set_number(&c, "solver.rtol", rtol, &e);
     gd_case_set_number(&c, "solver.atol", rtol / 100, &e);
@@ -105,6 +107,7 @@ static void zero_load(const char *model)
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     char mdl[64];
     snprintf(mdl, sizeof mdl, "scene.model=%s", model);
     const char *sets[] = {mdl, "operating.torque_nm=0", "scene.error_excitation=off", "run.initial_condition=zero",

@@ -23,6 +23,7 @@ static void fixed_point(double rtol, long periods, double *p1000, double *pend, 
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     gd_case_set(&c, "scene.model=torsional", 0, &e);
     gd_case_set_number(&c, "solver.rtol", rtol, &e);
     gd_case_set_number(&c, "solver.atol", rtol / 100, &e);

@@ -30,6 +30,7 @@ static int run(int watch, double delta, hits *h, double *t1, double *period)
     gd_case c;
     gd_error err = {0};
     gd_case_init(&c, &err);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[] = {"scene.model=torsional", "excitation.stiffness=constant", "scene.error_excitation=off",
                           "damping.mesh_damping_ratio=0", "clearance.backlash_um=20",
                           "solver.characteristic_length_um=1", "solver.rtol=1e-6", "solver.atol=1e-9",

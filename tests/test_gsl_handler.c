@@ -121,6 +121,7 @@ static int ep_case_resolve(void)
     gd_case c;
     gd_error e = {0};
     gd_status st = gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     if (st == GD_OK)
         st = gd_case_resolve(&c, &e);
     gd_case_free(&c);

@@ -14,6 +14,7 @@ static void base(gd_case *c, const char *const *extra)
 {
     gd_error e = {0};
     gd_case_init(c, &e);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[] = {"scene.model=torsional-lr", "excitation.stiffness=ltca", "excitation.impact=on",
                           "operating.torque_nm=500", "solver.ltca_positions_per_cycle=32", NULL};
     for (int i = 0; sets[i]; i++)

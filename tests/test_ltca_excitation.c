@@ -202,6 +202,7 @@ static void refusals(void)
     gd_case_free(&c);
     /* the case itself: analysis = ltca needs a torque */
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     gd_case_set(&c, "scene.analysis=ltca", 0, &e);
     gd_case_set(&c, "operating.torque_nm=0", 1, &e);
     tap_ok(gd_case_resolve(&c, &e) == GD_ERR_INPUT && strstr(e.msg, "operating.torque_nm") != NULL,

@@ -225,6 +225,7 @@ int main(void)
     for (int q = 0; q < 4; q++) {
         gd_case c;
         gd_case_init(&c, &e);
+        c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
         char buf[64];
         gd_case_set(&c, "gear.arrangement=spur", 1, &e);
         gd_case_set(&c, "gear.helix_angle_deg=0", 2, &e);

@@ -14,7 +14,10 @@
  * damp the mesh in contact only, so that the vector field jumps at each event and the saltation
  * matrix differs from the identity; one more has a mesh-in pulse that acts only in drive-side
  * contact (it switches with the contact inside its phases), and one damps the bearings only while
- * their journals touch. */
+ * their journals touch. An orbit of two mesh periods (Kahraman & Singh at Omega 1.3, damping
+ * in contact only): its monodromy of two periods, from the map of two periods and as the product of
+ * the one-period monodromies of its two shooting segments, against the finite differences of the map
+ * of two periods. Without root finding the monodromy is refused (GD_ERR_INPUT). */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_scene.h"
@@ -117,6 +120,38 @@ static long events_in_pulse(const gd_model *m, const gd_solver_opts *o, const do
     return p.in;
 }
 
+/* The monodromy of nper periods from y0 against central differences of the map of nper periods:
+ * from gd_sim_period_map when Mgiven is NULL, else Mgiven. */
+static void compare_n(const char *name, const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
+                      const double *Mgiven)
+{
+    gd_error e = {0};
+    const int n = m->n;
+    double y1[GD_MAX_STATE], M[GD_MAX_STATE * GD_MAX_STATE], yp[GD_MAX_STATE], ym[GD_MAX_STATE], y[GD_MAX_STATE];
+    if (Mgiven)
+        memcpy(M, Mgiven, sizeof(double) * (size_t)(n * n));
+    else if (gd_sim_period_map(m, o, y0, nper, y1, M, NULL, &e) != GD_OK)
+        au_die(&e);
+    double mmax = 0, dmax = 0;
+    for (int i = 0; i < n * n; i++)
+        mmax = fmax(mmax, fabs(M[i]));
+    for (int j = 0; j < n; j++) {
+        double h = 1e-5 * (1.0 + fabs(y0[j]));
+        memcpy(y, y0, sizeof(double) * (size_t)n);
+        y[j] = y0[j] + h;
+        if (gd_sim_period_map(m, o, y, nper, yp, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        y[j] = y0[j] - h;
+        if (gd_sim_period_map(m, o, y, nper, ym, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        for (int i = 0; i < n; i++)
+            dmax = fmax(dmax, fabs((yp[i] - ym[i]) / (2.0 * h) - M[i * n + j]));
+    }
+    char label[200];
+    snprintf(label, sizeof label, "%s: max |M - M_fd| / max |M| (max |M| %.4g)", name, mmax);
+    TAP_CLOSE(dmax / mmax, 0.0, 1e-6, label);
+}
+
 int main(void)
 {
     const char *tight[] = {"solver.rtol=1e-12", "solver.atol=1e-14", NULL};
@@ -193,5 +228,48 @@ int main(void)
     settle(&c, &m, &o, 100, y);
     compare("bta, double-sided, bearing damping in contact only", &m, &o, y, 1);
     gd_case_free(&c);
+    /* an orbit of two mesh periods: the map of two periods, and the product of the two one-period
+     * monodromies of its multiple-shooting segments, both against the finite differences of the
+     * map of two periods (K&S at Omega 1.3, past the period doubling: impacting, damping in contact
+     * only so that its saltation matrices are not the identity) */
+    {
+        const char *sets[] = {"excitation.ste_phase_deg=90", "solver.rtol=1e-12", "solver.atol=1e-14",
+                              "damping.mesh_damping_mode=contact", NULL};
+        au_ks_case(&c, &m, 0.0, 0.05, 0.1, 0.1, 1.3, sets);
+        gd_solver_opts_from_case(&c, &o);
+        settle(&c, &m, &o, 400, y);
+        gd_po_opts po;
+        gd_po_opts_default(&po);
+        po.nper = 2;
+        gd_po orbit;
+        gd_error e = {0};
+        if (gd_po_solve(&m, &o, &po, y, &orbit, &e) != GD_OK)
+            au_die(&e);
+        double y2[GD_MAX_STATE], d = 0;
+        if (gd_sim_period_map(&m, &o, orbit.y[0], 1, y2, NULL, NULL, &e) != GD_OK)
+            au_die(&e);
+        for (int i = 0; i < m.n; i++)
+            d = fmax(d, fabs(y2[i] - orbit.y[0][i]));
+        tap_ok(orbit.nseg == 2 && d > 1e-3 && orbit.events[0] >= 2, "K&S at Omega 1.3: an impacting orbit of two mesh "
+               "periods (|P y - y| %.3g, %ld events)", d, orbit.events[0]);
+        compare_n("two periods of the period-2 orbit, the map of two periods", &m, &o, orbit.y[0], 2, NULL);
+        compare_n("two periods of the period-2 orbit, the product of its segments' monodromies", &m, &o, orbit.y[0],
+                  2, orbit.M);
+        gd_case_free(&c);
+    }
+
+    /* a monodromy needs located events: without root finding the map refuses it */
+    {
+        load(&c, &m, "cases/validation/kahraman-singh.ini", tight);
+        gd_solver_opts_from_case(&c, &o);
+        o.root_finding = 0;
+        double y1[GD_MAX_STATE], M[GD_MAX_STATE * GD_MAX_STATE];
+        gd_error e = {0};
+        settle(&c, &m, &o, 10, y);
+        gd_status st = gd_sim_period_map(&m, &o, y, 1, y1, M, NULL, &e);
+        tap_ok(st == GD_ERR_INPUT && strstr(e.msg, "root finding"), "without root finding the monodromy is refused "
+               "(%s)", e.msg);
+        gd_case_free(&c);
+    }
     return tap_done();
 }

@@ -111,6 +111,7 @@ static void synthetic(void)
         gd_case c;
         gd_error e = {0};
         gd_case_init(&c, &e);
+        c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
         for (int j = 0; rt[i][j]; j++)
             gd_case_set(&c, rt[i][j], j + 1, &e);
         gd_status st = gd_case_check(&c, &e);

@@ -33,6 +33,7 @@ static gd_error err;
 static void make_case(gd_case *c, const char *const *sets, int n)
 {
     CHECK(gd_case_init(c, &err));
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; i < n; i++)
         CHECK(gd_case_set(c, sets[i], i + 1, &err));
     CHECK(gd_case_resolve(c, &err));

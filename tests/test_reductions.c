@@ -28,6 +28,7 @@ static void make(gd_case *c, const char *const *base, const char *model, const c
     gd_error e;
     memset(&e, 0, sizeof e);
     PU_CHECK(gd_case_init(c, &e), &e);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; base[i]; i++)
         pu_set(c, base[i]);
     for (int i = 0; extra && extra[i]; i++)

@@ -176,6 +176,7 @@ static void refused(const char *what, const char *const *sets, const char *const
     gd_error e;
     memset(&e, 0, sizeof e);
     PU_CHECK(gd_case_init(&c, &e), &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; sets[i]; i++)
         PU_CHECK(gd_case_set(&c, sets[i], i, &e), &e); /* the message numbers it i + 1 */
     gd_status st = gd_case_resolve(&c, &e);

@@ -144,6 +144,7 @@ int main(void)
         gd_case c;
         gd_error e = {0};
         gd_case_init(&c, &e);
+        c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
         gd_case_set(&c, "scene.model=torsional", 0, &e);
         gd_case_set(&c, "scene.gravity=on", 1, &e);
         gd_status st = gd_case_resolve(&c, &e);

@@ -96,6 +96,7 @@ static int same_point(const gd_sweep_plan *p, const gd_sweep_point *a, const gd_
         a->rhs_evals != b->rhs_evals || a->events != b->events)
         return 0;
     if (memcmp(a->rms_accel_mps2, b->rms_accel_mps2, sizeof a->rms_accel_mps2) != 0 ||
+        memcmp(a->dynamic_load_factor, b->dynamic_load_factor, sizeof a->dynamic_load_factor) != 0 ||
         memcmp(a->impact_regime, b->impact_regime, sizeof a->impact_regime) != 0)
         return 0;
     if (memcmp(&a->mle_per_period, &b->mle_per_period, sizeof(double)) != 0 ||
@@ -170,7 +171,8 @@ static void check_chain_by_hand(const gd_case *base, const gd_sweep_plan *p, con
         PU_CHECK(gd_response_run(&c, &m, &o, &hooks, &h, &r, &e), &e);
         ok_state &= memcmp(r.y_final, pt->y_final, sizeof(double) * (size_t)m.n) == 0;
         ok_rms &= memcmp(r.rms_accel_mps2, pt->rms_accel_mps2, sizeof r.rms_accel_mps2) == 0 &&
-                  strcmp(r.motion, pt->motion) == 0;
+                  strcmp(r.motion, pt->motion) == 0 &&
+                  memcmp(r.dynamic_load_factor, pt->dynamic_load_factor, sizeof r.dynamic_load_factor) == 0;
         for (long q = 0; q < h.n && q < 64; q++)
             ok_pc &= h.lam[q] == pt->poincare[q * p->nresp + 0];
         memcpy(y_prev, r.y_final, sizeof y_prev);
@@ -178,7 +180,7 @@ static void check_chain_by_hand(const gd_case *base, const gd_sweep_plan *p, con
         gd_case_free(&c);
     }
     tap_ok(ok_state, "%s: final states equal the chain run by hand (bitwise)", label);
-    tap_ok(ok_rms, "%s: RMS accelerations and motion equal the chain run by hand", label);
+    tap_ok(ok_rms, "%s: RMS accelerations, dynamic load factors and motion equal the chain run by hand", label);
     tap_ok(ok_pc, "%s: Poincare samples of lambda_L equal the chain run by hand", label);
 }
 
@@ -187,6 +189,7 @@ static void expect_bad(const char *const *extra, const char *needle, const char 
     gd_case c;
     gd_error e = {0};
     PU_CHECK(gd_case_init(&c, &e), &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *sets[64];
     int n = 0;
     for (int i = 0; ks[i]; i++)
@@ -479,6 +482,7 @@ int main(void)
         const char *t[] = {"sweep.from=1000", "sweep.to=2000", "sweep.parameter=operating.power_kw", NULL};
         gd_case bc;
         PU_CHECK(gd_case_init(&bc, &e), &e);
+        bc.speed_rpm = 4000, bc.torque_nm = 500; /* the paper's operating point: a case must give one */
         gd_status st = GD_OK;
         for (int i = 0; ks[i] && st == GD_OK; i++)
             st = gd_case_set(&bc, ks[i], i, &e);

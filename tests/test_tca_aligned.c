@@ -31,6 +31,7 @@ static gd_case make_case(const char *const *sets, int n)
     gd_case c;
     gd_error err = {0};
     gd_case_init(&c, &err);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; i < n; i++)
         if (gd_case_set(&c, sets[i], i + 1, &err) != GD_OK) {
             printf("Bail out! %s\n", err.msg);

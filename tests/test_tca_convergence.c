@@ -29,6 +29,7 @@ static gd_tca_result run_with(int np, int nz, int npos, int refine)
     gd_case c;
     gd_error err = {0};
     gd_case_init(&c, &err);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     int n = (int)(sizeof crown / sizeof crown[0]);
     for (int i = 0; i < n; i++)
         gd_case_set(&c, crown[i], i + 1, &err);

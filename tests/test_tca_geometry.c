@@ -35,6 +35,7 @@ static double inv_inv(double t)
 static gd_status resolve_with(const char *const *sets, int n, gd_case *c, gd_error *err)
 {
     gd_case_init(c, err);
+    c->speed_rpm = 4000, c->torque_nm = 500; /* the paper's operating point: a case must give one */
     for (int i = 0; i < n; i++) {
         gd_status st = gd_case_set(c, sets[i], i + 1, err);
         if (st != GD_OK)

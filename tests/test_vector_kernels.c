@@ -202,6 +202,7 @@ static void run(const char *const *sets, int nsets, const char *kernels, int per
     gd_case c;
     gd_error err = {0};
     gd_case_init(&c, &err);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     const char *base[] = {"operating.speed_rpm=4000", "operating.torque_nm=500", "clearance.backlash_um=10",
                           "clearance.bearing_clearance_um=5", "excitation.ste_amplitude_um=10"};
     for (int i = 0; i < 5; i++) gd_case_set(&c, base[i], i, &err);

@@ -32,6 +32,7 @@ static void run(const char *const *base, const char *const *extra, gd_wp_result 
     gd_case c;
     gd_error e = {0};
     gd_case_init(&c, &e);
+    c.speed_rpm = 4000, c.torque_nm = 500; /* the paper's operating point: a case must give one */
     set_all(&c, base);
     if (extra)
         set_all(&c, extra);

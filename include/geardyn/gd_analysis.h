@@ -29,6 +29,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_basins.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -72,6 +73,13 @@ typedef struct gd_run_env {
     /* gd_analysis_run_in: after run (its status), and after summary.json with the result */
     void (*ran)(void *user, const gd_case *c, gd_status st);
     void (*done)(void *user, const gd_case *c, const void *result, gd_run_dir *out);
+    /* basins: initial states mapped of those planned on this process; nonzero stops the run */
+    int (*basins_progress)(void *user, long done, long total);
+    /* basins over a parameter on several processes (rank of nranks above): after this process's values,
+     * with its status. Rank 0 reads the other ranks' points into res (gd_basins_record_parse) and returns
+     * GD_OK to go on to the matching and the files; another rank sends its points and returns any other
+     * status (its run ends without files). */
+    gd_status (*basins_end)(void *user, gd_basins_result *res, gd_status st, gd_error *err);
 } gd_run_env;
 
 typedef struct gd_analysis_type {
@@ -94,7 +102,8 @@ typedef struct gd_analysis_type {
 /* The results of the rows (what run gives as *result): response: gd_response_outcome
  * (gd_response.h); sweep: gd_sweep_outcome (gd_sweep.h); tca: gd_tca_result (gd_tca.h); ltca:
  * gd_ltca_result (gd_ltca.h); optimize: gd_optimize_outcome, compare-optimizers:
- * gd_compare_outcome (gd_optimize.h); work-precision: gd_workprec_outcome (gd_workprec.h). */
+ * gd_compare_outcome (gd_optimize.h); work-precision: gd_workprec_outcome (gd_workprec.h); basins:
+ * gd_basins_result (gd_basins.h). */
 
 /* All rows, in the order of the gd_analysis values. */
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n);

@@ -22,7 +22,8 @@ extern "C" {
 typedef enum gd_analysis {
     GD_ANALYSIS_RESPONSE = 0, GD_ANALYSIS_SWEEP = 1, GD_ANALYSIS_TCA = 2, GD_ANALYSIS_LTCA = 3,
     GD_ANALYSIS_OPTIMIZE = 4, GD_ANALYSIS_COMPARE_OPTIMIZERS = 5, GD_ANALYSIS_WORK_PRECISION = 6,
-    GD_ANALYSIS_CONTINUATION = 7
+    GD_ANALYSIS_CONTINUATION = 7,
+    GD_ANALYSIS_BASINS = 8
 } gd_analysis;
 typedef enum gd_model_kind { GD_MODEL_TORSIONAL = 0, GD_MODEL_TORSIONAL_LR = 1, GD_MODEL_BTA = 2 } gd_model_kind;
 typedef enum gd_stiffness_kind {
@@ -50,8 +51,10 @@ typedef enum gd_cont_shooting { GD_SHOOT_MULTIPLE = 0, GD_SHOOT_SINGLE = 1 } gd_
 typedef enum gd_cont_start { GD_CONT_START_ATTRACTOR = 0, GD_CONT_START_STATE = 1, GD_CONT_START_SWEEP = 2 } gd_cont_start;
 typedef enum gd_cont_response {
     GD_CONT_RESP_RMS_ACCEL = 0, GD_CONT_RESP_MAX_DEFLECTION = 1, GD_CONT_RESP_MIN_DEFLECTION = 2,
-    GD_CONT_RESP_POINCARE = 3
+    GD_CONT_RESP_POINCARE = 3, GD_CONT_RESP_DYNAMIC_LOAD_FACTOR = 4
 } gd_cont_response;
+/* [basins] base: the components off the section at the static state or at a given state */
+typedef enum gd_basins_base { GD_BASINS_BASE_STATIC = 0, GD_BASINS_BASE_STATE = 1 } gd_basins_base;
 typedef enum gd_lyapunov_method { GD_LYAP_TANGENT = 0, GD_LYAP_TWO_TRAJECTORY = 1 } gd_lyapunov_method;
 
 /* Where a resolved value came from. */
@@ -73,6 +76,10 @@ typedef struct gd_case {
     double profile_shift_pinion, profile_shift_gear, addendum_coefficient, dedendum_coefficient;
     double face_width_pinion_mm, face_width_gear_mm, groove_width_mm;
     double bore_diameter_pinion_mm, bore_diameter_gear_mm;
+    /* the blank of a body that is not a solid disc (docs/model.md section 9.2): a rim down to its inner
+     * diameter (0: none, a solid blank), a web of an axial thickness, a hub of a diameter and length */
+    double rim_inner_diameter_pinion_mm, rim_inner_diameter_gear_mm, web_thickness_pinion_mm, web_thickness_gear_mm;
+    double hub_diameter_pinion_mm, hub_diameter_gear_mm, hub_length_pinion_mm, hub_length_gear_mm;
     double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
     double pinion_mass_kg, gear_mass_kg, pinion_inertia_kgm2, gear_inertia_kgm2;
     double equivalent_mass_kg; /* torsional equivalent mass of one half, m_e */
@@ -216,6 +223,27 @@ typedef struct gd_case {
     char cont_overlay_sweep[GD_PATH_MAX]; /* a finished sweep's directory ("": none) */
     int cont_response;       /* gd_cont_response */
 
+    /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
+    char bas_x[32], bas_y[32];   /* the section's coordinates */
+    double bas_x_from, bas_x_to, bas_y_from, bas_y_to; /* its box, in the coordinates' units (NaN: derived) */
+    double bas_phase_deg;    /* mesh phase of the section */
+    int bas_base;            /* gd_basins_base */
+    char bas_state[1024];    /* base = state: the dimensionless state, comma-separated */
+    int bas_resolution, bas_resolution_y; /* cells of the box per coordinate (resolution_y 0: resolution) */
+    int bas_picture;         /* the grid of resolution x resolution_y initial states */
+    int bas_samples, bas_seed; /* the random sample of the fractions, its seed */
+    int bas_max_periods;     /* mesh periods of one trajectory at most */
+    double bas_margin;       /* the tessellation beyond the box, in box widths */
+    int bas_consecutive_recurrences, bas_consecutive_attractor_steps, bas_consecutive_basin_steps,
+        bas_consecutive_lost_steps;
+    int bas_lyapunov_periods;
+    double bas_newton_tol;
+    int bas_entropy_box_cells;
+    char bas_continuation[GD_PATH_MAX]; /* a finished continuation's directory ("": none) */
+    char bas_parameter[256]; /* the fractions over a numeric key, "section.key" ("": one value) */
+    double bas_from, bas_to; /* in the unit of that key */
+    int bas_points;
+
     /* bookkeeping, not keys */
     char path[GD_PATH_MAX];  /* case file it was read from ("" if none) */
     unsigned char *src;      /* gd_source per schema entry */
@@ -269,6 +297,13 @@ GD_API gd_source gd_case_source(const gd_case *c, size_t i, int *line);
  * at all (a single pair's groove width and groove shafts), so that a listing may leave it out. */
 GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent);
 GD_API const char *gd_source_name(gd_source s);
+/* The physical values a resolved case takes from the schema's defaults: the numbers of [gear],
+ * [modification], [misalignment], [clearance], [excitation], [damping] and [support] that its
+ * analysis and model use, that neither the file nor --set gives, that no other key derives and that
+ * its sweep or continuation does not vary. Writes up to cap schema indices into idx (may be NULL)
+ * and returns how many there are. (The operating point has no default: gd_case_check refuses a case
+ * whose analysis needs it and lacks it.) */
+GD_API size_t gd_case_defaulted_keys(const gd_case *c, size_t *idx, size_t cap);
 
 #ifdef __cplusplus
 }

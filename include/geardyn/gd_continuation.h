@@ -22,13 +22,17 @@ typedef struct gd_contin_measure {
     double rms_accel_mps2[3];    /* left, right, combined, as a sweep's rms_accel_mps2 */
     double lambda_min_um[2], lambda_max_um[2]; /* mesh deflections of the left and right half */
     double lambda_poincare;      /* lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv) */
+    double dynamic_load_factor[2]; /* left, right: the largest mesh force on the orbit over the static one */
 } gd_contin_measure;
 
 typedef struct gd_contin_branch {
     int nper;                    /* mesh periods of its orbits */
     int direction;               /* +1: set out towards increasing parameter, -1 decreasing */
     int parent;                  /* the branch whose period doubling it was switched from, -1 for a start branch */
-    int at_doubling;             /* 1: it ends back at the period doubling it was born at (the way back) */
+    double born_p;               /* p of that period doubling (NAN for a start branch) */
+    int joins;                   /* br.end GD_END_DOUBLING: the branch (of half the period) whose period doubling it
+                                  * ends at, -1 when none or no branch followed has it */
+    double joins_p;              /* p of that doubling (NAN when none) */
     gd_branch br;                /* points, bifurcations, end (gd_periodic.h); p = value / scale */
     char end_reason[GD_ERROR_MSG_MAX + 256]; /* how it ended, the parameter in the key's unit (and p) */
     gd_contin_measure *meas;     /* one per point */
@@ -48,8 +52,11 @@ typedef struct gd_contin_result {
     char start_source[GD_PATH_MAX + 96]; /* start = sweep: which point of which sweep ("" otherwise) */
     int nbranches, branch_cap;   /* branches (at most continuation.max_branches) and the array's size */
     gd_contin_branch *branch;    /* the start's branches (down before up), then those switched to, in order */
-    char notes[8][GD_ERROR_MSG_MAX]; /* branch switchings that found no doubled orbit or were beyond the bound */
+#define GD_CONTIN_NOTES 32
+    char notes[GD_CONTIN_NOTES][GD_ERROR_MSG_MAX]; /* branch switchings that found no doubled orbit or were beyond
+                                                    * max_branches; what a location found that is no bifurcation */
     int nnotes;
+    int notes_dropped;           /* notes beyond GD_CONTIN_NOTES */
     long corrections, newton_iterations;
     double cpu_s;
 } gd_contin_result;

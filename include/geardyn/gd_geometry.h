@@ -38,10 +38,22 @@ GD_API gd_status gd_geometry_compute(const gd_pair *pair, gd_geometry *g, gd_err
 /* Involute function inv(a) = tan a - a and its inverse (Newton, GSL-free closed loop). */
 GD_API double gd_involute(double a);
 
-/* Mass and polar inertia of the part of body `which` (0 pinion, 1 gear) that carries one mesh:
- * a cylinder of the reference radius over the face width, less the bore, plus for one helical
- * half of a herringbone half of the relief groove as a cylinder of the root radius; a spur or
- * single-helical pair is the whole body of its face width, without a groove (docs/model.md). */
+/* The blank of a body in metres: coaxial annuli, each over its own axial length, that meet without
+ * overlap. The rim with the teeth runs from r_rim to the reference radius over the face (and to the
+ * root radius over the groove of a herringbone); the web from r_hub to r_rim over its thickness; the
+ * hub from r_bore to r_hub over its length. Without a rim (rim_inner_diameter 0) r_rim = r_hub and
+ * the web is 0 long: a solid blank over the face; without a hub r_hub = r_bore. */
+typedef struct gd_blank {
+    double r_bore, r_hub, r_rim;  /* m */
+    double web, hub_length;       /* axial lengths of the web and the hub, m (0: none) */
+    double groove, width;         /* the relief groove (0 in a single pair) and the body's width, m */
+} gd_blank;
+GD_API void gd_body_blank(const gd_pair *pair, const gd_geometry *g, int which, gd_blank *b);
+/* Mass and polar inertia of the part of body `which` (0 pinion, 1 gear) that carries one mesh: the
+ * annuli of its blank (gd_blank: the teeth as a cylinder of the reference radius over the face,
+ * the rim, web and hub), steel of pair->density_kg_per_m3. A herringbone half carries its half's
+ * teeth, half the groove (a cylinder of the root radius) and half the web and hub; a spur or
+ * single-helical pair is its whole body (docs/model.md section 9.2). */
 GD_API void gd_body_of_mesh(const gd_pair *pair, const gd_geometry *g, int which, double *mass_kg, double *inertia_kgm2);
 /* Mean mesh stiffness of one mesh (a herringbone's half, a single pair) along the tooth normal,
  * N/m, from ISO 6336-1

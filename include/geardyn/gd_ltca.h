@@ -56,7 +56,14 @@ typedef struct gd_ltca_position {
     double stiffness[2];     /* mesh stiffness of each half, Eq. 14: load / (approach - geometric) (N/m; 0 unloaded) */
     int pairs_loaded[2];     /* tooth pairs carrying load */
     double max_pressure[2];  /* Pa */
-    unsigned edge_loaded[2]; /* gd_edge_kind bits of loaded points on a flank boundary */
+    /* edge loading (docs/ltca.md section 4): the face-end bits of a loaded end where the flanks meet
+     * first (its gap, the profile relief aside, the least of its contact line's loaded points, the
+     * others higher by more than GD_LTCA_EDGE_MARGIN of the line's deflection: the load concentrates
+     * on the end), and the tip and root bits of loaded points on a tip edge or the form circle off the
+     * nominal path (corner contact, GD_LTCA_CORNER_GAP); edge_ratio: the largest line load of a loaded face end over its contact line's
+     * mean (0 when no end is loaded) */
+    unsigned edge_loaded[2];
+    double edge_ratio[2];
     int npoints, loaded;     /* points of the problem, points carrying load */
     int iterations;          /* active-set iterations */
     double residual;         /* the solver's largest violation of the contact conditions (m) */
@@ -65,6 +72,17 @@ typedef struct gd_ltca_position {
 } gd_ltca_position;
 
 typedef struct gd_ltca gd_ltca;
+
+/* A face end is edge-loaded when the initial gaps of its contact line's loaded points rise from it by
+ * more than this fraction of the line's mean elastic deflection (an aligned pair of unmodified flanks:
+ * 1e-6 of it). */
+#define GD_LTCA_EDGE_MARGIN 0.10
+/* A loaded point on a tip edge or form circle is a corner contact, off the nominal path of contact,
+ * when its initial gap above the half's first contact, the profile relief aside, exceeds this (m). */
+#define GD_LTCA_CORNER_GAP 1e-9
+/* The gd_edge_kind bits of the face ends, and of the tips and form circles. */
+#define GD_EDGE_FACE_ENDS 0xCCu
+#define GD_EDGE_TIPS_ROOTS 0x33u
 
 /* The load, the pinion's axial support and the discretisation of LTCA (the case's
  * operating.torque_nm, support.pinion_axial and [solver] ltca_* and tca_* keys). */
@@ -134,6 +152,7 @@ typedef struct gd_ltca_result {
     double *axial_shift;          /* m */
     int *pairs_loaded[2];
     unsigned *edge_loaded[2];
+    double *edge_ratio[2];        /* gd_ltca_position.edge_ratio */
     double lte_pp_arcsec, lte_mean_arcsec;
     double gte_pp_arcsec[2];
     double stiffness_mean[2], stiffness_min[2], stiffness_max[2];
@@ -141,8 +160,10 @@ typedef struct gd_ltca_result {
     double load_share_min[2], load_share_max[2];
     double pressure_max[2];       /* over the cycle */
     unsigned edge_kinds[2];       /* union of edge_loaded */
-    int edge_positions[2];        /* positions with a loaded edge */
-    double edge_load_max[2];      /* largest share of a half's load carried by edge points at one position */
+    int edge_positions[2];        /* positions with edge loading at a face end */
+    int tip_positions[2];         /* positions with contact on a tip edge or form circle */
+    double edge_load_max[2];      /* largest share of a half's load carried by the points of edge_loaded at one position */
+    double edge_ratio_max[2];     /* the largest edge_ratio over the positions */
     double pairs_mean[2];
     /* every point of every position (loaded or not), position k at points[first[k] .. first[k+1]) */
     gd_ltca_point *points;

@@ -21,6 +21,10 @@ typedef struct gd_pair {
     double face_width_pinion_mm, face_width_gear_mm; /* of one helical half */
     double groove_width_mm;                          /* relief groove between the halves */
     double bore_diameter_pinion_mm, bore_diameter_gear_mm;
+    /* the blank (gd_body_of_mesh): rim inner diameter (0: a solid blank), web thickness (with a rim),
+     * hub diameter (0: none) and length (NaN: the body's width) */
+    double rim_inner_diameter_pinion_mm, rim_inner_diameter_gear_mm, web_thickness_pinion_mm, web_thickness_gear_mm;
+    double hub_diameter_pinion_mm, hub_diameter_gear_mm, hub_length_pinion_mm, hub_length_gear_mm;
     double youngs_modulus_gpa, poisson_ratio, density_kg_per_m3;
     int arrangement;         /* gd_arrangement (gd_case.h): herringbone, helical or spur */
     int pinion_hand;         /* gd_hand (gd_case.h) of the pinion helix in the left half */

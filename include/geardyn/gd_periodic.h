@@ -5,11 +5,13 @@
  * mesh period, whose Jacobian blocks are the monodromy matrices of the segments
  * (gd_sim_period_map: variational equations with a saltation matrix at every located contact
  * event). Its stability comes from the Floquet multipliers, the eigenvalues of the monodromy
- * matrix of the whole orbit (GSL's nonsymmetric eigensolver). Pseudo-arclength continuation
- * follows an orbit in a numeric parameter p, with an adaptive step, and locates between its points,
- * by GSL's Brent solver in the arclength, the folds (the tangent's parameter component changes
- * sign), period doublings (a real multiplier passes -1), Neimark-Sacker points (a complex pair
- * crosses the unit circle) and changes of the contact sequence (grazing: an extremum of a
+ * matrix of the whole orbit (for several segments, from the block-cyclic matrix of the segments,
+ * GSL's nonsymmetric eigensolver). Pseudo-arclength continuation follows an orbit in a numeric
+ * parameter p, with an adaptive step in a norm that scales the state and the parameter, and
+ * locates between its points, by GSL's Brent solver in the arclength, the folds (the tangent's
+ * parameter component changes sign), branch points (the determinant of the bordered Jacobian
+ * changes sign), period doublings (a real multiplier passes -1), Neimark-Sacker points (a complex
+ * pair crosses the unit circle) and changes of the contact sequence (grazing: an extremum of a
  * clearance coordinate crosses its boundary). */
 #ifndef GD_PERIODIC_H
 #define GD_PERIODIC_H
@@ -25,12 +27,15 @@ extern "C" {
 typedef struct gd_po_opts {
     int nper;                /* period of the orbit in mesh periods, 1 .. GD_PO_MAX_PERIODS */
     int multiple;            /* 1: one shooting segment per mesh period; 0: one segment of nper periods */
-    double tol;              /* converged when the max-norm of the shooting residual is below tol */
+    double tol;              /* converged when the max-norm of the shooting residual (dimensionless state) is below
+                              * tol; 0: what the integration resolves, rtol Y + atol for the orbit's state of
+                              * max-norm Y (at least 1) */
     int max_iter;            /* Newton iterations at most */
-    double dp_rel;           /* relative step of the central difference of the residual in p */
+    double dp_rel;           /* step of the central difference of the residual in p, relative to 1 + |p|; 0: the
+                              * cube root of the integration's rtol */
 } gd_po_opts;
 
-/* nper 1, multiple shooting, tol 1e-9, 12 iterations, dp_rel 1e-6 */
+/* nper 1, multiple shooting, tol 0 (derived), 12 iterations, dp_rel 0 (derived) */
 GD_API void gd_po_opts_default(gd_po_opts *po);
 
 typedef struct gd_po {
@@ -49,6 +54,14 @@ typedef struct gd_po {
 
 /* The eigenvalues of the n x n matrix M (row-major), sorted by decreasing modulus. */
 GD_API gd_status gd_floquet(const double *M, int n, double *mu_re, double *mu_im, gd_error *err);
+
+/* The Floquet multipliers of the product M_{K-1} ... M_1 M_0 of K segment monodromies (n x n each,
+ * row-major, consecutive in Mk; K at most GD_PO_MAX_PERIODS), sorted by decreasing modulus, from the
+ * eigenvalues of the block-cyclic matrix of the segments: accurate to the segments' own rounding,
+ * where the explicit product's eigenvalues carry errors of about eps |mu_max|. M (may be NULL): the
+ * product. */
+GD_API gd_status gd_floquet_segments(const double *Mk, int K, int n, double *M, double *mu_re, double *mu_im,
+                                     gd_error *err);
 
 /* The orbit of po->nper mesh periods of model m near the state y0 at t = 0 (the guesses of the
  * other segments are the images of y0). */
@@ -78,16 +91,26 @@ GD_API gd_status gd_model_at_case_key(double p, gd_model *m, void *ctx, gd_error
 typedef struct gd_cont_opts {
     gd_po_opts po;
     double p_min, p_max;     /* the branch ends when p leaves [p_min, p_max] */
-    double ds, ds_min, ds_max; /* arclength step in (y, p): first, smallest, largest */
-    double dp_max;           /* largest change of p in one step (0: no limit besides ds_max) */
+    /* The arclength is measured in the norm |(y_0, ..., y_{nseg-1}, p)|^2 = sum_k |y_k|^2 / (nseg Y^2) +
+     * p^2 / R^2: the state over its scale Y, averaged over the segments (single and multiple shooting
+     * alike), and the parameter over its range R. */
+    double y_scale;          /* Y; 0: the max-norm of the starting orbit's states (its nper Poincare points), at
+                              * least 1 */
+    double p_scale;          /* R; 0: p_max - p_min when finite, else max(1, |p|) at the start */
+    double ds, ds_min, ds_max; /* arclength step in that norm: first, smallest, largest */
+    double dp_max;           /* largest change of p in one step; 0: a fiftieth of the parameter's scale R (so that
+                              * no step skips more than 2 % of the range where the state hardly moves) */
     int max_points;          /* branch points at most (the start included) */
     int direction;           /* +1: set out towards increasing p; -1 decreasing */
-    double locate_tol;       /* a bifurcation is located when its arclength bracket is below this */
+    double locate_tol;       /* a bifurcation is located when its arclength bracket is below this; 0: ten times
+                              * the shooting tolerance over Y (what a corrected point resolves) */
+    int contact_by_events;   /* 1: contact changes by bisection of the event count only (the fallback of the
+                              * extremum's distance; for comparison and tests) */
     gd_stop_hook stop;       /* asked before each new point: nonzero ends gd_continue with GD_ERR_INTERRUPTED */
 } gd_cont_opts;
 
-/* multiple shooting of 1 period, p in [0, inf), ds 0.02 in [1e-6, 0.1], no dp_max, 400 points, +1,
- * locate_tol 1e-8, never stopped */
+/* multiple shooting of 1 period, p in [0, inf), scales derived, ds 0.02 in [1e-6, 0.2], dp_max R / 50,
+ * 400 points, +1, tolerances derived, never stopped */
 GD_API void gd_cont_opts_default(gd_cont_opts *co);
 
 typedef enum gd_bif_kind {
@@ -95,9 +118,22 @@ typedef enum gd_bif_kind {
     GD_BIF_PERIOD_DOUBLING = 1, /* a real multiplier passes -1 */
     GD_BIF_CONTACT_CHANGE = 2, /* the events of a clearance per orbit change in number: a contact appears or
                                 * disappears (through a grazing, where the orbit touches the boundary) */
-    GD_BIF_NEIMARK_SACKER = 3  /* a complex pair of multipliers crosses the unit circle */
+    GD_BIF_NEIMARK_SACKER = 3, /* a complex pair of multipliers crosses the unit circle */
+    GD_BIF_BRANCH_POINT = 4    /* another branch of the same period crosses: the determinant of the Jacobian
+                                * bordered by the tangent changes sign (a branch of twice the period at the
+                                * period doubling of the orbit of half its period ends there instead) */
 } gd_bif_kind;
 GD_API const char *gd_bif_kind_name(int kind);
+
+/* How a bifurcation's location ended. */
+typedef enum gd_bif_location {
+    GD_LOC_LOCATED = 0,      /* the test function's zero bracketed to locate_tol, the function small there */
+    GD_LOC_BRACKET = 1,      /* a trial point found no orbit: the bracket reached, wider than locate_tol */
+    GD_LOC_JUMP = 2,         /* the test function changes sign by a jump inside the bracket, not through zero */
+    GD_LOC_EVENTS = 3        /* a contact change where no followed extremum crossed a boundary: the event count
+                              * bisected (where the event detection sees the change) */
+} gd_bif_location;
+GD_API const char *gd_bif_location_name(int location);
 
 typedef struct gd_bifurcation {
     int kind;                /* gd_bif_kind */
@@ -111,6 +147,7 @@ typedef struct gd_bifurcation {
     double y[GD_MAX_STATE];  /* Poincare point at that point */
     int after;               /* index of the branch point before which it lies */
     int corrections;         /* corrected points its location took (0 when not located by gd_continue) */
+    int location;            /* gd_bif_location */
 } gd_bifurcation;
 
 typedef enum gd_branch_end {
@@ -119,8 +156,12 @@ typedef enum gd_branch_end {
     GD_END_STEP = 2,         /* no convergence at the smallest step */
     GD_END_CLOSED = 3,       /* back at its first orbit (or that orbit shifted by whole segments): a closed
                               * curve, followed once round */
-    GD_END_HALF = 4          /* its orbit became one of half the period repeated: the branch crossed a period
+    GD_END_HALF = 4,         /* its orbit became one of half the period repeated: the branch crossed a period
                               * doubling of that orbit onto the branch it was born from (multiple shooting) */
+    GD_END_DOUBLING = 5      /* the next step passed the vertex of a period doubling of the orbit of half the
+                              * period (a branch point, beyond which the branch runs back as its own image
+                              * shifted by half the period): the branch ends at its last point before it,
+                              * vertex_p the vertex's parameter */
 } gd_branch_end;
 
 typedef struct gd_cont_point {
@@ -142,10 +183,21 @@ typedef struct gd_branch {
                               * one shifted (0: the first orbit itself) */
     int closed_reversed;     /* GD_END_CLOSED: that shifted orbit passed the other way (the curve is symmetric
                               * under the shift: what follows mirrors the branch's other direction) */
+    int closed_point;        /* GD_END_CLOSED: the point it came back to (0: its first; a later one when the branch
+                              * entered a closed curve, as at a branch point onto another branch) */
     long newton_iterations;  /* over all points, located bifurcations included */
     long corrections;        /* corrector runs (accepted, rejected, and the location's) */
     long chord_iterations;   /* iterations with a kept Jacobian and plain segment maps (no monodromy) that
                               * came before the Newton iterations */
+#define GD_BRANCH_NOTES 8
+    int nnotes;              /* what a location found and did not keep (a modulus passing 1 with no complex
+                              * multiplier on the unit circle at the located point) */
+    char notes[GD_BRANCH_NOTES][256];
+    int notes_dropped;       /* notes beyond GD_BRANCH_NOTES */
+    double vertex_p;         /* GD_END_DOUBLING: the vertex's parameter, from a parabola through the last points */
+    double vertex_y[GD_MAX_STATE]; /* and the state there, about: the last point's mean of y_0 and y_{nper/2} */
+    double y_scale, p_scale; /* the scales of the arclength (gd_cont_opts), as used */
+    double tol, locate_tol;  /* the shooting and location tolerances, as used */
 } gd_branch;
 
 /* Follow the orbit start (solved by gd_po_solve or a branch point; start->p its parameter) in p,
@@ -155,10 +207,14 @@ GD_API gd_status gd_continue(gd_model_at_fn model_at, void *ctx, const gd_solver
 GD_API void gd_branch_free(gd_branch *br);
 
 /* Branch switching at the period doubling b of a branch of orbits of po->nper mesh periods: the
- * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp) from the
- * bifurcation's orbit moved by +-eps along the eigenvector of its multiplier -1. An orbit that
- * converges back to the period-nper one is refused; GD_ERR_SOLVER when no trial finds a doubled
- * orbit. out->p is its parameter. */
+ * orbit of 2 po->nper periods born there, by shooting at b->p + dp (then b->p - dp, then both at dp/8)
+ * from the bifurcation's orbit moved by +-eps Y along the eigenvector of its multiplier -1 (Y the
+ * orbit's state scale, its max-norm but at least 1; sqrt(1/8) of that at dp/8). An orbit is accepted
+ * only when it is the one born at the doubling: not the period-nper orbit again, its two halves
+ * (its states at phase 0 and nper periods later) about the period-nper orbit at that parameter (their
+ * mean within their distance of it), and its amplitude growing as the square root of the
+ * distance to the doubling (the orbit shot again at a quarter of the distance has 0.35 to 0.7 of
+ * the amplitude). GD_ERR_SOLVER when no trial finds it. out->p is its parameter. */
 GD_API gd_status gd_po_period_doubled(gd_model_at_fn model_at, void *ctx, const gd_solver_opts *o,
                                       const gd_po_opts *po, const gd_bifurcation *b, double dp, double eps,
                                       gd_po *out, gd_error *err);

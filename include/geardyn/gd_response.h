@@ -37,6 +37,10 @@ typedef struct gd_response_result {
     double rms_accel_mps2[3];    /* left, right, combined ((a_L + a_R)/2) */
     double dte_mean_um[2], dte_rms_um[2], dte_pp_um[2]; /* RMS about the mean */
     double lambda_min_um[2], lambda_max_um[2];
+    /* the largest normal mesh force of the window's samples (as force_n of a sample), and the dynamic
+     * load factor: that force over the static mesh force of the mesh (gd_model.static_load_n; ISO
+     * 6336-1's K_v is its design value), NaN at zero load */
+    double force_max_n[2], dynamic_load_factor[2];
     int period_n;                /* n for period-n, 0 when not periodic */
     char motion[32];             /* "period-n", "quasi-periodic", "chaotic" or "not-periodic" (gd_motion_classify) */
     int poincare_distinct;

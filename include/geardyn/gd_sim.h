@@ -137,7 +137,8 @@ GD_API void gd_sim_get_tangent(const gd_sim *s, double *V);
  * y0): y1 = phi(nper T, 0, y0), and when M is not NULL its Jacobian, the monodromy matrix
  * (n x n, row-major), from the variational equations with a saltation matrix at every located
  * event (o->n_tangent is replaced by n, or 0 when M is NULL). st (may be NULL): the statistics
- * of the run, its events by clearance among them. */
+ * of the run, its events by clearance among them. M needs o->root_finding on a model with clearances
+ * (GD_ERR_INPUT otherwise: a mode switched from the state has no saltation matrix). */
 GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, const double *y0, int nper,
                                    double *y1, double *M, gd_sim_stats *st, gd_error *err);
 GD_API const gd_model *gd_sim_model(const gd_sim *s);

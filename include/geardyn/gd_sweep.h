@@ -84,6 +84,7 @@ typedef struct gd_sweep_point {
     int error_code;          /* gd_status of a failed point */
     char error[256];
     double rms_accel_mps2[3];    /* left, right, combined */
+    double dynamic_load_factor[2]; /* left, right: gd_response_result.dynamic_load_factor */
     double mle_per_period, mle_per_s; /* NaN when not computed */
     char motion[32];             /* gd_response_result.motion, or "failed" */
     int period_n, poincare_distinct;

@@ -21,6 +21,7 @@
 #include "geardyn/gd_sweep.h"
 #include "geardyn/gd_periodic.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_basins.h"
 #include "geardyn/gd_flank.h"
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"

@@ -33,6 +33,8 @@ gd_status gd_sweep_check_case(const gd_case *c, gd_error *err);
 double gd_sweep_axis_value(const gd_case *c, int axis, int i);
 /* Forget the result of a point (back to pending). */
 void gd_sweep_point_clear(gd_sweep_point *pt);
+/* The dynamic load factor of a point: the larger of its meshes' (NaN when neither has one). */
+double gd_sweep_point_dlf(const gd_sweep_point *pt);
 /* The initial state of a point: the case's initial condition when prev is NULL or failed,
  * else prev's final state with its contact modes made consistent with this point's model
  * (the clearances may have changed). Continuation point k starts from exactly this. */

@@ -86,10 +86,18 @@ static gd_status check_settings(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.ds: %g is outside [ds_min, ds_max] = [%g, %g] "
                             "(valid: ds_min <= ds <= ds_max)", WHERE("ds"), c->cont_ds, c->cont_ds_min,
                             c->cont_ds_max);
-    if (c->cont_newton_tol < c->rtol)
-        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is below solver.rtol = %g (valid: "
-                            "newton_tol >= %g, or a tighter solver.rtol)", WHERE("newton_tol"), c->cont_newton_tol,
-                            c->rtol, c->rtol);
+    if (!c->root_finding) {
+        gd_case_key_where(c, "solver", "root_finding", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: solver.root_finding: off with analysis = continuation: the "
+                            "monodromy matrices need the saltation matrix at every located contact event (valid: "
+                            "root_finding = on)", w);
+    }
+    /* the residual is an absolute error of the dimensionless state, as solver.atol is */
+    if (c->cont_newton_tol > 0 && c->cont_newton_tol < c->atol)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.newton_tol: %g is below solver.atol = %g, the absolute "
+                            "error the integration allows in the same dimensionless state (valid: newton_tol >= %g, 0 "
+                            "to derive it from the solver's tolerances, or a smaller solver.atol)", WHERE("newton_tol"),
+                            c->cont_newton_tol, c->atol, c->atol);
     static const char *start_name[] = {"attractor", "state", "sweep"};
     if (c->cont_start == GD_CONT_START_SWEEP && !c->cont_start_sweep[0])
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.start_sweep: missing (valid: with start = sweep, "
@@ -119,7 +127,7 @@ static gd_status check_settings(gd_case *c, gd_error *err)
     if (c->cont_overlay_sweep[0]) {
         if (c->cont_response == GD_CONT_RESP_MAX_DEFLECTION || c->cont_response == GD_CONT_RESP_MIN_DEFLECTION)
             return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.overlay_sweep: a sweep has no deflection "
-                                "extremes to draw (valid: response = rms_accel or poincare with an overlay)",
+                                "extremes to draw (valid: response = rms_accel, poincare or dynamic_load_factor with an overlay)",
                                 WHERE("overlay_sweep"));
         char f[GD_PATH_MAX + 32];
         struct stat sb;
@@ -195,6 +203,7 @@ static gd_status measure(crun *r, double p, const double *y, int nper, gd_contin
     memcpy(out->rms_accel_mps2, rr.rms_accel_mps2, sizeof out->rms_accel_mps2);
     memcpy(out->lambda_min_um, rr.lambda_min_um, sizeof out->lambda_min_um);
     memcpy(out->lambda_max_um, rr.lambda_max_um, sizeof out->lambda_max_um);
+    memcpy(out->dynamic_load_factor, rr.dynamic_load_factor, sizeof out->dynamic_load_factor);
     double x, xd;
     gd_model_clearance(&m, m.mesh_clear[0], 0.0, y, &md, &x, &xd);
     out->lambda_poincare = x;
@@ -281,6 +290,7 @@ static gd_status setup(crun *r, const gd_case *c, const gd_contin_start *start, 
     r->co.po.max_iter = c->cont_newton_max_iterations;
     r->co.p_min = c->cont_from / res->scale;
     r->co.p_max = c->cont_to / res->scale;
+    r->co.p_scale = r->co.p_max - r->co.p_min; /* every branch, those switched to included: the whole range */
     r->co.ds = c->cont_ds;
     r->co.ds_min = c->cont_ds_min;
     r->co.ds_max = c->cont_ds_max;
@@ -305,31 +315,47 @@ static gd_status grow(gd_contin_result *res, gd_error *err)
     return GD_OK;
 }
 
-/* A note of summary.json (at most 8): fmt holds one %.10g (value) and one %s (why). */
+/* A note of summary.json (at most GD_CONTIN_NOTES): fmt holds one %.10g (value) and one %s (why). */
 static void note(gd_contin_result *res, const char *fmt, double value, const char *why)
 {
-    if (res->nnotes < (int)(sizeof res->notes / sizeof res->notes[0]))
+    if (res->nnotes < GD_CONTIN_NOTES)
         snprintf(res->notes[res->nnotes++], GD_ERROR_MSG_MAX, fmt, value, why);
+    else
+        res->notes_dropped++;
 }
 
-/* How branch b ended, with the parameter in the key's unit (and p); co: its options (bounds in p);
- * vertex: the period doubling it ran back to. */
-static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_contin_branch *b, double vertex)
+/* How branch b ended, with the parameter in the key's unit (and p); co: its options (bounds in p). */
+static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_contin_branch *b)
 {
     const gd_branch *br = &b->br;
     double p = br->pt[br->npoints - 1].orbit.p, bound = b->direction > 0 ? co->p_max : co->p_min;
     const char *k = res->parameter, *sp = res->unit[0] ? " " : "";
     char *o = b->end_reason;
     size_t n = sizeof b->end_reason;
-    if (b->at_doubling)
-        snprintf(o, n, "back at the period doubling it was born at, %s = %.10g%s%s (p = %.9g), from %.10g%s%s", k,
-                 gd_contin_value(res, vertex), sp, res->unit, vertex, gd_contin_value(res, p), sp, res->unit);
+    if (br->end == GD_END_DOUBLING && b->joins >= 0 && b->joins == b->parent && b->joins_p == b->born_p)
+        snprintf(o, n, "back at the period doubling of branch %d it was born at, %s = %.10g%s%s (p = %.9g), from "
+                 "%.10g%s%s", b->joins, k, gd_contin_value(res, b->joins_p), sp, res->unit, b->joins_p,
+                 gd_contin_value(res, p), sp, res->unit);
+    else if (br->end == GD_END_DOUBLING && b->joins >= 0)
+        snprintf(o, n, "at the period doubling of branch %d at %s = %.10g%s%s (p = %.9g), which it joins, from "
+                 "%.10g%s%s", b->joins, k, gd_contin_value(res, b->joins_p), sp, res->unit, b->joins_p,
+                 gd_contin_value(res, p), sp, res->unit);
+    else if (br->end == GD_END_DOUBLING)
+        snprintf(o, n, "at a period doubling of the orbit of half its period near %s = %.10g%s%s (p = %.9g), on no "
+                 "branch followed, from %.10g%s%s", k, gd_contin_value(res, br->vertex_p), sp, res->unit, br->vertex_p,
+                 gd_contin_value(res, p), sp, res->unit);
     else if (br->end == GD_END_BOUND && !br->end_detail[0])
         snprintf(o, n, "the bound %s = %.10g%s%s reached (p = %.9g)", k, gd_contin_value(res, p), sp, res->unit, p);
     else if (br->end == GD_END_BOUND)
         snprintf(o, n, "no orbit at the bound %s = %.10g%s%s (p = %.9g): the branch ends at %.10g%s%s (p = %.9g): "
                  "%s", k, gd_contin_value(res, bound), sp, res->unit, bound, gd_contin_value(res, p), sp, res->unit,
                  p, br->end_detail);
+    else if (br->end == GD_END_CLOSED && br->closed_point > 0)
+        snprintf(o, n, "closed: back at the orbit of its point %d (%s = %.10g%s%s)%s%s at %s = %.10g%s%s (p = %.9g): "
+                 "a closed curve from there on, followed once round", br->closed_point, k,
+                 gd_contin_value(res, br->pt[br->closed_point].orbit.p), sp, res->unit,
+                 br->closed_shift ? ", shifted by whole mesh periods" : "", br->closed_reversed ? ", passed the other "
+                 "way" : "", k, gd_contin_value(res, p), sp, res->unit, p);
     else if (br->end == GD_END_CLOSED && br->closed_shift)
         snprintf(o, n, "closed: back at its first orbit shifted by %d mesh period%s (the same orbit)%s at %s = "
                  "%.10g%s%s (p = %.9g)", br->closed_shift, br->closed_shift > 1 ? "s" : "", br->closed_reversed ?
@@ -350,26 +376,47 @@ static void end_reason(const gd_contin_result *res, const gd_cont_opts *co, gd_c
                  k, gd_contin_value(res, p), sp, res->unit, p, br->end_detail);
 }
 
-/* The way back to a period doubling at p = vertex (section 7 of docs/continuation.md): the doubled
- * orbit turns there, at a fold of the branch within tol of the doubling, onto its mirror image.
- * The branch ends at the point before that fold (the fold itself is the doubling, not listed). */
-static void end_at_vertex(gd_contin_branch *b, double vertex, double tol)
+/* The tolerance in p within which two period doublings (or a doubling and the vertex of a branch of
+ * twice the period) are the same: a hundred times its bracket, at least 1e-6 of the range. */
+static double same_doubling_tol(const crun *r, const gd_bifurcation *bf)
 {
-    gd_branch *br = &b->br;
-    for (int i = 0; i < br->nbif; i++) {
-        if (br->bif[i].kind != GD_BIF_FOLD || !(fabs(br->bif[i].p - vertex) <= tol))
+    return fmax(100.0 * fabs(bf->p_hi - bf->p_lo), 1e-6 * (r->co.p_max - r->co.p_min));
+}
+
+/* Branch b ended at the vertex of a period doubling of the orbit of half its period: which branch's
+ * doubling. Of the period doublings of the branches of half the period within 1 % of the range of the
+ * vertex's estimate and whose orbit lies within a tenth of the state's scale of the vertex's, the
+ * nearest in the parameter (the estimate from the last points is good to a fraction of their
+ * distance from the vertex, unless the branch folds near it). */
+static void find_joined(const crun *r, gd_contin_branch *b)
+{
+    const gd_contin_result *res = r->res;
+    double pv = b->br.vertex_p, best = INFINITY;
+    b->joins = -1;
+    b->joins_p = NAN;
+    for (int j = 0; j < res->nbranches; j++) {
+        if (2 * res->branch[j].nper != b->nper)
             continue;
-        br->npoints = br->bif[i].after > 0 ? br->bif[i].after : 1;
-        br->nbif = i;
-        b->at_doubling = 1;
-        return;
+        for (int i = 0; i < res->branch[j].br.nbif; i++) {
+            const gd_bifurcation *bf = &res->branch[j].br.bif[i];
+            double dy = 0;
+            for (int k = 0; k < res->n; k++)
+                dy = fmax(dy, fabs(bf->y[k] - b->br.vertex_y[k]));
+            if (bf->kind == GD_BIF_PERIOD_DOUBLING && fabs(bf->p - pv) <= 0.01 * (r->co.p_max - r->co.p_min) &&
+                dy <= 0.1 * b->br.y_scale && fabs(bf->p - pv) < best) {
+                best = fabs(bf->p - pv);
+                b->joins = j;
+                b->joins_p = bf->p;
+            }
+        }
     }
 }
 
 /* A branch from the orbit start, of start->nper periods, in direction dir, p kept in [lo, hi];
- * vertex: the parameter of the period doubling it runs back to (NAN for none), tol its margin. */
-static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double lo, double hi, double vertex,
-                        double tol, gd_error *err)
+ * parent, born_p: the branch and the period doubling it was switched at (-1, NAN for a start
+ * branch). */
+static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double born_p, double lo, double hi,
+                        gd_error *err)
 {
     gd_contin_result *res = r->res;
     gd_status st = grow(res, err);
@@ -380,6 +427,9 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double
     b->nper = start->nper;
     b->direction = dir;
     b->parent = parent;
+    b->born_p = born_p;
+    b->joins = -1;
+    b->joins_p = NAN;
     gd_cont_opts co = r->co;
     co.po.nper = start->nper;
     co.direction = dir;
@@ -389,9 +439,9 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double
     res->corrections += b->br.corrections;
     res->newton_iterations += b->br.newton_iterations;
     if (st == GD_OK) {
-        if (isfinite(vertex))
-            end_at_vertex(b, vertex, tol);
-        end_reason(res, &co, b, vertex);
+        if (b->br.end == GD_END_DOUBLING)
+            find_joined(r, b);
+        end_reason(res, &co, b);
         st = measure_branch(r, b, err);
     }
     if (st != GD_OK) { /* no branch: its memory goes (a switched one's failure is a note) */
@@ -400,16 +450,21 @@ static gd_status follow(crun *r, const gd_po *start, int dir, int parent, double
         free(b->bif_meas);
         return st;
     }
+    for (int i = 0; i < b->br.nnotes; i++) { /* what the locations noted */
+        char why[GD_ERROR_MSG_MAX];
+        snprintf(why, sizeof why, "%s", b->br.notes[i]);
+        note(res, "branch %.0f: %s", res->nbranches, why);
+    }
+    res->notes_dropped += b->br.notes_dropped;
     res->nbranches++;
     return GD_OK;
 }
 
 /* The orbit of twice the period at the period doubling bf of branch ib, followed both ways: away
- * from the doubling to the bounds, and back towards it. There the doubled orbit meets the branch
- * it was born from at the vertex of a pitchfork (in the map of 2n periods), beyond which it
- * would only run back along its own mirror image (the same orbit shifted by n periods): so the
- * way back is kept within dp beyond its start and ends at the fold within tol of the doubling
- * (tol a hundred times the bracket that located it, at least 1e-6 of the range). */
+ * from the doubling, and back towards it, where it ends at the doubling's vertex (the branch point
+ * at which it meets the orbit it was born from, gd_continue's end period-doubling). The way back
+ * is kept within dp beyond its start (in case the vertex is passed unnoticed and the branch runs
+ * back as its own image) and dp beyond the doubling. */
 static gd_status switch_at(crun *r, int ib, const gd_bifurcation *bf, gd_error *err)
 {
     gd_contin_result *res = r->res;
@@ -430,11 +485,10 @@ static gd_status switch_at(crun *r, int ib, const gd_bifurcation *bf, gd_error *
         return GD_OK;
     }
     int away = p2.p > bf->p ? +1 : -1;
-    double tol = fmax(100.0 * fabs(bf->p_hi - bf->p_lo), 1e-6 * (r->co.p_max - r->co.p_min));
-    double lo = away > 0 ? bf->p : p2.p - dp, hi = away > 0 ? p2.p + dp : bf->p;
-    gd_status st = follow(r, &p2, away, ib, r->co.p_min, r->co.p_max, NAN, 0.0, &e2);
+    double lo = away > 0 ? bf->p - dp : p2.p - dp, hi = away > 0 ? p2.p + dp : bf->p + dp;
+    gd_status st = follow(r, &p2, away, ib, bf->p, r->co.p_min, r->co.p_max, &e2);
     if (st == GD_OK)
-        st = follow(r, &p2, -away, ib, fmax(lo, r->co.p_min), fmin(hi, r->co.p_max), bf->p, tol, &e2);
+        st = follow(r, &p2, -away, ib, bf->p, fmax(lo, r->co.p_min), fmin(hi, r->co.p_max), &e2);
     if (st == GD_ERR_NOMEM || st == GD_ERR_INTERRUPTED)
         return gd_error_set(err, st, "%s", e2.msg);
     if (st != GD_OK) /* the doubled orbit found, but no branch from it: the others go on */
@@ -443,17 +497,26 @@ static gd_status switch_at(crun *r, int ib, const gd_bifurcation *bf, gd_error *
     return GD_OK;
 }
 
-/* Whether a period doubling of an orbit of nper periods at p was switched at before (on an earlier
- * branch, or earlier on this one: a branch that closes on itself meets its doublings again). */
-static int switched_before(const gd_contin_result *res, int ib, int i, double tol)
+/* Whether the orbit of twice the period at the period doubling i of branch ib is followed already:
+ * a doubling at the same parameter was switched at before (on an earlier branch, or earlier on this
+ * one: a branch that closes on itself meets its doublings again), or a branch of twice the period
+ * ends at it (a closed curve of doubled orbits joining two doublings is followed once). */
+static int doubled_before(const crun *r, int ib, int i)
 {
+    const gd_contin_result *res = r->res;
+    const gd_bifurcation *bf = &res->branch[ib].br.bif[i];
+    double tol = same_doubling_tol(r, bf);
     for (int b = 0; b <= ib; b++)
         for (int j = 0; j < (b < ib ? res->branch[b].br.nbif : i); j++) {
             const gd_bifurcation *o = &res->branch[b].br.bif[j];
             if (res->branch[b].nper == res->branch[ib].nper && o->kind == GD_BIF_PERIOD_DOUBLING &&
-                fabs(o->p - res->branch[ib].br.bif[i].p) <= tol)
+                fabs(o->p - bf->p) <= tol)
                 return 1;
         }
+    for (int b = 0; b < res->nbranches; b++)
+        if (res->branch[b].nper == 2 * res->branch[ib].nper && res->branch[b].joins == ib &&
+            fabs(res->branch[b].joins_p - bf->p) <= tol)
+            return 1;
     return 0;
 }
 
@@ -463,10 +526,9 @@ static gd_status switch_branches(crun *r, int ib, gd_error *err)
     if (2 * r->res->branch[ib].nper > GD_PO_MAX_PERIODS)
         return GD_OK;
     gd_status st = GD_OK;
-    double tol = 1e-6 * (r->co.p_max - r->co.p_min);
     for (int i = 0; i < r->res->branch[ib].br.nbif && st == GD_OK; i++) {
         gd_bifurcation bf = r->res->branch[ib].br.bif[i]; /* a copy: res->branch moves as it grows */
-        if (bf.kind == GD_BIF_PERIOD_DOUBLING && !switched_before(r->res, ib, i, tol))
+        if (bf.kind == GD_BIF_PERIOD_DOUBLING && !doubled_before(r, ib, i))
             st = switch_at(r, ib, &bf, err);
     }
     return st;
@@ -483,14 +545,16 @@ static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_
         dirs[nd++] = +1;
     gd_status st = GD_OK;
     for (int i = 0; i < nd && i < r->max_branches && st == GD_OK; i++) {
-        st = follow(r, start, dirs[i], -1, r->co.p_min, r->co.p_max, NAN, 0.0, err);
+        st = follow(r, start, dirs[i], -1, NAN, r->co.p_min, r->co.p_max, err);
         if (st == GD_OK && progress && progress(user, res->nbranches, nd))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
-    /* every branch, those switched to included (res->nbranches grows): the period-doubling cascade */
+    /* every branch, those switched to included (res->nbranches grows): the period-doubling cascade;
+     * the progress counts the branches followed, so it is told when a switching adds some */
     for (int ib = 0; ib < res->nbranches && st == GD_OK && c->cont_branch_switching; ib++) {
+        int before = res->nbranches;
         st = switch_branches(r, ib, err);
-        if (st == GD_OK && progress && progress(user, ib + 1, res->nbranches))
+        if (st == GD_OK && res->nbranches > before && progress && progress(user, res->nbranches, res->nbranches))
             st = gd_error_set(err, GD_ERR_INTERRUPTED, "the continuation was stopped");
     }
     return st;

@@ -1,12 +1,9 @@
-/* A periodic orbit at a fixed parameter: Newton shooting from a guess (shooting.c), the Floquet
- * multipliers by GSL's nonsymmetric eigensolver, and the model at a parameter value (a mesh
- * frequency, or a case key with the model built again). */
+/* A periodic orbit at a fixed parameter: Newton shooting from a guess (shooting.c), its Floquet
+ * multipliers (floquet.c), and the model at a parameter value (a mesh frequency, or a case key
+ * with the model built again). */
 #include "shooting.h"
 #include "geardyn/gd_scene.h"
 
-#include <gsl/gsl_eigen.h>
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_matrix.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,60 +13,9 @@ GD_API void gd_po_opts_default(gd_po_opts *po)
     memset(po, 0, sizeof *po);
     po->nper = 1;
     po->multiple = 1;
-    po->tol = 1e-9;
+    po->tol = 0.0;
     po->max_iter = 12;
-    po->dp_rel = 1e-6;
-}
-
-typedef struct mu_pair { double re, im; } mu_pair;
-
-/* decreasing modulus; a conjugate pair with the positive imaginary part first */
-static int by_modulus(const void *a, const void *b)
-{
-    const mu_pair *x = a, *y = b;
-    double ax = hypot(x->re, x->im), ay = hypot(y->re, y->im);
-    if (ax != ay)
-        return ax < ay ? 1 : -1;
-    return x->im < y->im ? 1 : x->im > y->im ? -1 : 0;
-}
-
-GD_API gd_status gd_floquet(const double *M, int n, double *mu_re, double *mu_im, gd_error *err)
-{
-    if (n < 1 || n > GD_MAX_STATE)
-        return gd_error_set(err, GD_ERR_INPUT, "a %d x %d monodromy matrix (valid: 1 to %d)", n, n, GD_MAX_STATE);
-    gsl_matrix *A = gsl_matrix_alloc((size_t)n, (size_t)n);
-    gsl_vector_complex *ev = gsl_vector_complex_alloc((size_t)n);
-    gsl_eigen_nonsymm_workspace *w = gsl_eigen_nonsymm_alloc((size_t)n);
-    gd_status st = GD_OK;
-    if (!A || !ev || !w) {
-        st = gd_error_set(err, GD_ERR_NOMEM, "out of memory for the Floquet multipliers");
-        goto done;
-    }
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++)
-            gsl_matrix_set(A, (size_t)i, (size_t)j, M[i * n + j]);
-    gsl_eigen_nonsymm_params(0, 1, w); /* balance: the monodromy mixes positions and velocities */
-    int rc = gsl_eigen_nonsymm(A, ev, w);
-    if (rc != GSL_SUCCESS) {
-        st = gd_error_set(err, GD_ERR_GSL, "the Floquet multipliers: gsl_eigen_nonsymm: %s", gsl_strerror(rc));
-        goto done;
-    }
-    mu_pair mu[GD_MAX_STATE];
-    for (int i = 0; i < n; i++) {
-        gsl_complex z = gsl_vector_complex_get(ev, (size_t)i);
-        mu[i].re = GSL_REAL(z);
-        mu[i].im = GSL_IMAG(z);
-    }
-    qsort(mu, (size_t)n, sizeof mu[0], by_modulus);
-    for (int i = 0; i < n; i++) {
-        mu_re[i] = mu[i].re;
-        mu_im[i] = mu[i].im;
-    }
-done:
-    gsl_eigen_nonsymm_free(w);
-    gsl_vector_complex_free(ev);
-    gsl_matrix_free(A);
-    return st;
+    po->dp_rel = 0.0;
 }
 
 /* the model of gd_po_solve: the one given, whatever p */
@@ -94,8 +40,9 @@ GD_API gd_status gd_po_solve(const gd_model *m, const gd_solver_opts *o, const g
         st = gd_sim_period_map(m, o, u + (k - 1) * m->n, sh.per_seg, u + k * m->n, NULL, NULL, err);
     u[sh.N] = m->Omega;
     int iters = 0;
+    double tol = po->tol > 0 ? po->tol : gd_po_tol_derived(o, gd_po_state_scale(u, sh.N));
     if (st == GD_OK)
-        st = gd_shoot_correct(&sh, u, NULL, NULL, po->tol, po->max_iter, &iters, err);
+        st = gd_shoot_correct(&sh, u, NULL, NULL, tol, po->max_iter, &iters, err);
     if (st == GD_OK)
         st = gd_shoot_orbit(&sh, u, orbit, err);
     if (st == GD_OK)

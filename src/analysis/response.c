@@ -42,7 +42,7 @@ typedef struct run_ctx {
     /* accumulators */
     double sum_a2[3];
     double sum_dte[2], sum_dte2[2], dte_min[2], dte_max[2];
-    double lam_min[2], lam_max[2];
+    double lam_min[2], lam_max[2], force_max[2];
     long count;
     int visited[GD_MAX_MESH][3];
     long rec_events, rec_by_kind[GD_EV_NKINDS];
@@ -68,8 +68,6 @@ static void mesh_quantities(const gd_model *m, double t, double s0, double c0, c
     *lam = x - e;
     *lamd = v - ed;
     *acc = a - edd;
-    if (!force) /* the tooth force only for the sample hook (a sweep does not ask for it) */
-        return;
     int mode = md->from_state ? gd_model_mode_of(m, c, *lam) : md->mode[c];
     double kf = gd_model_stiffness(m, j, t, md);
     double f = mode > 0 ? cl->k * kf * (*lam - cl->h) : mode < 0 ? cl->k * kf * (*lam + cl->h) : 0.0;
@@ -82,7 +80,6 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
 {
     run_ctx *r = user;
     const gd_model *m = r->m;
-    const int want_force = r->hooks && r->hooks->sample;
     while (r->next_sample < r->nsamples) {
         double ts = r->t_record + (double)r->next_sample * r->dt_sample;
         if (ts > t1)
@@ -110,7 +107,7 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
         for (int j = 0; j < 2; j++) {
             int jj = j < m->nmesh ? j : 0;
             if (j == 0 || jj != 0) /* one mesh (torsional): its quantities serve both columns */
-                mesh_quantities(m, ts, s0, c0, y, yd, md, jj, &lam, &lamd, &acc, want_force ? &force : NULL);
+                mesh_quantities(m, ts, s0, c0, y, yd, md, jj, &lam, &lamd, &acc, &force);
             int qidx = m->q_dof[jj];
             smp.lambda_um[j] = lam * r->len_um;
             smp.lambda_dot_mps[j] = lamd * r->len_um * 1e-6 / r->sec;
@@ -125,6 +122,7 @@ static int on_step(gd_sim *s, double t0, double t1, void *user)
             if (r->count == 0 || smp.dte_um[j] > r->dte_max[j]) r->dte_max[j] = smp.dte_um[j];
             if (r->count == 0 || smp.lambda_um[j] < r->lam_min[j]) r->lam_min[j] = smp.lambda_um[j];
             if (r->count == 0 || smp.lambda_um[j] > r->lam_max[j]) r->lam_max[j] = smp.lambda_um[j];
+            if (r->count == 0 || smp.force_n[j] > r->force_max[j]) r->force_max[j] = smp.force_n[j];
         }
         r->sum_a2[2] += acc_mean * acc_mean;
         r->count++;
@@ -418,6 +416,8 @@ static void response_results(const resp_run *x, const gd_response_opts *opts, gd
         res->dte_pp_um[j] = r->dte_max[j] - r->dte_min[j];
         res->lambda_min_um[j] = r->lam_min[j];
         res->lambda_max_um[j] = r->lam_max[j];
+        res->force_max_n[j] = r->count > 0 ? r->force_max[j] : NAN;
+        res->dynamic_load_factor[j] = m->static_load_n > 0 ? res->force_max_n[j] / m->static_load_n : NAN;
     }
     /* the last point closes the window; periodicity is judged over all of them */
     res->poincare_count = x->npts;

@@ -4,7 +4,6 @@
  * docs/continuation.md section 2 derives the system. */
 #include "shooting.h"
 
-#include <gsl/gsl_blas.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_linalg.h>
 #include <math.h>
@@ -25,7 +24,11 @@ gd_status gd_shoot_init(gd_shoot *sh, gd_model_at_fn model_at, void *ctx, const 
     sh->nseg = po->multiple ? po->nper : 1;
     sh->per_seg = po->nper / sh->nseg;
     sh->N = sh->nseg * n;
-    sh->dp_rel = po->dp_rel;
+    /* the central difference's step: about the cube root of the integration's relative error, which
+     * balances the truncation error h^2 against the noise of the maps over h */
+    sh->dp_rel = po->dp_rel > 0 ? po->dp_rel : cbrt(o->rtol);
+    for (int i = 0; i <= sh->N; i++)
+        sh->w[i] = 1.0;
     sh->Mk = calloc((size_t)sh->nseg * (size_t)(n * n), sizeof(double));
     if (!sh->Mk)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the shooting system");
@@ -109,8 +112,10 @@ static void assemble(const gd_shoot *sh, const double *v, gsl_matrix *J)
         gsl_matrix_set(J, (size_t)N, (size_t)j, v[j]);
 }
 
-/* x = J^-1 b for the Jacobian of the last evaluation (bordered by v when given), by GSL's LU */
-static gd_status solve(const gd_shoot *sh, const double *v, const double *b, double *x, gd_error *err)
+/* x = J^-1 b for the Jacobian of the last evaluation (bordered by v when given), by GSL's LU;
+ * *dsign, *dlog (may be NULL): the sign and log-modulus of det J */
+static gd_status solve(const gd_shoot *sh, const double *v, const double *b, double *x, int *dsign, double *dlog,
+                       gd_error *err)
 {
     size_t dim = (size_t)sh->N + (v ? 1 : 0);
     gsl_matrix *J = gsl_matrix_alloc(dim, dim);
@@ -134,6 +139,10 @@ static gd_status solve(const gd_shoot *sh, const double *v, const double *b, dou
     }
     for (size_t i = 0; i < dim; i++)
         x[i] = gsl_vector_get(xv, i);
+    if (dsign)
+        *dsign = gsl_linalg_LU_sgndet(J, signum);
+    if (dlog)
+        *dlog = gsl_linalg_LU_lndet(J);
 done:
     gsl_matrix_free(J);
     gsl_permutation_free(perm);
@@ -144,16 +153,17 @@ done:
 
 /* The chord iteration (gd_shoot_correct): the Jacobian of the last evaluation, the residual of
  * plain maps, at most CHORD_MAX iterations, each to reduce the residual's max-norm by CHORD_RATE at
- * least. GD_OK when the residual fell below tol; anything else leaves u as it came in. */
+ * least. GD_OK when the residual fell below tol; otherwise u is the iterate of smallest residual
+ * when that is below the residual at the start (what the chord gained, kept for Newton), else u as
+ * it came in. */
 #define CHORD_MAX 8
 #define CHORD_RATE 0.5
 static gd_status chord(gd_shoot *sh, double *u, const double *v, const double *u_pred, double tol, gd_error *err)
 {
     const int N = sh->N, n = sh->n;
-    double u_in[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], b[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1];
-    double dx[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], y1[GD_PO_MAX_PERIODS * GD_MAX_STATE];
-    memcpy(u_in, u, sizeof(double) * (size_t)(N + 1));
-    double last = INFINITY;
+    double best[GD_SHOOT_UMAX], b[GD_SHOOT_UMAX], dx[GD_SHOOT_UMAX], y1[GD_PO_MAX_PERIODS * GD_MAX_STATE];
+    memcpy(best, u, sizeof(double) * (size_t)(N + 1));
+    double last = INFINITY, gtol = tol * sqrt(sh->w[0]);
     gd_error e1 = {0};
     for (int it = 0; it <= CHORD_MAX; it++) {
         gd_status st = maps_plain(sh, u, u[N], y1, &e1);
@@ -167,19 +177,24 @@ static gd_status chord(gd_shoot *sh, double *u, const double *v, const double *u
             }
         for (int i = 0; i <= N; i++)
             g += v[i] * (u[i] - u_pred[i]);
-        if (st == GD_OK && rnorm < tol && fabs(g) < tol)
+        if (st == GD_OK && rnorm < tol && fabs(g) < gtol)
             return GD_OK;
-        if (st != GD_OK || !(rnorm < CHORD_RATE * last) || it == CHORD_MAX)
+        if (st != GD_OK || !(rnorm < CHORD_RATE * last) || it == CHORD_MAX) {
+            if (st == GD_OK && rnorm < last) /* the last iterate still reduced the residual */
+                memcpy(best, u, sizeof(double) * (size_t)(N + 1));
             break;
+        }
+        if (it > 0)
+            memcpy(best, u, sizeof(double) * (size_t)(N + 1));
         last = rnorm;
         b[N] = -g;
-        if (solve(sh, v, b, dx, &e1) != GD_OK)
+        if (solve(sh, v, b, dx, NULL, NULL, &e1) != GD_OK)
             break;
         for (int i = 0; i <= N; i++)
             u[i] += dx[i];
         sh->chord_iterations++;
     }
-    memcpy(u, u_in, sizeof(double) * (size_t)(N + 1));
+    memcpy(u, best, sizeof(double) * (size_t)(N + 1));
     return GD_ERR_SOLVER;
 }
 
@@ -192,7 +207,7 @@ gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const doubl
             return st;
     }
     const int N = sh->N;
-    double b[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1], dx[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1];
+    double b[GD_SHOOT_UMAX], dx[GD_SHOOT_UMAX];
     double rnorm = INFINITY;
     for (int it = 0;; it++) {
         *iters = it;
@@ -208,14 +223,14 @@ gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const doubl
                 g += v[i] * (u[i] - u_pred[i]);
         if (!isfinite(rnorm) || !isfinite(g))
             return gd_error_set(err, GD_ERR_SOLVER, "Newton shooting: the residual is not finite");
-        if (rnorm < tol && fabs(g) < tol)
+        if (rnorm < tol && fabs(g) < tol * sqrt(sh->w[0]))
             return GD_OK;
         if (it == max_iter)
             break;
         for (int i = 0; i < N; i++)
             b[i] = -sh->r[i];
         b[N] = -g;
-        st = solve(sh, v, b, dx, err);
+        st = solve(sh, v, b, dx, NULL, NULL, err);
         if (st != GD_OK)
             return st;
         for (int i = 0; i < N + (v ? 1 : 0); i++)
@@ -229,20 +244,41 @@ gd_status gd_shoot_correct(gd_shoot *sh, double *u, const double *v, const doubl
 gd_status gd_shoot_tangent(gd_shoot *sh, const double *v, double *t, gd_error *err)
 {
     const int N = sh->N;
-    double b[GD_PO_MAX_PERIODS * GD_MAX_STATE + 1] = {0};
+    double b[GD_SHOOT_UMAX] = {0};
     b[N] = 1.0;
-    gd_status st = solve(sh, v, b, t, err);
+    int dsign = 0;
+    double dlog = 0;
+    gd_status st = solve(sh, v, b, t, &dsign, &dlog, err);
     if (st != GD_OK)
         return st;
-    double norm = 0, dot = 0;
+    double wnorm = 0, enorm = 0, dot = 0;
     for (int i = 0; i <= N; i++) {
-        norm += t[i] * t[i];
+        wnorm += sh->w[i] * t[i] * t[i];
+        enorm += t[i] * t[i];
         dot += t[i] * v[i];
     }
-    norm = sqrt(norm) * (dot < 0 ? -1.0 : 1.0);
+    /* det [J; v^T] = (v . e) det [J; e^T] for e the Euclidean unit tangent (v less its part along e
+     * lies in the rows of J): D = det [J; e^T], whose sign changes at a simple branch point and not
+     * at a fold (Keller 1977), whatever the bordering row */
+    sh->bp_sign = dsign * (dot < 0 ? -1 : 1);
+    sh->bp_log = dlog - log(fabs(dot) / sqrt(enorm));
+    double norm = sqrt(wnorm) * (dot < 0 ? -1.0 : 1.0);
     for (int i = 0; i <= N; i++)
         t[i] /= norm;
     return GD_OK;
+}
+
+double gd_po_state_scale(const double *y, int n)
+{
+    double Y = 1.0;
+    for (int i = 0; i < n; i++)
+        Y = fmax(Y, fabs(y[i]));
+    return Y;
+}
+
+double gd_po_tol_derived(const gd_solver_opts *o, double Y)
+{
+    return o->rtol * Y + o->atol;
 }
 
 gd_status gd_shoot_orbit(const gd_shoot *sh, const double *u, gd_po *po, gd_error *err)
@@ -258,20 +294,8 @@ gd_status gd_shoot_orbit(const gd_shoot *sh, const double *u, gd_po *po, gd_erro
     for (int i = 0; i < sh->N; i++)
         po->residual = fmax(po->residual, fabs(sh->r[i]));
     memcpy(po->events, sh->events, sizeof po->events);
-    /* the whole orbit's monodromy: M_{nseg-1} ... M_1 M_0 */
-    double A[GD_MAX_STATE * GD_MAX_STATE], B[GD_MAX_STATE * GD_MAX_STATE];
-    memcpy(A, sh->Mk, sizeof(double) * (size_t)(n * n));
-    for (int k = 1; k < sh->nseg; k++) {
-        gsl_matrix_const_view Mv = gsl_matrix_const_view_array(sh->Mk + (size_t)k * n * n, (size_t)n, (size_t)n);
-        gsl_matrix_const_view Av = gsl_matrix_const_view_array(A, (size_t)n, (size_t)n);
-        gsl_matrix_view Bv = gsl_matrix_view_array(B, (size_t)n, (size_t)n);
-        int rc = gsl_blas_dgemm(CblasNoTrans, CblasNoTrans, 1.0, &Mv.matrix, &Av.matrix, 0.0, &Bv.matrix);
-        if (rc != GSL_SUCCESS)
-            return gd_error_set(err, GD_ERR_GSL, "the orbit's monodromy: gsl_blas_dgemm: %s", gsl_strerror(rc));
-        memcpy(A, B, sizeof A);
-    }
-    memcpy(po->M, A, sizeof(double) * (size_t)(n * n));
-    gd_status st = gd_floquet(po->M, n, po->mu_re, po->mu_im, err);
+    /* the whole orbit's monodromy M_{nseg-1} ... M_1 M_0 and its multipliers, from the segments */
+    gd_status st = gd_floquet_segments(sh->Mk, sh->nseg, n, po->M, po->mu_re, po->mu_im, err);
     if (st != GD_OK)
         return st;
     po->mu_max = hypot(po->mu_re[0], po->mu_im[0]);

@@ -432,6 +432,11 @@ GD_API gd_status gd_sweep_points_create(const gd_sweep_plan *p, gd_sweep_point *
     return GD_OK;
 }
 
+double gd_sweep_point_dlf(const gd_sweep_point *pt)
+{
+    return fmax(pt->dynamic_load_factor[0], pt->dynamic_load_factor[1]);
+}
+
 void gd_sweep_point_clear(gd_sweep_point *pt)
 {
     free(pt->poincare);
@@ -445,6 +450,7 @@ void gd_sweep_point_clear(gd_sweep_point *pt)
         pt->rms_accel_mps2[i] = NAN;
         pt->impact_regime[i] = 0;
     }
+    pt->dynamic_load_factor[0] = pt->dynamic_load_factor[1] = NAN;
     pt->mle_per_period = pt->mle_per_s = NAN;
     pt->period_n = pt->poincare_distinct = 0;
     pt->steps = pt->rhs_evals = pt->events = 0;
@@ -762,6 +768,8 @@ static gd_status run_point(const gd_case *base, const gd_sweep_plan *p, gd_sweep
         pt->rms_accel_mps2[i] = res->rms_accel_mps2[i];
         pt->impact_regime[i] = res->impact_regime[i];
     }
+    pt->dynamic_load_factor[0] = res->dynamic_load_factor[0];
+    pt->dynamic_load_factor[1] = res->dynamic_load_factor[1];
     pt->mle_per_period = res->n_lyapunov > 0 ? res->mle_per_period : NAN;
     pt->mle_per_s = res->n_lyapunov > 0 ? res->mle_per_s : NAN;
     snprintf(pt->motion, sizeof pt->motion, "%s", res->motion);

@@ -33,7 +33,64 @@ static int known_table(const char *list, const char *name)
     return strstr(list, key) != NULL;
 }
 
-/* Torque or power, one of them; the other derived (T = 9550 P / n) and range-checked. */
+/* The analyses that integrate the dynamics need the speed and the load; those of the loaded
+ * contact (LTCA, the optimisation of the gear's LTE) the load only; TCA and the test functions
+ * neither. */
+static int needs_speed(const gd_case *c)
+{
+    return c->analysis == GD_ANALYSIS_RESPONSE || c->analysis == GD_ANALYSIS_SWEEP ||
+           c->analysis == GD_ANALYSIS_CONTINUATION || c->analysis == GD_ANALYSIS_WORK_PRECISION;
+}
+
+static int needs_load(const gd_case *c)
+{
+    if (needs_speed(c) || c->analysis == GD_ANALYSIS_LTCA)
+        return 1;
+    return (c->analysis == GD_ANALYSIS_OPTIMIZE || c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS) &&
+           strstr(c->opt_objective, "gear-lte") != NULL;
+}
+
+/* A key of [operating] whose value the case gives: in the file, by --set, or written into the
+ * structure by a program (a finite value where the schema has none). */
+static int operating_known(const gd_case *c, const char *key, double v)
+{
+    gd_source s = (gd_source)c->src[gd_case_key_index("operating", key)];
+    return s == GD_SRC_FILE || s == GD_SRC_SET || (s == GD_SRC_DEFAULT && isfinite(v));
+}
+
+/* 1 when a sweep or a continuation of this case varies the key "section.key"; *start: the value it
+ * gives the key at its start (a sweep's first value, a continuation's start value; NaN while the
+ * analysis's own keys lack it, which its check reports). */
+static int varied(const gd_case *c, const char *name, double *start)
+{
+    *start = NAN;
+    if (c->analysis == GD_ANALYSIS_SWEEP && strcmp(c->sweep_parameter, name) == 0)
+        *start = c->sweep_from;
+    else if (c->analysis == GD_ANALYSIS_SWEEP && strcmp(c->sweep_parameter2, name) == 0)
+        *start = c->sweep_from2;
+    else if (c->analysis == GD_ANALYSIS_CONTINUATION && strcmp(c->cont_parameter, name) == 0)
+        *start = gd_case_key_given(c, "continuation", "start_value") ? c->cont_start_value
+               : c->cont_direction == 0 ? c->cont_from /* the schema's up|down|both */
+               : c->cont_direction == 1 ? c->cont_to : 0.5 * (c->cont_from + c->cont_to);
+    else
+        return 0;
+    return 1;
+}
+
+static gd_status missing(const gd_case *c, const char *key, const char *what, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32], an[32], range[96];
+    gd_case_key_where(c, "operating", key, w, sizeof w);
+    gd_case_key_choice("scene", "analysis", c->analysis, an, sizeof an);
+    gd_case_key_range_text(gd_case_find_key("operating", key), range, sizeof range);
+    return gd_error_set(err, GD_ERR_INPUT, "%s: operating.%s: missing: the %s analysis needs %s, which has no "
+                        "default (valid: %s, in [operating] or by --set%s)", w, key, an, what, range,
+                        strcmp(key, "torque_nm") == 0 ? "; or operating.power_kw" : "");
+}
+
+/* The operating point: the speed, and the torque or the power (one of them; the other derived, T =
+ * 9550 P / n, and range-checked). Neither has a default: an analysis that needs them refuses a case
+ * without them, unless it varies them itself (a sweep or continuation of the key: its start). */
 static gd_status check_load(gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
@@ -42,7 +99,36 @@ static gd_status check_load(gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: operating.power_kw: give torque_nm or power_kw, not both "
                             "(valid: one of them; torque = 9550 P / n)", w);
     }
-    if (gd_case_key_given(c, "operating", "power_kw")) {
+    double v;
+    if (!operating_known(c, "speed_rpm", c->speed_rpm)) {
+        if (varied(c, "operating.speed_rpm", &v)) {
+            if (isfinite(v))
+                gd_case_key_derive(c, "operating", "speed_rpm", &c->speed_rpm, v);
+        } else if (needs_speed(c)) {
+            return missing(c, "speed_rpm", "the operating point's pinion speed", err);
+        }
+    }
+    int power = operating_known(c, "power_kw", c->power_kw), torque = !power && operating_known(c, "torque_nm", c->torque_nm);
+    if (!power && !torque) {
+        if (varied(c, "operating.power_kw", &v)) {
+            if (!isfinite(v))
+                return GD_OK;
+            gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, v);
+            power = 1;
+        } else if (varied(c, "operating.torque_nm", &v)) {
+            if (!isfinite(v))
+                return GD_OK;
+            gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, v);
+            torque = 1;
+        } else if (needs_load(c)) {
+            return missing(c, "torque_nm", "the operating point's pinion torque", err);
+        } else {
+            return GD_OK;
+        }
+    }
+    if (power) {
+        if (!isfinite(c->speed_rpm))
+            return missing(c, "speed_rpm", "the speed to turn operating.power_kw into a torque", err);
         gd_case_key_derive(c, "operating", "torque_nm", &c->torque_nm, 9550.0 * c->power_kw / c->speed_rpm);
         const gd_keyspec *k = gd_case_find_key("operating", "torque_nm");
         if (!gd_case_key_in_range(k, c->torque_nm)) {
@@ -52,11 +138,7 @@ static gd_status check_load(gd_case *c, gd_error *err)
                                 "a torque in [%g, %g] N m: power_kw <= %.3g at this speed)", w, c->torque_nm,
                                 c->power_kw, c->speed_rpm, k->min, k->max, k->max * c->speed_rpm / 9550.0);
         }
-    } else {
-        if (!gd_case_key_given(c, "operating", "torque_nm")) {
-            c->torque_nm = 500.0;
-            c->src[gd_case_key_index("operating", "torque_nm")] = GD_SRC_DEFAULT;
-        }
+    } else if (isfinite(c->speed_rpm)) {
         gd_case_key_derive(c, "operating", "power_kw", &c->power_kw, c->torque_nm * c->speed_rpm / 9550.0);
     }
     return GD_OK;

@@ -21,7 +21,7 @@
 
 static const gd_keyspec schema[] = {
     /* [scene] */
-    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation",
+    E("scene", "analysis", analysis, 0, "response|sweep|tca|ltca|optimize|compare-optimizers|work-precision|continuation|basins",
       "what to compute"),
     E("scene", "model", model, 2, "torsional|torsional-lr|bta",
       "dynamic model: one mesh coordinate, the two helical halves, or bending-torsion-axial (10 DOF; 5 for a single pair)"),
@@ -47,6 +47,23 @@ static const gd_keyspec schema[] = {
     D("gear", "groove_width_mm", "mm", groove_width_mm, 0, 5000, 0, 0, 50, "relief groove between the halves (herringbone; none in a single pair)"),
     D("gear", "bore_diameter_pinion_mm", "mm", bore_diameter_pinion_mm, 0, 10000, 0, 0, 0, "bore of the pinion body (0: solid)"),
     D("gear", "bore_diameter_gear_mm", "mm", bore_diameter_gear_mm, 0, 10000, 0, 0, 0, "bore of the gear body (0: solid)"),
+    D("gear", "rim_inner_diameter_pinion_mm", "mm", rim_inner_diameter_pinion_mm, 0, 10000, 0, 0, 0,
+      "inner diameter of the pinion's rim, where its web begins (0: a solid blank; between the hub or bore and the root "
+      "circle); the masses and inertias only (docs/model.md section 9.2)"),
+    D("gear", "rim_inner_diameter_gear_mm", "mm", rim_inner_diameter_gear_mm, 0, 10000, 0, 0, 0,
+      "inner diameter of the gear's rim (see rim_inner_diameter_pinion_mm)"),
+    D("gear", "web_thickness_pinion_mm", "mm", web_thickness_pinion_mm, 0, 10000, 1, 0, NAN,
+      "axial thickness of the pinion's web between rim and hub (needed with rim_inner_diameter_pinion_mm)"),
+    D("gear", "web_thickness_gear_mm", "mm", web_thickness_gear_mm, 0, 10000, 1, 0, NAN,
+      "axial thickness of the gear's web (needed with rim_inner_diameter_gear_mm)"),
+    D("gear", "hub_diameter_pinion_mm", "mm", hub_diameter_pinion_mm, 0, 10000, 0, 0, 0,
+      "outer diameter of the pinion's hub (0: none, the web or the blank reaches the bore)"),
+    D("gear", "hub_diameter_gear_mm", "mm", hub_diameter_gear_mm, 0, 10000, 0, 0, 0,
+      "outer diameter of the gear's hub (0: none)"),
+    D("gear", "hub_length_pinion_mm", "mm", hub_length_pinion_mm, 0, 10000, 1, 0, NAN,
+      "axial length of the pinion's hub (derived: the body's width, the face, or both halves and the groove)"),
+    D("gear", "hub_length_gear_mm", "mm", hub_length_gear_mm, 0, 10000, 1, 0, NAN,
+      "axial length of the gear's hub (derived likewise)"),
     D("gear", "youngs_modulus_gpa", "GPa", youngs_modulus_gpa, 1, 1000, 0, 0, 206, "Young's modulus E"),
     D("gear", "poisson_ratio", "", poisson_ratio, 0, 0.5, 0, 1, 0.3, "Poisson's ratio nu"),
     D("gear", "density_kg_per_m3", "kg/m^3", density_kg_per_m3, 100, 30000, 0, 0, 7850, "density"),
@@ -102,8 +119,11 @@ static const gd_keyspec schema[] = {
 
 
     /* [operating] */
-    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, 4000, "pinion (input) speed n"),
-    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it; default 500, or from power_kw)"),
+    D("operating", "speed_rpm", "rpm", speed_rpm, 0, 100000, 1, 0, NAN,
+      "pinion (input) speed n; no default: a response, sweep, continuation or work-precision needs it (a sweep or "
+      "continuation of this key gives it)"),
+    D("operating", "torque_nm", "N m", torque_nm, 0, 1e8, 0, 0, NAN, "pinion torque, of the whole pair (a herringbone's halves share it); no default: this or power_kw is needed by "
+      "every analysis but tca (and the optimisers' test functions)"),
     D("operating", "power_kw", "kW", power_kw, 0, 1e6, 1, 0, NAN, "input power P: torque = 9550 P / n (exclusive with torque_nm)"),
 
     /* [clearance] */
@@ -270,19 +290,21 @@ static const gd_keyspec schema[] = {
     E("continuation", "direction", cont_direction, 2, "up|down|both",
       "from the starting orbit towards increasing, decreasing parameter, or both (two branches)"),
     D("continuation", "ds", "", cont_ds, 0, 1e6, 1, 0, 0.02,
-      "first arclength step in the norm of (state, parameter / scale) (docs/continuation.md section 7)"),
+      "first arclength step in the norm of (state / its size, parameter / (to - from)) (docs/continuation.md section 3)"),
     D("continuation", "ds_min", "", cont_ds_min, 0, 1e6, 1, 0, 1e-6,
       "smallest arclength step: a branch whose corrector fails at it ends"),
-    D("continuation", "ds_max", "", cont_ds_max, 0, 1e6, 1, 0, 0.05, "largest arclength step"),
+    D("continuation", "ds_max", "", cont_ds_max, 0, 1e6, 1, 0, 0.2, "largest arclength step"),
     D("continuation", "dp_max", "", cont_dp_max, 0, 1e30, 0, 0, 0,
-      "largest change of the parameter in one step, in the unit of its key (0: no limit besides ds_max)"),
+      "largest change of the parameter in one step, in the unit of its key (0: (to - from) / 50)"),
     I("continuation", "max_points", cont_max_points, 2, 100000, 400, "points of one branch at most, its start included"),
-    D("continuation", "newton_tol", "", cont_newton_tol, 1e-14, 1e-2, 0, 0, 1e-9,
-      "an orbit is converged when the max-norm of the shooting residual is below this (keep solver.rtol tighter)"),
+    D("continuation", "newton_tol", "", cont_newton_tol, 0, 1e-2, 0, 0, 0,
+      "an orbit is converged when the max-norm of the shooting residual (dimensionless state) is below this "
+      "(0: what the integration resolves, solver.rtol times the orbit's largest state component plus solver.atol)"),
     I("continuation", "newton_max_iterations", cont_newton_max_iterations, 1, 100, 12,
       "Newton iterations of one correction at most (more: the step is halved)"),
-    D("continuation", "locate_tol", "", cont_locate_tol, 1e-14, 1, 0, 0, 1e-8,
-      "a bifurcation is located when its arclength bracket is below this"),
+    D("continuation", "locate_tol", "", cont_locate_tol, 0, 1, 0, 0, 0,
+      "a bifurcation is located when its arclength bracket is below this (0: ten times newton_tol over the orbit's "
+      "largest state component, what a corrected point resolves)"),
     I("continuation", "period", cont_period, 0, 16, 0,
       "mesh periods of the starting orbit (0: the smallest n up to 16 whose Poincare section repeats after the transient)"),
     E("continuation", "shooting", cont_shooting, 0, "multiple|single",
@@ -305,9 +327,68 @@ static const gd_keyspec schema[] = {
       "branches at most, those from the start and those switched to; a switching beyond it is listed under notes"),
     S("continuation", "overlay_sweep", cont_overlay_sweep, "",
       "a finished sweep's directory (as output.directory: relative to the working directory) whose points are drawn over the branches"),
-    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare",
+    E("continuation", "response", cont_response, 0, "rms_accel|max_deflection|min_deflection|poincare|dynamic_load_factor",
       "the response drawn against the parameter: RMS mesh acceleration (m/s^2), largest or smallest mesh "
-      "deflection lambda_L (um) on the orbit, or lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv)"),
+      "deflection lambda_L (um) on the orbit, lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv), "
+      "or the dynamic load factor (the largest mesh force on the orbit over the static one, of the more loaded mesh)"),
+
+    /* [basins] (analysis = basins; docs/basins.md) */
+    S("basins", "x", bas_x, "lambda_L",
+      "the section's first coordinate: lambda_L, lambda_R (the mesh deflection over half the backlash), lambda_dot_L, "
+      "lambda_dot_R (its rate, half backlashes per unit of dimensionless time omega_n t), or a state component "
+      "(y1L, ..., y1L_dot, dimensionless)"),
+    S("basins", "y", bas_y, "lambda_dot_L", "the section's second coordinate (as x)"),
+    D("basins", "x_from", "", bas_x_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in x, in x's unit (derived for a mesh deflection: -2, back contact)"),
+    D("basins", "x_to", "", bas_x_to, -1e30, 1e30, 0, 0, NAN,
+      "upper end of the box in x (derived for a mesh deflection: the static deflection + 2, drive contact)"),
+    D("basins", "y_from", "", bas_y_from, -1e30, 1e30, 0, 0, NAN,
+      "lower end of the box in y (derived for a rate: -(x_to - x_from) Omega, Omega the frequency ratio)"),
+    D("basins", "y_to", "", bas_y_to, -1e30, 1e30, 0, 0, NAN, "upper end of the box in y (derived for a rate: the "
+      "opposite of y_from)"),
+    D("basins", "phase_deg", "deg", bas_phase_deg, 0, 360, 0, 1, 0,
+      "mesh phase of the section: initial states and the stroboscopic map at this phase of the mesh cycle"),
+    E("basins", "base", bas_base, 0, "static|state",
+      "the state components off the section: at the static state, or at basins.state (an orbit's point)"),
+    S("basins", "state", bas_state, "",
+      "base = state: the dimensionless state at the section's phase, comma-separated (as branch.csv writes it)"),
+    I("basins", "resolution", bas_resolution, 2, 20000, 100,
+      "cells of the box along x (the picture's grid and the tessellation of the recurrences)"),
+    I("basins", "resolution_y", bas_resolution_y, 0, 20000, 0, "cells of the box along y (0: resolution)"),
+    B("basins", "picture", bas_picture, 1,
+      "map every cell's centre (basins.csv and the picture; without parameter only)"),
+    I("basins", "samples", bas_samples, 0, 1000000000, 10000,
+      "initial states drawn uniformly in the box for the fractions (0: none), per parameter value"),
+    I("basins", "seed", bas_seed, 0, 2147483647, 1, "seed of the random sample (GSL's Mersenne Twister)"),
+    I("basins", "max_periods", bas_max_periods, 10, 100000000, 2000,
+      "mesh periods of one trajectory at most: beyond, its state is labelled iteration-cap"),
+    D("basins", "margin", "", bas_margin, 0, 10, 0, 0, 1,
+      "the tessellation extends this many box widths beyond the box on every side; a trajectory outside it for "
+      "consecutive_lost_steps periods is labelled left-box"),
+    I("basins", "consecutive_recurrences", bas_consecutive_recurrences, 1, 1000000, 100,
+      "map points in a row on cells the trajectory visited before: an attractor is found"),
+    I("basins", "consecutive_attractor_steps", bas_consecutive_attractor_steps, 1, 1000000, 2,
+      "map points in a row on one known attractor's cells: the trajectory goes there"),
+    I("basins", "consecutive_basin_steps", bas_consecutive_basin_steps, 1, 1000000, 10,
+      "map points in a row on cells whose initial states went to one attractor: the trajectory goes there "
+      "(used when the section is the whole state space)"),
+    I("basins", "consecutive_lost_steps", bas_consecutive_lost_steps, 0, 1000000, 20,
+      "map points in a row outside the tessellation: left-box"),
+    I("basins", "lyapunov_periods", bas_lyapunov_periods, 10, 10000000, 1000,
+      "mesh periods over which a non-periodic attractor's largest Lyapunov exponent is measured"),
+    D("basins", "newton_tol", "", bas_newton_tol, 1e-14, 1e-2, 0, 0, 1e-8,
+      "a periodic attractor's orbit by shooting is converged when the residual's max-norm is below this "
+      "(keep solver.rtol tighter)"),
+    I("basins", "entropy_box_cells", bas_entropy_box_cells, 1, 1000, 5,
+      "side of the boxes of the basin entropy, in cells of the picture"),
+    S("basins", "continuation", bas_continuation, "",
+      "a finished continuation's directory (relative to the working directory): its stable orbits seed the "
+      "search, its orbits are marked on the picture and its branches drawn beside the fractions"),
+    S("basins", "parameter", bas_parameter, "",
+      "the fractions over a numeric key, section.key (e.g. operating.speed_rpm); empty: at the case's values"),
+    D("basins", "from", "", bas_from, -1e30, 1e30, 0, 0, NAN, "first value of the parameter, in its key's unit"),
+    D("basins", "to", "", bas_to, -1e30, 1e30, 0, 0, NAN, "last value of the parameter, in its key's unit"),
+    I("basins", "points", bas_points, 2, 100000, 11, "values of the parameter from `from` to `to`, both included"),
 
     /* [workprecision] (analysis = work-precision; docs/accuracy.md) */
     S("workprecision", "families", wp_families, "rk4,erk2,erk3,erk4,erk5,erk6,erk7,erk8",

@@ -133,3 +133,34 @@ int cli_threads(int requested)
     return 1;
 #endif
 }
+
+void cli_print_defaulted(FILE *f, const gd_case *c, const char *prefix)
+{
+    size_t n, idx[256];
+    const gd_keyspec *s = gd_case_schema(&n);
+    size_t count = gd_case_defaulted_keys(c, idx, sizeof idx / sizeof idx[0]);
+    if (count > sizeof idx / sizeof idx[0])
+        count = sizeof idx / sizeof idx[0];
+    if (count == 0)
+        return;
+    fprintf(f, "%sphysical values the case does not give, taken from the defaults:\n", prefix);
+    const char *sec = NULL;
+    size_t col = 0;
+    for (size_t j = 0; j < count; j++) {
+        const gd_keyspec *k = &s[idx[j]];
+        char val[256], item[320];
+        gd_case_format_value(c, idx[j], val, sizeof val);
+        snprintf(item, sizeof item, "%s = %s", k->key, val);
+        if (!sec || strcmp(sec, k->section) != 0) {
+            if (sec)
+                fputc('\n', f);
+            sec = k->section;
+            col = (size_t)fprintf(f, "%s  [%s] %s", prefix, sec, item);
+        } else if (col + strlen(item) + 2 > 110) {
+            col = (size_t)fprintf(f, ",\n%s      %s", prefix, item) - 2;
+        } else {
+            col += (size_t)fprintf(f, ", %s", item);
+        }
+    }
+    fputc('\n', f);
+}

@@ -2,6 +2,8 @@
 #ifndef GD_CLI_H
 #define GD_CLI_H
 
+#include <stdio.h>
+
 #include "geardyn/geardyn.h"
 #include "gnuplot.h"
 
@@ -28,6 +30,9 @@ int cli_load_case(cli_case_args *a, gd_case *c);
  * (the caller frees it), else the exit status with nothing left to free. */
 int cli_open_case(int argc, char **argv, int allow_out, cli_case_args *a, gd_case *c);
 int cli_fail(const gd_error *err);
+/* The physical values a resolved case takes from the schema's defaults (gd_case_defaulted_keys), one
+ * line per section, every line starting with prefix; nothing when there are none. */
+void cli_print_defaulted(FILE *f, const gd_case *c, const char *prefix);
 /* geardyn check's section of natural frequencies, resonance speeds and strain-energy shares of the
  * case's model m (check_modes.c). */
 void cli_check_modes(const gd_case *c, const gd_model *m);
@@ -120,6 +125,14 @@ void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const v
                                const char **note);
 void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cli_continuation_progress(void *user, int branches_done, int branches_planned);
+/* The basins: progress, signals and MPI ranks around the row's run (run_basins.c), its pictures
+ * (basins_plot.c: basins.png and .svg, or fractions.png and .svg, into dir) and its lines on stdout. */
+int run_basins(const cli_case_args *a, gd_case *c, const char *dir);
+gd_status cli_basins_draw(const char *dir, const gd_case *c, const gd_basins_result *res, gd_error *err);
+void cli_basins_after_run(const cli_progress *p, gd_status st);
+void cli_basins_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
+                         const char **note);
+void cli_basins_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);
 int cmd_keys(int argc, char **argv);

@@ -103,6 +103,8 @@ int cmd_check(int argc, char **argv)
         snprintf(lhs, sizeof lhs, "%s = %s%s%s", s[i].key, val[0] ? val : "\"\"", s[i].unit[0] ? " " : "", s[i].unit);
         printf("%-58s ; %s\n", lhs, where);
     }
+    printf("\n");
+    cli_print_defaulted(stdout, &c, "# ");
     gd_geometry g;
     gd_model m;
     gd_error err = {0};
@@ -126,12 +128,21 @@ int cmd_check(int argc, char **argv)
         printf("degrees_of_freedom = %d\n", m.ndof);
         printf("normal_equivalent_mass_kg = %.6g\n", m.m_ref);
         printf("natural_frequency_hz = %.6g   ; sqrt(k_m / m_n) / 2 pi of one mesh\n", m.omega_n / (2 * M_PI));
-        printf("mesh_frequency_hz = %.6g\n", m.mesh_freq_hz);
-        printf("frequency_ratio = %.6g\n", m.Omega);
-        printf("static_mesh_force_n = %.6g   ; per mesh (herringbone: per half), along the tooth normal\n", m.static_load_n);
-        printf("static_axial_force_n = %.6g   ; its axial component F_n sin(beta_b), taken by the axial supports\n",
-               m.static_load_n * sin(g.beta_b));
-        printf("static_deflection_um = %.6g\n", m.static_load_n / m.k_ref * 1e6);
+        if (isfinite(c.speed_rpm)) {
+            printf("mesh_frequency_hz = %.6g\n", m.mesh_freq_hz);
+            printf("frequency_ratio = %.6g\n", m.Omega);
+        } else {
+            printf("# no operating.speed_rpm (this analysis does not use it): no mesh frequency\n");
+        }
+        if (isfinite(c.torque_nm)) {
+            printf("static_mesh_force_n = %.6g   ; per mesh (herringbone: per half), along the tooth normal\n",
+                   m.static_load_n);
+            printf("static_axial_force_n = %.6g   ; its axial component F_n sin(beta_b), taken by the axial supports\n",
+                   m.static_load_n * sin(g.beta_b));
+            printf("static_deflection_um = %.6g\n", m.static_load_n / m.k_ref * 1e6);
+        } else {
+            printf("# no operating.torque_nm (this analysis does not use it): no static mesh force\n");
+        }
         if (c.stiffness == GD_STIFF_LTCA)
             printf("# with stiffness = ltca the mesh stiffness above is ISO 6336-1's; run replaces it by LTCA's mean\n");
         print_iso6336(&pair, &g);

@@ -17,6 +17,7 @@ static const cli_row rows[] = {
     { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_pictures,
       cli_workprec_report, NULL },
     { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_pictures, cli_continuation_report, NULL },
+    { GD_ANALYSIS_BASINS, NULL, cli_basins_after_run, cli_basins_pictures, cli_basins_report, run_basins },
 };
 
 static const cli_row *cli_row_for(int analysis)
@@ -121,6 +122,8 @@ int cmd_run(int argc, char **argv)
         snprintf(dir, sizeof dir, "%s", c.directory);
     else
         default_out_dir(a.case_path, dir, sizeof dir);
+    if (!a.quiet)
+        cli_print_defaulted(stderr, &c, "geardyn: ");
     const gd_analysis_type *t = gd_analysis_find(c.analysis); /* gd_case_resolve refused a case without one */
     static const cli_row plain = {0}; /* an analysis the command line has no pictures or lines for */
     const cli_row *r = cli_row_for(c.analysis);

@@ -19,16 +19,18 @@ static resp_cols response_columns(int response, int n)
 {
     /* branch.csv: branch, period_n, point, key, p, stable, mu_max, 2n multipliers, then the measures;
      * bifurcations.csv: branch, period_n, kind, key, lo, hi, p, mu_re, mu_im, clearance, the measures */
-    static const int offset[] = {0, 4, 3, 7};
+    static const int offset[] = {0, 4, 3, 7, 8};
     static const char *label[] = {"RMS mesh acceleration (m/s^2)", "largest mesh deflection lambda_L (um)",
                                   "smallest mesh deflection lambda_L (um)",
-                                  "lambda_L at mesh phase 0 (dimensionless)"};
+                                  "lambda_L at mesh phase 0 (dimensionless)",
+                                  "dynamic load factor (largest mesh force / static, -)"};
     resp_cols r;
     r.branch_col = 8 + 2 * n + offset[response];
     r.bif_col = 11 + offset[response];
     r.label = label[response];
     r.sweep_file = response == GD_CONT_RESP_POINCARE ? "bifurcation.csv" : "sweep.csv";
-    r.sweep_col = response == GD_CONT_RESP_POINCARE ? "lambda_L" : "rms_accel_mps2";
+    r.sweep_col = response == GD_CONT_RESP_POINCARE ? "lambda_L"
+                : response == GD_CONT_RESP_DYNAMIC_LOAD_FACTOR ? "dynamic_load_factor" : "rms_accel_mps2";
     return r;
 }
 

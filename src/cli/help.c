@@ -9,7 +9,7 @@ static const cli_help commands[] = {
      "run the analysis of a case file and write its tables and pictures",
      "Reads CASE, applies the --set assignments in order, checks every key and runs the analysis "
      "named by [scene] analysis: response, sweep, tca, ltca, optimize, compare-optimizers, "
-     "work-precision or continuation. The results go to DIR: --out, else [output] directory, else "
+     "work-precision, continuation or basins. The results go to DIR: --out, else [output] directory, else "
      "results/<case name>.\n\n"
      "The run locks DIR (a second run into it is refused), writes its files into a stage beside "
      "it (.NAME.geardyn-stage in DIR's parent) and exchanges the stage and DIR in one step when "
@@ -18,11 +18,12 @@ static const cli_help commands[] = {
      "(SIGINT, SIGTERM, SIGHUP: exit 130, 143, 129) leaves DIR as it was. "
      "Pictures are drawn with gnuplot when it is installed.\n\n"
      "A sweep started by mpirun -n N geardyn run CASE (geardyn built with -Dmpi=enabled) spreads "
-     "its points over the N ranks; rank 0 writes the same files as a serial run.",
+     "its points over the N ranks, and basins over a parameter its values; rank 0 writes the same "
+     "files as a serial run.",
      {{"--set section.key=value", "override one key of the case (repeatable; -s is the short form)"},
       {"--out DIR", "the output directory"},
       {"--quiet", "print nothing but errors"},
-      {"--threads N", "OpenMP threads of a sweep, an optimisation or an optimiser comparison "
+      {"--threads N", "OpenMP threads of a sweep, basins, an optimisation or an optimiser comparison "
                       "(default: all cores); 1 or N threads give identical files"},
       {"--resume", "finish an interrupted sweep: only the points missing from DIR/.sweep.journal run"}}},
     {"check", "CASE [--set section.key=value ...]",

@@ -41,9 +41,12 @@ void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_c
                res->branch[b].direction > 0 ? "up" : "down", br->npoints,
                gd_contin_value(res, br->pt[br->npoints - 1].orbit.p), res->branch[b].end_reason);
         for (int i = 0; i < br->nbif; i++)
-            printf("    %s%s%s at %.10g\n", gd_bif_kind_name(br->bif[i].kind), br->bif[i].clearance >= 0 ? " of " : "",
+            printf("    %s%s%s at %.10g%s%s%s\n", gd_bif_kind_name(br->bif[i].kind),
+                   br->bif[i].clearance >= 0 ? " of " : "",
                    br->bif[i].clearance >= 0 ? res->clear_name[br->bif[i].clearance] : "",
-                   gd_contin_value(res, br->bif[i].p));
+                   gd_contin_value(res, br->bif[i].p), br->bif[i].location != GD_LOC_LOCATED ? " (location: " : "",
+                   br->bif[i].location != GD_LOC_LOCATED ? gd_bif_location_name(br->bif[i].location) : "",
+                   br->bif[i].location != GD_LOC_LOCATED ? ")" : "");
     }
     for (int i = 0; i < res->nnotes; i++)
         printf("  note: %s\n", res->notes[i]);

@@ -41,7 +41,7 @@ static gd_status draw(const char *dir, const gd_ltca_result *r, gd_error *err)
                 "set title '%s half: load share %.3f, max pressure %.0f MPa%s'\n"
                 "plot 'load_distribution.csv' every ::1 using (strcol(3) eq '%s' && $9 > 0 ? $6 : 1/0):7:10 "
                 "with points pt 7 ps 0.6 lc palette\n",
-                half_name[h], r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_kinds[h] ? ", edge loading" : "",
+                half_name[h], r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_positions[h] ? ", edge loading" : "",
                 half_name[h]);
         n += snprintf(script + n, sizeof script - n, "unset multiplot\nunset output\nset autoscale\n");
         n += snprintf(script + n, sizeof script - n,
@@ -96,10 +96,17 @@ void cli_ltca_report(const cli_case_args *a, const char *dir, const gd_case *c, 
         iso = gd_iso6336_mesh_stiffness(&pair, &g);
     printf("%s: LTCA, %d positions, %d slices per half, %s pinion, %.6g N m: LTE %.6g arcsec p-p\n", dir, r->npos,
            r->nslices, r->floating ? "floating" : "fixed", r->torque_nm, r->lte_pp_arcsec);
-    for (int h = 0; h < r->halves; h++)
+    for (int h = 0; h < r->halves; h++) {
         printf("  %-5s mean mesh stiffness %.6g N/m (%.4g .. %.4g; ISO 6336-1 %.4g), load share %.4f, max pressure "
-               "%.0f MPa, edge loading %s\n", half_name[h], r->stiffness_mean[h], r->stiffness_min[h],
-               r->stiffness_max[h], iso, r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_kinds[h] ? "yes" : "no");
+               "%.0f MPa, edge loading %s", half_name[h], r->stiffness_mean[h], r->stiffness_min[h],
+               r->stiffness_max[h], iso, r->load_share[h], r->pressure_max[h] * 1e-6, r->edge_positions[h] ? "yes" : "no");
+        if (r->edge_positions[h])
+            printf(" at %d of %d positions (face-end line load up to %.3g x its line's mean)", r->edge_positions[h],
+                   r->npos, r->edge_ratio_max[h]);
+        if (r->tip_positions[h])
+            printf(", tip contact at %d of %d positions", r->tip_positions[h], r->npos);
+        printf("\n");
+    }
     printf("  %ld active-set iterations, largest residual %.3g m, %.3f s\n", r->iterations, r->max_residual,
            r->wall_s);
 }

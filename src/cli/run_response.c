@@ -93,6 +93,14 @@ void cli_response_report(const cli_case_args *a, const char *dir, const gd_case 
     printf("%s: %s, %s, RMS mesh acceleration %.6g m/s^2 (left %.6g, right %.6g)\n", dir, res->motion,
            gd_impact_regime_name(res->impact_regime[2]), res->rms_accel_mps2[2], res->rms_accel_mps2[0],
            res->rms_accel_mps2[1]);
+    const gd_model *m = &((const gd_response_outcome *)result)->model;
+    if (m->nmesh > 1 && res->dynamic_load_factor[0] != res->dynamic_load_factor[1])
+        printf("  dynamic load factor left %.4g, right %.4g (largest mesh force %.5g N, %.5g N; static %.5g N)\n",
+               res->dynamic_load_factor[0], res->dynamic_load_factor[1], res->force_max_n[0], res->force_max_n[1],
+               m->static_load_n);
+    else
+        printf("  dynamic load factor %.4g (largest mesh force %.5g N, static %.5g N)\n", res->dynamic_load_factor[0],
+               res->force_max_n[0], m->static_load_n);
     printf("  %ld steps, %ld RHS evaluations, %ld events, %.3f s\n", res->stats.steps, res->stats.rhs_evals,
            res->stats.events, res->wall_s);
 }

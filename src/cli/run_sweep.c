@@ -295,7 +295,7 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
     size_t nkeys;
     char model[32]; /* the schema's name of scene.model */
     gd_case_format_value(c, (size_t)(gd_case_find_key("scene", "model") - gd_case_schema(&nkeys)), model, sizeof model);
-    int panels = mle ? 3 : 2;
+    int panels = mle ? 4 : 3;
     gd_gnuplot_printf(b, "set terminal %s\nset output '.bifurcation%s.tmp'\n", term, ext);
     gd_gnuplot_printf(b, "set multiplot layout %d,1 margins 0.1,0.96,0.07,0.93 spacing 0,0.025 title 'Sweep of %s (%s model, %s)'\n",
         panels, p->parameter[0], model,
@@ -314,14 +314,15 @@ static void script_bifurcation(gd_gnuplot_script *b, const gd_case *c, const gd_
             first = 0;
         }
     gd_gnuplot_printf(b, "\n");
-    const char *what[2] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s^2)"};
-    int col[2] = {4, 3};
-    for (int q = mle ? 0 : 1; q < 2; q++) {
-        if (q == 1)
-            gd_gnuplot_printf(b, "unset xzeroaxis\nset format x '%%g'\nset xlabel '%s%s%s%s'\n", p->parameter[0],
+    /* sweep.csv's columns: mle, rms_accel_mps2, dynamic_load_factor (the larger of the meshes) */
+    const char *what[3] = {"largest Lyapunov exponent (per mesh period)", "RMS mesh acceleration (m/s^2)",
+                           "dynamic load factor (-)"};
+    int col[3] = {4, 3, 15};
+    for (int q = mle ? 0 : 1; q < 3; q++) {
+        gd_gnuplot_printf(b, q == 0 ? "set xzeroaxis lt -1\n" : "unset xzeroaxis\n");
+        if (q == 2)
+            gd_gnuplot_printf(b, "set format x '%%g'\nset xlabel '%s%s%s%s'\n", p->parameter[0],
                 p->unit[0][0] ? " (" : "", p->unit[0], p->unit[0][0] ? ")" : "");
-        else
-            gd_gnuplot_printf(b, "set xzeroaxis lt -1\n");
         gd_gnuplot_printf(b, "unset key\n");
         gd_gnuplot_printf(b, "set ylabel '%s'\nplot ", what[q]);
         first = 1;
@@ -444,6 +445,24 @@ void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *re
     }
 }
 
+/* Where a point of the summary lines lies: " at key = value unit" and, in a map, the second key; its
+ * branch (up, down) unless the points are independent; and whether it is an end of the range
+ * (the largest value found there may lie beyond it). */
+static void print_where(const gd_sweep_plan *p, const gd_sweep_point *pt)
+{
+    printf(" at %s = %.6g %s", p->parameter[0], pt->value[0], p->unit[0]);
+    if (p->naxes > 1)
+        printf(", %s = %.6g %s", p->parameter[1], pt->value[1], p->unit[1]);
+    if (pt->branch != GD_BRANCH_INDEPENDENT)
+        printf(" (%s branch)", gd_sweep_branch_name(pt->branch));
+    int end = 0;
+    for (int a = 0; a < p->naxes; a++)
+        end |= p->npoints[a] > 1 && (pt->idx[a] == 0 || pt->idx[a] == p->npoints[a] - 1);
+    if (end)
+        printf(", an end of the swept range: the largest may lie beyond it");
+    printf("\n");
+}
+
 /* After summary.json: the journal goes; the summary lines. */
 static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir *out)
 {
@@ -463,7 +482,8 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
     char counts[512] = "";
     const char *seen[24];
     int cnt[24], nseen = 0;
-    double rmax = -INFINITY, rmax_at = NAN, lmax = -INFINITY, lmax_at = NAN;
+    double lmax = -INFINITY, lmax_at = NAN;
+    const gd_sweep_point *rmax = NULL, *dmax = NULL;
     for (int i = 0; i < p->nslots; i++) {
         const gd_sweep_point *pt = &o->pts[i];
         failed += pt->status == GD_POINT_FAILED;
@@ -476,8 +496,12 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
         }
         if (k < nseen)
             cnt[k]++;
-        if (pt->status == GD_POINT_DONE && pt->rms_accel_mps2[2] > rmax)
-            rmax = pt->rms_accel_mps2[2], rmax_at = pt->value[0];
+        if (pt->status == GD_POINT_DONE && (!rmax || pt->rms_accel_mps2[2] > rmax->rms_accel_mps2[2]))
+            rmax = pt;
+        double dlf = fmax(pt->dynamic_load_factor[0], pt->dynamic_load_factor[1]);
+        if (pt->status == GD_POINT_DONE && isfinite(dlf) &&
+            (!dmax || dlf > fmax(dmax->dynamic_load_factor[0], dmax->dynamic_load_factor[1])))
+            dmax = pt;
         if (pt->status == GD_POINT_DONE && isfinite(pt->mle_per_period) && pt->mle_per_period > lmax)
             lmax = pt->mle_per_period, lmax_at = pt->value[0];
     }
@@ -496,9 +520,14 @@ static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir
         if (s->size > 1)
             printf(" x %d ranks", s->size);
         printf("\n  motion: %s\n", counts);
-        if (isfinite(rmax))
-            printf("  largest RMS mesh acceleration %.6g m/s^2 at %s = %.6g %s\n", rmax, p->parameter[0], rmax_at,
-                   p->unit[0]);
+        if (rmax) {
+            printf("  largest RMS mesh acceleration %.6g m/s^2", rmax->rms_accel_mps2[2]);
+            print_where(p, rmax);
+        }
+        if (dmax) {
+            printf("  largest dynamic load factor %.4g", fmax(dmax->dynamic_load_factor[0], dmax->dynamic_load_factor[1]));
+            print_where(p, dmax);
+        }
         if (isfinite(lmax))
             printf("  largest Lyapunov exponent %.4g per mesh period at %s = %.6g %s\n", lmax, p->parameter[0],
                    lmax_at, p->unit[0]);

@@ -293,6 +293,72 @@ double ltca_kernel(const ltca_pt_body *j, const ltca_pt_body *k)
     return gd_face_kernel_cells(j->lo, j->hi, k->lo, k->hi, j->z0, j->z1, j->ell, k->ell);
 }
 
+/* A point's initial gap above its half's first contact less the pinion's profile relief there: what
+ * the lead (its relief, the helix slope) and the misalignment leave, plus the geometry of a contact
+ * off the nominal path. */
+static double lead_gap(const gd_ltca *w, const gd_ltca_point *P)
+{
+    double profile, feed;
+    gd_flank_relief(gd_tca_flank(w->t, P->half, 0), P->u1, P->z1, &profile, &feed);
+    return P->gap - w->gstar[P->half] - profile;
+}
+
+/* Corner contact: a point on a tooth's tip edge or on the form circle the mating tip meets, off the
+ * nominal path of contact (its gap above the first contact, the profile relief aside, is above
+ * GD_LTCA_CORNER_GAP); where a contact line ends on a tip edge within the path (a helical line, a spur
+ * pair at the path's end) the gap is the first contact's. */
+static int corner(const gd_ltca *w, const gd_ltca_point *P)
+{
+    return (P->edge & GD_EDGE_TIPS_ROOTS) && lead_gap(w, P) > GD_LTCA_CORNER_GAP;
+}
+
+/* Edge loading at the face ends (docs/ltca.md section 4), and the corner contacts. Each block of
+ * points is one tooth pair's contact line on one half. A loaded face-end point is edge-loaded when
+ * the flanks meet first at that end: its gap (the profile relief aside, lead_gap) is the least of
+ * the line's loaded points and theirs rise from it by more than GD_LTCA_EDGE_MARGIN of the line's
+ * mean elastic deflection, so that the load concentrates on the end that cuts the line off (corner
+ * contacts are left out of the line). The flat gaps of an aligned pair of unmodified flanks (1e-11 m)
+ * raise nothing, whatever the line load does along a helical line; a crowned lead has its least gap
+ * inside the face. edge_ratio: the largest line load of a loaded face end over its line's mean, for
+ * the reader. */
+static void ltca_face_ends(const gd_ltca *w, gd_ltca_position *out)
+{
+    for (int b = 0; b < w->nb; b++) {
+        int lo = w->bstart[b], hi = w->bstart[b + 1];
+        double load = 0, length = 0, defl = 0, gmin = INFINITY, gmax = -INFINITY;
+        int n = 0;
+        for (int i = lo; i < hi; i++) {
+            const gd_ltca_point *P = &w->pts[i];
+            if (!(P->load > 0))
+                continue;
+            load += P->load;
+            length += P->width;
+            if (corner(w, P)) {
+                out->edge_loaded[P->half] |= P->edge & GD_EDGE_TIPS_ROOTS;
+                continue;
+            }
+            double g = lead_gap(w, P);
+            defl += w->z[0] + (w->m > 1 ? P->normal[2] * w->z[1] : 0.0) - P->gap;
+            gmin = fmin(gmin, g);
+            gmax = fmax(gmax, g);
+            n++;
+        }
+        if (!(length > 0))
+            continue;
+        double mean = load * w->cb / length;
+        defl /= n > 0 ? n : 1;
+        for (int i = lo; i < hi; i++) {
+            const gd_ltca_point *P = &w->pts[i];
+            if (!(P->load > 0) || !(P->edge & GD_EDGE_FACE_ENDS) || corner(w, P))
+                continue;
+            out->edge_ratio[P->half] = fmax(out->edge_ratio[P->half], P->line_load / mean);
+            double g = lead_gap(w, P);
+            if (g <= gmin + 1e-3 * defl && gmax - g > GD_LTCA_EDGE_MARGIN * defl)
+                out->edge_loaded[P->half] |= P->edge & GD_EDGE_FACE_ENDS;
+        }
+    }
+}
+
 gd_status ltca_collect(gd_ltca *w, double phi1, double window, gd_error *err)
 {
     w->n = 0;
@@ -518,7 +584,6 @@ GD_API gd_status gd_ltca_solve_at(gd_ltca *w, double phi1, double torque_nm, gd_
             P->line_load = P->load * w->cb / P->width;
             ltca_hertz(w, i, P->line_load, &P->pressure, &P->hertz_half_width);
             out->max_pressure[h] = fmax(out->max_pressure[h], P->pressure);
-            out->edge_loaded[h] |= P->edge;
             if (P->pair != lastpair[h]) {
                 out->pairs_loaded[h]++;
                 lastpair[h] = P->pair;
@@ -526,6 +591,7 @@ GD_API gd_status gd_ltca_solve_at(gd_ltca *w, double phi1, double torque_nm, gd_
         }
     }
     out->balance = fabs(total - fn) / fn;
+    ltca_face_ends(w, out);
     for (int h = 0; h < w->halves; h++) {
         out->geometric[h] = w->gstar[h];
         double nz = npts[h] ? nzsum[h] / npts[h] : 0.0;

@@ -27,6 +27,7 @@ GD_API void gd_ltca_result_free(gd_ltca_result *r)
         free(r->max_pressure[h]);
         free(r->pairs_loaded[h]);
         free(r->edge_loaded[h]);
+        free(r->edge_ratio[h]);
     }
     free(r->points);
     free(r->first);
@@ -354,8 +355,9 @@ static gd_status result_alloc(gd_ltca_result *r, int H, int npos, gd_error *err)
         r->max_pressure[h] = malloc(N * sizeof(double));
         r->pairs_loaded[h] = malloc(N * sizeof(int));
         r->edge_loaded[h] = malloc(N * sizeof(unsigned));
+        r->edge_ratio[h] = malloc(N * sizeof(double));
         ok = r->gte_arcsec[h] && r->lte_half_arcsec[h] && r->load[h] && r->stiffness[h] && r->max_pressure[h] &&
-             r->pairs_loaded[h] && r->edge_loaded[h];
+             r->pairs_loaded[h] && r->edge_loaded[h] && r->edge_ratio[h];
     }
     if (!ok)
         return gd_error_set(err, GD_ERR_NOMEM, "LTCA: out of memory for %d positions", npos);
@@ -389,6 +391,7 @@ static gd_status sweep_positions(gd_ltca *w, double torque_nm, const gd_stop_hoo
             r->max_pressure[h][k] = pos.max_pressure[h];
             r->pairs_loaded[h][k] = pos.pairs_loaded[h];
             r->edge_loaded[h][k] = pos.edge_loaded[h];
+            r->edge_ratio[h][k] = pos.edge_ratio[h];
         }
         r->iterations += pos.iterations;
         r->max_residual = fmax(r->max_residual, pos.residual);
@@ -453,13 +456,15 @@ static void cycle_statistics(gd_ltca_result *r)
             r->load_share_min[h] = fmin(r->load_share_min[h], sh);
             r->load_share_max[h] = fmax(r->load_share_max[h], sh);
             r->pressure_max[h] = fmax(r->pressure_max[h], r->max_pressure[h][k]);
-            r->edge_kinds[h] |= r->edge_loaded[h][k];
-            if (r->edge_loaded[h][k])
-                r->edge_positions[h]++;
+            unsigned el = r->edge_loaded[h][k];
+            r->edge_kinds[h] |= el;
+            r->edge_positions[h] += (el & GD_EDGE_FACE_ENDS) != 0;
+            r->tip_positions[h] += (el & GD_EDGE_TIPS_ROOTS) != 0;
+            r->edge_ratio_max[h] = fmax(r->edge_ratio_max[h], r->edge_ratio[h][k]);
             pairs += (double)r->pairs_loaded[h][k] / npos;
             double edge = 0;
             for (int i = r->first[k]; i < r->first[k + 1]; i++)
-                if (r->points[i].half == h && r->points[i].edge && r->points[i].load > 0)
+                if (r->points[i].half == h && (r->points[i].edge & el) && r->points[i].load > 0)
                     edge += r->points[i].load;
             if (r->load[h][k] > 0)
                 r->edge_load_max[h] = fmax(r->edge_load_max[h], edge / r->load[h][k]);

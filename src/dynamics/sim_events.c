@@ -224,47 +224,92 @@ static double gap_rate_at(double t, void *params)
     return v;
 }
 
+/* The extremum of clearance c in [ta, tb], where its rate changes sign (va its rate at ta), located by
+ * GSL's Brent solver on the rate of the dense output and recorded in s->gaps. */
+static gd_status gap_extremum(gd_sim *s, int c, double ta, double tb, double va, gd_error *err)
+{
+    gd_gap_extrema *g = s->gaps;
+    gap_rate r = {s, c, GD_OK, err, 0.0};
+    gsl_function F = {gap_rate_at, &r};
+    gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+    if (!rs)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gap watch");
+    int rc = gsl_root_fsolver_set(rs, &F, ta, tb), conv = GSL_CONTINUE;
+    for (int it = 0; it < 100 && rc == GSL_SUCCESS && conv == GSL_CONTINUE; it++) {
+        rc = gsl_root_fsolver_iterate(rs);
+        conv = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs),
+                                      1e-13 * s->m.period, 0.0);
+    }
+    double tr = gsl_root_fsolver_root(rs);
+    gsl_root_fsolver_free(rs);
+    if (r.st != GD_OK)
+        return r.st;
+    if (rc != GSL_SUCCESS) /* (after 100 iterations the estimate stands: the coordinate is flat there) */
+        return gd_error_set(err, GD_ERR_GSL, "the gap watch of %s: gsl_root_fsolver_brent: %s", s->m.clear[c].name,
+                            gsl_strerror(rc));
+    gap_rate_at(tr, &r);
+    if (r.st != GD_OK)
+        return r.st;
+    if (g->n[c] == GD_GAP_EXTREMA_MAX) {
+        g->dropped++;
+        return GD_OK;
+    }
+    g->t[c][g->n[c]] = tr;
+    g->x[c][g->n[c]] = r.x;
+    g->kind[c][g->n[c]++] = va >= 0 ? 1 : -1;
+    return GD_OK;
+}
+
+/* Where, as a fraction of the step, the cubic Hermite of the coordinate (values x0, x1, rates d0, d1
+ * times the step) has the extremum of its rate between two interior zeros of it: a pair of extrema
+ * inside the step although the rate has the same sign at both ends (how a pair is born). -1 for
+ * none. */
+static double pair_fraction(double x0, double x1, double d0, double d1)
+{
+    /* p'(u) = A u^2 + B u + C on [0, 1] */
+    double A = 6 * x0 + 3 * d0 - 6 * x1 + 3 * d1, B = -6 * x0 - 4 * d0 + 6 * x1 - 2 * d1, C = d0;
+    if (!(fabs(A) > 0))
+        return -1.0;
+    double disc = B * B - 4 * A * C;
+    if (!(disc > 0))
+        return -1.0;
+    double sq = sqrt(disc), q = -0.5 * (B + (B >= 0 ? sq : -sq)), r1 = q / A, r2 = q != 0 ? C / q : -1.0;
+    if (!(r1 > 0 && r1 < 1 && r2 > 0 && r2 < 1))
+        return -1.0;
+    return -B / (2 * A); /* the vertex of p', between the two zeros */
+}
+
 /* The gap watch over the step [t0, t1] (absolute): each clearance whose rate changes sign inside
  * it has an extremum there, located by GSL's Brent solver on the rate of the dense output (the
  * same values and rates at the step's ends as the grazing watch, with the septic interpolant in
- * between). */
+ * between). Where the rate has the same sign at both ends, a pair of extrema may still lie inside
+ * the step: when the cubic Hermite of the coordinate shows one, and the rate of the dense output
+ * has the other sign at the Hermite rate's extremum, both halves of the step are searched. */
 static gd_status gap_watch(gd_sim *s, double t0, double t1, gd_error *err)
 {
-    gd_gap_extrema *g = s->gaps;
     for (int c = 0; c < s->m.nclear; c++) {
         gap_rate r = {s, c, GD_OK, err, 0.0};
-        double v0 = gap_rate_at(t0, &r), v1 = gap_rate_at(t1, &r);
+        double v0 = gap_rate_at(t0, &r), x0 = r.x, v1 = gap_rate_at(t1, &r), x1 = r.x;
         if (r.st != GD_OK)
             return r.st;
-        if ((v0 >= 0) == (v1 >= 0))
-            continue;
-        gsl_function F = {gap_rate_at, &r};
-        gsl_root_fsolver *rs = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-        if (!rs)
-            return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gap watch");
-        int rc = gsl_root_fsolver_set(rs, &F, t0, t1), conv = GSL_CONTINUE;
-        for (int it = 0; it < 100 && rc == GSL_SUCCESS && conv == GSL_CONTINUE; it++) {
-            rc = gsl_root_fsolver_iterate(rs);
-            conv = gsl_root_test_interval(gsl_root_fsolver_x_lower(rs), gsl_root_fsolver_x_upper(rs),
-                                          1e-13 * s->m.period, 0.0);
+        gd_status st = GD_OK;
+        if ((v0 >= 0) != (v1 >= 0)) {
+            st = gap_extremum(s, c, t0, t1, v0, err);
+        } else {
+            double f = pair_fraction(x0, x1, v0 * (t1 - t0), v1 * (t1 - t0));
+            if (f > 0) {
+                double tm = t0 + f * (t1 - t0), vm = gap_rate_at(tm, &r);
+                if (r.st != GD_OK)
+                    return r.st;
+                if ((vm >= 0) != (v0 >= 0)) {
+                    st = gap_extremum(s, c, t0, tm, v0, err);
+                    if (st == GD_OK)
+                        st = gap_extremum(s, c, tm, t1, vm, err);
+                }
+            }
         }
-        double tr = gsl_root_fsolver_root(rs);
-        gsl_root_fsolver_free(rs);
-        if (r.st != GD_OK)
-            return r.st;
-        if (rc != GSL_SUCCESS) /* (after 100 iterations the estimate stands: the coordinate is flat there) */
-            return gd_error_set(err, GD_ERR_GSL, "the gap watch of %s: gsl_root_fsolver_brent: %s", s->m.clear[c].name,
-                                gsl_strerror(rc));
-        gap_rate_at(tr, &r);
-        if (r.st != GD_OK)
-            return r.st;
-        if (g->n[c] == GD_GAP_EXTREMA_MAX) {
-            g->dropped++;
-            continue;
-        }
-        g->t[c][g->n[c]] = tr;
-        g->x[c][g->n[c]] = r.x;
-        g->kind[c][g->n[c]++] = v0 >= 0 ? 1 : -1;
+        if (st != GD_OK)
+            return st;
     }
     return GD_OK;
 }

@@ -28,6 +28,9 @@ GD_API gd_status gd_sim_period_map(const gd_model *m, const gd_solver_opts *o, c
 {
     if (nper < 1)
         return gd_error_set(err, GD_ERR_INPUT, "a map of %d mesh periods (valid: 1 or more)", nper);
+    if (M && !o->root_finding && m->nclear > 0)
+        return gd_error_set(err, GD_ERR_INPUT, "the monodromy matrix needs root finding (solver.root_finding = on): "
+                            "without located events there is no saltation matrix at a contact change");
     gd_sim *s = NULL;
     gd_status status = sim_from(m, o, y0, M ? m->n : 0, &s, err);
     if (status == GD_OK && M) {

@@ -26,7 +26,8 @@ static void num(FILE *fp, double v)
 static void measure_header(FILE *fp)
 {
     fprintf(fp, ",rms_accel_mps2,rms_accel_L_mps2,rms_accel_R_mps2,lambda_min_L_um,lambda_max_L_um,"
-                "lambda_min_R_um,lambda_max_R_um,lambda_L");
+                "lambda_min_R_um,lambda_max_R_um,lambda_L,dynamic_load_factor,dynamic_load_factor_L,"
+                "dynamic_load_factor_R");
 }
 
 static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_measure *m)
@@ -39,6 +40,9 @@ static void measure_row(FILE *fp, const gd_contin_result *res, const gd_contin_m
     num(fp, res->nmesh > 1 ? m->lambda_min_um[1] : NAN);
     num(fp, res->nmesh > 1 ? m->lambda_max_um[1] : NAN);
     num(fp, m->lambda_poincare);
+    num(fp, res->nmesh > 1 ? fmax(m->dynamic_load_factor[0], m->dynamic_load_factor[1]) : m->dynamic_load_factor[0]);
+    num(fp, m->dynamic_load_factor[0]);
+    num(fp, res->nmesh > 1 ? m->dynamic_load_factor[1] : NAN);
 }
 
 static gd_status write_branch(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
@@ -89,7 +93,7 @@ static gd_status write_bifurcations(gd_run_dir *d, const gd_contin_result *res, 
     measure_header(fp);
     for (int j = 0; j < res->n; j++)
         fprintf(fp, ",%s", res->state_name[j]);
-    fputc('\n', fp);
+    fprintf(fp, ",location\n");
     for (int b = 0; b < res->nbranches; b++) {
         const gd_contin_branch *br = &res->branch[b];
         for (int i = 0; i < br->br.nbif; i++) {
@@ -100,7 +104,7 @@ static gd_status write_bifurcations(gd_run_dir *d, const gd_contin_result *res, 
             measure_row(fp, res, &br->bif_meas[i]);
             for (int j = 0; j < res->n; j++)
                 fprintf(fp, ",%.12g", bf->y[j]);
-            fputc('\n', fp);
+            fprintf(fp, ",%s\n", gd_bif_location_name(bf->location));
         }
     }
     return gd_run_dir_commit(d, fp, err);
@@ -114,8 +118,8 @@ gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_
 
 static const char *end_name(int end)
 {
-    static const char *names[] = {"bound", "budget", "step", "closed", "half-period"};
-    return end >= 0 && end <= GD_END_HALF ? names[end] : "?";
+    static const char *names[] = {"bound", "budget", "step", "closed", "half-period", "period-doubling"};
+    return end >= 0 && end <= GD_END_DOUBLING ? names[end] : "?";
 }
 
 static json_t *branch_json(const gd_contin_result *res, int b)
@@ -133,8 +137,16 @@ static json_t *branch_json(const gd_contin_result *res, int b)
     json_object_set_new(o, "stable_points", json_integer(stable));
     json_object_set_new(o, "first", gd_json_num(gd_contin_value(res, br->br.pt[0].orbit.p)));
     json_object_set_new(o, "last", gd_json_num(gd_contin_value(res, br->br.pt[br->br.npoints - 1].orbit.p)));
-    json_object_set_new(o, "end", json_string(br->at_doubling ? "period-doubling" : end_name(br->br.end)));
+    json_object_set_new(o, "end", json_string(end_name(br->br.end)));
     json_object_set_new(o, "end_reason", json_string(br->end_reason));
+    json_object_set_new(o, "born_at", br->parent >= 0 ? gd_json_num(gd_contin_value(res, br->born_p)) : json_null());
+    json_object_set_new(o, "joins_doubling", br->joins >= 0 ? json_pack("{s:i, s:o}", "branch", br->joins, "value",
+                                                                        gd_json_num(gd_contin_value(res, br->joins_p)))
+                                                            : json_null());
+    json_object_set_new(o, "state_scale", gd_json_num(br->br.y_scale));
+    json_object_set_new(o, "parameter_scale", gd_json_num(br->br.p_scale));
+    json_object_set_new(o, "newton_tol", gd_json_num(br->br.tol));
+    json_object_set_new(o, "locate_tol", gd_json_num(br->br.locate_tol));
     json_object_set_new(o, "corrections", json_integer(br->br.corrections));
     json_object_set_new(o, "newton_iterations", json_integer(br->br.newton_iterations));
     json_t *bifs = json_array();
@@ -148,6 +160,7 @@ static json_t *branch_json(const gd_contin_result *res, int b)
         json_object_set_new(q, "multiplier", json_pack("[o, o]", gd_json_num(bf->mu_re), gd_json_num(bf->mu_im)));
         json_object_set_new(q, "clearance", bf->clearance >= 0 ? json_string(res->clear_name[bf->clearance])
                                                                 : json_null());
+        json_object_set_new(q, "location", json_string(gd_bif_location_name(bf->location)));
         json_array_append_new(bifs, q);
     }
     json_object_set_new(o, "bifurcations", bifs);
@@ -175,6 +188,7 @@ gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_moda
     for (int i = 0; i < res->nnotes; i++)
         json_array_append_new(notes, json_string(res->notes[i]));
     json_object_set_new(r, "notes", notes);
+    json_object_set_new(r, "notes_dropped", json_integer(res->notes_dropped));
     json_object_set_new(r, "corrections", json_integer(res->corrections));
     json_object_set_new(r, "newton_iterations", json_integer(res->newton_iterations));
     json_object_set_new(r, "newton_iterations_per_correction",

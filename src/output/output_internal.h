@@ -13,6 +13,7 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_continuation.h"
+#include "geardyn/gd_basins.h"
 
 /* A file written under a temporary name and renamed into place on commit (gd_run_dir keeps one
  * per open file). */
@@ -104,5 +105,16 @@ gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *
 /* derived.modal: the modes of the case's model at its own values */
 gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_contin_result *res,
                                   gd_error *err);
+
+/* ---- basins ---- */
+/* basins.csv (the picture), attractors.csv, fractions.csv (with a sample), attractor_points.csv and
+ * continuation_orbits.csv (with basins.continuation). */
+gd_status gd_basins_write_tables(gd_run_dir *d, const gd_case *c, const gd_basins_result *res, gd_error *err);
+/* derived.modal: the modes of the case's model at its own values */
+gd_status gd_summary_write_basins(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_basins_result *res,
+                                  gd_error *err);
+/* basins.continuation: the points of a finished continuation of this case's model (in basins.parameter when
+ * there is one). Refusals are GD_ERR_INPUT naming the key. */
+gd_status gd_basins_read_continuation(const gd_case *c, gd_basins_known *k, gd_error *err);
 
 #endif

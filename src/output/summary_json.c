@@ -151,6 +151,8 @@ static json_t *response_results_json(const gd_case *c, const gd_model *m, const 
     json_object_set_new(res, "dte_pp_um", lr(r->dte_pp_um[0], r->dte_pp_um[1]));
     json_object_set_new(res, "mesh_deflection_min_um", lr(r->lambda_min_um[0], r->lambda_min_um[1]));
     json_object_set_new(res, "mesh_deflection_max_um", lr(r->lambda_max_um[0], r->lambda_max_um[1]));
+    json_object_set_new(res, "mesh_force_max_n", lr(r->force_max_n[0], r->force_max_n[1]));
+    json_object_set_new(res, "dynamic_load_factor", lr(r->dynamic_load_factor[0], r->dynamic_load_factor[1]));
     json_object_set_new(res, "motion", json_string(r->motion));
     json_object_set_new(res, "period_n", json_integer(r->period_n));
     json_object_set_new(res, "poincare_distinct", json_integer(r->poincare_distinct));

@@ -144,15 +144,20 @@ static json_t *ltca_results_json(const gd_ltca_result *r)
     json_object_set_new(res, "load_share_difference", gd_json_num(r->halves > 1 ? r->load_share[0] - r->load_share[1] : NAN));
     json_object_set_new(res, "loaded_pairs_mean", gd_json_halves_num(r->pairs_mean, r->halves, 1));
     json_object_set_new(res, "max_contact_pressure_mpa", gd_json_halves_num(r->pressure_max, r->halves, 1e-6));
-    json_t *el = json_object(), *ek = json_object();
-    json_object_set_new(el, "left", json_boolean(r->edge_kinds[0] != 0));
-    json_object_set_new(el, "right", r->halves > 1 ? json_boolean(r->edge_kinds[1] != 0) : json_null());
+    json_t *el = json_object(), *ek = json_object(), *tc = json_object();
+    json_object_set_new(el, "left", json_boolean(r->edge_positions[0] != 0));
+    json_object_set_new(el, "right", r->halves > 1 ? json_boolean(r->edge_positions[1] != 0) : json_null());
+    json_object_set_new(tc, "left", json_boolean(r->tip_positions[0] != 0));
+    json_object_set_new(tc, "right", r->halves > 1 ? json_boolean(r->tip_positions[1] != 0) : json_null());
     json_object_set_new(ek, "left", gd_json_edge_names(r->edge_kinds[0]));
     json_object_set_new(ek, "right", r->halves > 1 ? gd_json_edge_names(r->edge_kinds[1]) : json_null());
     json_object_set_new(res, "edge_loading", el);
     json_object_set_new(res, "edge_kinds", ek);
     json_object_set_new(res, "edge_positions", gd_json_halves_int(r->edge_positions, r->halves));
     json_object_set_new(res, "edge_load_share_max", gd_json_halves_num(r->edge_load_max, r->halves, 1));
+    json_object_set_new(res, "edge_line_load_ratio_max", gd_json_halves_num(r->edge_ratio_max, r->halves, 1));
+    json_object_set_new(res, "tip_contact", tc);
+    json_object_set_new(res, "tip_contact_positions", gd_json_halves_int(r->tip_positions, r->halves));
     if (r->floating)
         json_object_set_new(res, "pinion_axial_shift_um", axial_shift_json(r));
     json_object_set_new(res, "loaded_contact_pattern", loaded_pattern_json(r));

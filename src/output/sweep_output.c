@@ -64,7 +64,7 @@ static size_t unseal(const char *line, size_t len)
 GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t len)
 {
     char body[256];
-    int n = snprintf(body, sizeof body, "GDSWEEP 2 %s %016llx %d %d %ld", GD_VERSION_STRING,
+    int n = snprintf(body, sizeof body, "GDSWEEP 3 %s %016llx %d %d %ld", GD_VERSION_STRING,
                      (unsigned long long)p->fingerprint, p->nslots, p->nresp, p->npoincare);
     snprintf(buf, len, "%s *%08x\n", body, (unsigned)crc32_of(body, (size_t)n));
 }
@@ -82,6 +82,7 @@ GD_API gd_status gd_sweep_record_format(const gd_sweep_plan *p, const gd_sweep_p
             pt->impact_regime[1], pt->impact_regime[2]);
     for (int i = 0; i < 3; i++)
         fprintf(f, " %.17g", pt->rms_accel_mps2[i]);
+    fprintf(f, " %.17g %.17g", pt->dynamic_load_factor[0], pt->dynamic_load_factor[1]);
     fprintf(f, " %.17g %.17g %ld %ld %ld %ld %.17g", pt->mle_per_period, pt->mle_per_s, pt->steps, pt->rhs_evals,
             pt->events, pt->transient_periods, pt->wall_s);
     fprintf(f, " %d", p->n);
@@ -200,6 +201,8 @@ GD_API gd_status gd_sweep_record_parse(const gd_sweep_plan *p, const char *line,
         pt.impact_regime[i] = (int)t_long(&t);
     for (int i = 0; i < 3; i++)
         pt.rms_accel_mps2[i] = t_double(&t);
+    for (int i = 0; i < 2; i++)
+        pt.dynamic_load_factor[i] = t_double(&t);
     pt.mle_per_period = t_double(&t);
     pt.mle_per_s = t_double(&t);
     pt.steps = t_long(&t);
@@ -500,7 +503,8 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
     }
     int map = p->naxes > 1;
     fprintf(sw, "parameter,direction,rms_accel_mps2,mle,motion,impact_regime%s,period_n,poincare_distinct,"
-                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,transient_periods,status,error\n",
+                   "rms_accel_L_mps2,rms_accel_R_mps2,impact_regime_L,impact_regime_R,mle_per_s,transient_periods,"
+                   "dynamic_load_factor,dynamic_load_factor_L,dynamic_load_factor_R,status,error\n",
             map ? ",parameter2" : "");
     fprintf(bf, "parameter,direction%s", map ? ",parameter2" : "");
     for (int r = 0; r < p->nresp; r++)
@@ -530,6 +534,10 @@ gd_status gd_sweep_write_tables(gd_run_dir *d, const gd_sweep_plan *p, const gd_
             fprintf(sw, ",%ld", pt->transient_periods);
         else
             fputc(',', sw);
+        for (int i = -1; i < 2; i++) { /* the larger of the meshes, then each */
+            fputc(',', sw);
+            fmt_num(sw, "%.9g", !done ? NAN : i >= 0 ? pt->dynamic_load_factor[i] : gd_sweep_point_dlf(pt));
+        }
         fprintf(sw, ",%s,", done ? "done" : pt->status == GD_POINT_FAILED ? "failed" : "pending");
         csv_text(sw, pt->error);
         fputc('\n', sw);
@@ -571,6 +579,7 @@ static json_t *axis_json(const gd_case *c, const gd_sweep_plan *p, int a)
 /* The smallest and largest value over the points, and where the largest is. */
 typedef struct extremes {
     double min, max, max_at, max_at2;
+    int max_branch;
 } extremes;
 
 static void extremes_add(extremes *e, double v, const gd_sweep_point *pt)
@@ -581,6 +590,7 @@ static void extremes_add(extremes *e, double v, const gd_sweep_point *pt)
         e->max = v;
         e->max_at = pt->value[0];
         e->max_at2 = pt->value[1];
+        e->max_branch = pt->branch;
     }
 }
 
@@ -590,6 +600,8 @@ static json_t *extremes_json(const extremes *e, int naxes)
     json_object_set_new(o, "min", gd_json_num(e->min));
     json_object_set_new(o, "max", gd_json_num(e->max));
     json_object_set_new(o, "max_at", gd_json_num(e->max_at));
+    json_object_set_new(o, "max_direction", isfinite(e->max) ? json_string(gd_sweep_branch_name(e->max_branch))
+                                                              : json_null());
     if (naxes > 1)
         json_object_set_new(o, "max_at_parameter2", gd_json_num(e->max_at2));
     return o;
@@ -640,7 +652,7 @@ static json_t *failed_json(const gd_sweep_plan *p, const gd_sweep_point *pt)
 typedef struct tally {
     json_t *motion, *impact, *failed;
     long ndone, nfail, npend, steps, rhs, events, positive;
-    extremes rms, mle;
+    extremes rms, mle, dlf;
 } tally;
 
 static void tally_points(const gd_sweep_plan *p, const gd_sweep_point *pts, tally *t)
@@ -649,8 +661,9 @@ static void tally_points(const gd_sweep_plan *p, const gd_sweep_point *pts, tall
     t->impact = json_object();
     t->failed = json_array();
     t->ndone = t->nfail = t->npend = t->steps = t->rhs = t->events = t->positive = 0;
-    t->rms = (extremes){INFINITY, -INFINITY, NAN, NAN};
-    t->mle = (extremes){INFINITY, -INFINITY, NAN, NAN};
+    t->rms = (extremes){INFINITY, -INFINITY, NAN, NAN, 0};
+    t->mle = (extremes){INFINITY, -INFINITY, NAN, NAN, 0};
+    t->dlf = (extremes){INFINITY, -INFINITY, NAN, NAN, 0};
     for (int s = 0; s < p->nslots; s++) {
         const gd_sweep_point *pt = &pts[s];
         t->steps += pt->steps;
@@ -671,6 +684,8 @@ static void tally_points(const gd_sweep_plan *p, const gd_sweep_point *pts, tall
         count_in(t->impact, gd_impact_regime_name(pt->impact_regime[2]));
         double l = pt->mle_per_period;
         extremes_add(&t->rms, pt->rms_accel_mps2[2], pt);
+        if (isfinite(gd_sweep_point_dlf(pt)))
+            extremes_add(&t->dlf, gd_sweep_point_dlf(pt), pt);
         if (isfinite(l)) {
             extremes_add(&t->mle, l, pt);
             t->positive += l > 0;
@@ -729,6 +744,7 @@ static gd_status results_json(const gd_sweep_plan *p, const gd_sweep_point *pts,
     json_object_set_new(res, "motion_counts", t->motion);
     json_object_set_new(res, "impact_regime_counts", t->impact);
     json_object_set_new(res, "rms_accel_mps2", extremes_json(&t->rms, p->naxes));
+    json_object_set_new(res, "dynamic_load_factor", extremes_json(&t->dlf, p->naxes));
     json_t *la = extremes_json(&t->mle, p->naxes);
     json_object_set_new(la, "positive_points", json_integer(t->positive));
     json_object_set_new(res, "mle_per_period", la);

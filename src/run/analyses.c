@@ -61,6 +61,9 @@ static const gd_analysis_type analyses[] = {
     { GD_ANALYSIS_CONTINUATION, "continuation",
       "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_row_continuation_check,
       gd_row_continuation_run, gd_row_continuation_write, gd_row_continuation_summary, gd_row_continuation_free },
+    { GD_ANALYSIS_BASINS, "basins",
+      "the attractors of the stroboscopic map, their basins and fractions, over a parameter", gd_row_basins_check,
+      gd_row_basins_run, gd_row_basins_write, gd_row_basins_summary, gd_row_basins_free },
 };
 
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n)

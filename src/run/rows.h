@@ -26,6 +26,10 @@ GD_ROW_DECLARE(continuation)
 /* continuation's check_case: gd_contin_check_case, and the sweep's point with start = sweep */
 gd_status gd_row_continuation_check(gd_case *c, gd_error *err);
 
+GD_ROW_DECLARE(basins)
+/* basins' check_case: gd_basins_check_case, and the continuation's directory read */
+gd_status gd_row_basins_check(gd_case *c, gd_error *err);
+
 /* The environment's should_stop (the command line's signals) as the stop hook of a computation
  * that has no hook of its own in gd_run_env (TCA, LTCA, the optimisers); none without env. */
 static inline gd_stop_hook gd_row_stop(const gd_run_env *env)

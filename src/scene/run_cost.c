@@ -20,6 +20,10 @@ static double dynamic_points(const gd_case *c)
     case GD_ANALYSIS_SWEEP:
         return (double)c->sweep_points * (c->sweep_parameter2[0] ? c->sweep_points2 : 1) *
                (c->sweep_direction == 2 ? 2 : 1);
+    case GD_ANALYSIS_BASINS: /* every initial state a run: the picture's cells and the sample, at each value */
+        return ((c->bas_picture && !c->bas_parameter[0] ? (double)c->bas_resolution *
+                 (c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution) : 0.0) + c->bas_samples) *
+               (c->bas_parameter[0] ? c->bas_points : 1);
     default: return 0;
     }
 }
@@ -59,6 +63,16 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cos
     if (c->analysis == GD_ANALYSIS_SWEEP) {  /* no time history per point: its Poincare points and a table row */
         window = (rec + 1) * 8.0 * m->n * 4;
         files = cost->points * ((rec + 1) * 40.0 + 400) + 1e6;
+    } else if (c->analysis == GD_ANALYSIS_BASINS) {
+        /* a trajectory ends after about 20 mesh periods (12 on the shipped Kahraman & Singh picture, 22 on
+         * the Duffing samples: docs/basins.md section 9); the tessellation (4 bytes a cell), the picture's
+         * labels and the sample's states; basins.csv 33 bytes a cell, fractions.csv a row per attractor */
+        double ry = c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution, m2 = 1.0 + 2.0 * c->bas_margin;
+        double cells = c->bas_picture && !c->bas_parameter[0] ? (double)c->bas_resolution * ry : 0.0;
+        cost->periods = 20;
+        window = 4.0 * (c->bas_resolution * m2) * (ry * m2) + 4.0 * cells + (8.0 * m->n + 4.0) * c->bas_samples +
+                 16.0 * c->bas_max_periods;
+        files = 33.0 * cells + (c->bas_parameter[0] ? c->bas_points : 1) * 2000.0 + 1e6;
     } else if (cost->points == 0)
         window = files = 0;
     cost->ltca_unknowns = ltca_unknowns(c);
@@ -68,6 +82,12 @@ GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, gd_run_cos
     cost->disk_bytes = files;
     double positions = c->ltca_positions_per_cycle * (c->impact ? 2.0 : 1.0);
     cost->seconds = cost->steps * 0.8e-6 * m->ndof + positions * (2.4e-5 * N + 7.8e-12 * N * N * N);
+    if (c->analysis == GD_ANALYSIS_BASINS && c->model != GD_MODEL_BTA && !(c->method == GD_METHOD_RK4 || c->fixed_step)) {
+        /* the torsional models take about 10 steps per natural period, not bta's 170 (Kahraman & Singh at
+         * Omega 0.65, rtol 1e-8: 15.4 steps per mesh period) */
+        cost->steps = cost->points * cost->periods * fmax(1.0 / c->max_step_fraction, 10.0 / fmax(m->Omega, 1e-300));
+        cost->seconds = cost->steps * 0.8e-6 * m->ndof + positions * (2.4e-5 * N + 7.8e-12 * N * N * N);
+    }
     cost->time_class = cost->seconds < 10 ? "seconds" : cost->seconds < 600 ? "minutes"
                      : cost->seconds < 36000 ? "hours" : "days or more";
 }
@@ -80,7 +100,7 @@ static double slowest_speed(const gd_case *c, const char **key)
     for (int axis = 0; c->analysis == GD_ANALYSIS_SWEEP && axis < 2; axis++)
         if (strcmp(axis ? c->sweep_parameter2 : c->sweep_parameter, "operating.speed_rpm") == 0) {
             double lo = fmin(axis ? c->sweep_from2 : c->sweep_from, axis ? c->sweep_to2 : c->sweep_to);
-            if (lo < n) {
+            if (lo < n || (lo == n && !gd_case_key_given(c, "operating", "speed_rpm"))) { /* the sweep's own speed */
                 n = lo;
                 *key = lo == (axis ? c->sweep_from2 : c->sweep_from) ? (axis ? "from2" : "from")
                                                                       : (axis ? "to2" : "to");
@@ -108,6 +128,16 @@ GD_API gd_status gd_run_cost_check(const gd_case *c, const gd_model *m, const gd
                             "natural frequency %.4g Hz, a run would not end (valid: a mesh frequency of at least "
                             "1e-4 of the natural one: speed_rpm >= %.3g)", w, m->mesh_freq_hz, c->speed_rpm,
                             c->teeth_pinion, m->Omega, m->omega_n / (2 * M_PI), c->speed_rpm * 1e-4 / m->Omega);
+    }
+    if (c->analysis == GD_ANALYSIS_BASINS && (cost->disk_bytes > c->max_bytes || cost->memory_bytes > c->max_bytes)) {
+        int disk = cost->disk_bytes > c->max_bytes;
+        gd_case_key_where(c, "output", "max_bytes", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: output.max_bytes: the basins would %s about %.3g bytes (from "
+                            "basins.resolution = %d, resolution_y = %d, margin = %g, samples = %d, max_periods = %d), "
+                            "above output.max_bytes = %.4g (valid: raise output.max_bytes, or fewer cells or samples)",
+                            w, disk ? "write" : "hold in memory", disk ? cost->disk_bytes : cost->memory_bytes,
+                            c->bas_resolution, c->bas_resolution_y ? c->bas_resolution_y : c->bas_resolution,
+                            c->bas_margin, c->bas_samples, c->bas_max_periods, c->max_bytes);
     }
     if (cost->disk_bytes > c->max_bytes || cost->memory_bytes > c->max_bytes) {
         int disk = cost->disk_bytes > c->max_bytes;

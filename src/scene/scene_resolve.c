@@ -118,6 +118,60 @@ static gd_status resolve_single_pair(gd_case *c, gd_error *err)
     return GD_OK;
 }
 
+/* The blank of each body: bore < hub < rim inner diameter < root diameter, a web thickness with a
+ * rim and none without, a hub length only with a hub (else derived: the body's width). */
+static gd_status resolve_blank(gd_case *c, const gd_geometry *g, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32], k[64];
+    for (int i = 0; i < 2; i++) {
+        const char *body = i == 0 ? "pinion" : "gear";
+        double bore = i == 0 ? c->bore_diameter_pinion_mm : c->bore_diameter_gear_mm;
+        double rim = i == 0 ? c->rim_inner_diameter_pinion_mm : c->rim_inner_diameter_gear_mm;
+        double web = i == 0 ? c->web_thickness_pinion_mm : c->web_thickness_gear_mm;
+        double hub = i == 0 ? c->hub_diameter_pinion_mm : c->hub_diameter_gear_mm;
+        double df = 2e3 * g->rf[i];
+        if (hub > 0 && !(hub > bore && hub < (rim > 0 ? rim : df))) {
+            snprintf(k, sizeof k, "hub_diameter_%s_mm", body);
+            gd_case_key_where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.%s: a hub of %g mm (valid: above the bore %g mm and "
+                                "below the %s %.4g mm)", w, k, hub, bore, rim > 0 ? "rim inner diameter" : "root circle",
+                                rim > 0 ? rim : df);
+        }
+        if (rim > 0 && !(rim > fmax(bore, hub) && rim < df)) {
+            snprintf(k, sizeof k, "rim_inner_diameter_%s_mm", body);
+            gd_case_key_where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_GEOMETRY, "%s: gear.%s: a rim from %g mm (valid: above the %s %g mm and "
+                                "below the root circle %.4g mm)", w, k, rim, hub > 0 ? "hub" : "bore", fmax(bore, hub), df);
+        }
+        snprintf(k, sizeof k, "web_thickness_%s_mm", body);
+        if (rim > 0 && !isfinite(web)) {
+            snprintf(k, sizeof k, "rim_inner_diameter_%s_mm", body);
+            gd_case_key_where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: gear.%s: a rim without gear.web_thickness_%s_mm (valid: give "
+                                "the web's axial thickness with the rim)", w, k, body);
+        }
+        if (rim == 0 && gd_case_key_given(c, "gear", k)) {
+            gd_case_key_where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: gear.%s: a web without a rim (valid: give "
+                                "gear.rim_inner_diameter_%s_mm, where the web meets the rim)", w, k, body);
+        }
+        snprintf(k, sizeof k, "hub_length_%s_mm", body);
+        if (hub == 0 && gd_case_key_given(c, "gear", k)) {
+            gd_case_key_where(c, "gear", k, w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: gear.%s: a hub length without a hub (valid: give "
+                                "gear.hub_diameter_%s_mm too)", w, k, body);
+        }
+        if (hub > 0) {
+            const gd_pair pair = gd_pair_from_case(c);
+            gd_blank b;
+            gd_body_blank(&pair, g, i, &b);
+            gd_case_key_derive(c, "gear", k, i == 0 ? &c->hub_length_pinion_mm : &c->hub_length_gear_mm,
+                               1e3 * b.width);
+        }
+    }
+    return GD_OK;
+}
+
 /* The masses and inertias of the bodies and the equivalent mass, unless given. */
 static void resolve_bodies(gd_case *c, const gd_geometry *g)
 {
@@ -207,6 +261,8 @@ GD_API gd_status gd_scene_resolve(gd_case *c, gd_error *err)
     if (st == GD_OK)
         st = resolve_single_pair(c, err);
     if (st != GD_OK)
+        return st;
+    if ((st = resolve_blank(c, &g, err)) != GD_OK)
         return st;
     resolve_bodies(c, &g);
     return resolve_stiffness(c, &g, err);

@@ -46,18 +46,26 @@ torque_nm = 500
 power_kw = 200" "case.ini:3: operating.power_kw: give torque_nm or power_kw, not both" "conflicting keys"
 check_bad "[gear]
 teeth_pinion = 8
-profile_shift_pinion = 0" "case.ini:2: gear.teeth_pinion: pinion: undercut: z = 8 with profile shift 0 is undercut \\(needs x >= " "impossible geometry: undercut"
+profile_shift_pinion = 0
+[operating]
+speed_rpm = 4000
+torque_nm = 500" "case.ini:2: gear.teeth_pinion: pinion: undercut: z = 8 with profile shift 0 is undercut \\(needs x >= " "impossible geometry: undercut"
 check_bad "[gear]
 teeth_pinion = 12
 helix_angle_deg = 0
-profile_shift_pinion = 1.2" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
+profile_shift_pinion = 1.2
+[operating]
+speed_rpm = 4000
+torque_nm = 500" "case.ini:4: gear.profile_shift_pinion: pinion: pointed tip: normal tip thickness .* \\(reduce profile shift or addendum\\)" "impossible geometry: pointed tip"
 check_bad "[scene]
-analysis = optimise" "case.ini:2: scene.analysis: unknown choice 'optimise' \\(valid: one of response,sweep,tca,ltca,optimize,compare-optimizers,work-precision,continuation\\)" "unknown analysis"
+analysis = optimise" "case.ini:2: scene.analysis: unknown choice 'optimise' \\(valid: one of response,sweep,tca,ltca,optimize,compare-optimizers,work-precision,continuation,basins\\)" "unknown analysis"
 # [optimize] (docs/optimisation.md)
 check_bad "[scene]
 analysis = compare-optimizers
 [optimize]
-optimizers = alo, gn_direct, ln_bobyqa" "case.ini:4: optimize.optimizers: unknown optimiser 'gn_direct' \\(valid: alo, gn_direct_l, .*random\\)" "optimize: unknown optimiser"
+optimizers = alo, gn_direct, ln_bobyqa
+[operating]
+torque_nm = 500" "case.ini:4: optimize.optimizers: unknown optimiser 'gn_direct' \\(valid: alo, gn_direct_l, .*random\\)" "optimize: unknown optimiser"
 check_bad "[scene]
 analysis = optimize
 [optimize]
@@ -71,29 +79,42 @@ check_bad "[scene]
 analysis = optimize
 [optimize]
 tip_relief_length_min_mm = 5
-tip_relief_length_max_mm = 3" "case.ini:5: optimize.tip_relief_length_max_mm: the bounds of tip_relief_length_mm are \\[5, 3\\] \\(valid: the lower bound below the upper\\)" "optimize: bounds in the wrong order"
+tip_relief_length_max_mm = 3
+[operating]
+torque_nm = 500" "case.ini:5: optimize.tip_relief_length_max_mm: the bounds of tip_relief_length_mm are \\[5, 3\\] \\(valid: the lower bound below the upper\\)" "optimize: bounds in the wrong order"
 check_bad "[scene]
 analysis = optimize
 [optimize]
-lead_unmodified_length_max_mm = 45" "case.ini:4: optimize.lead_unmodified_length_max_mm: the box holds a modification that does not fit on the pinion .*modification.lead_unmodified_length_mm: 45 mm is longer than the pinion face of one half 40 mm" "optimize: a box larger than the flank"
+lead_unmodified_length_max_mm = 45
+[operating]
+torque_nm = 500" "case.ini:4: optimize.lead_unmodified_length_max_mm: the box holds a modification that does not fit on the pinion .*modification.lead_unmodified_length_mm: 45 mm is longer than the pinion face of one half 40 mm" "optimize: a box larger than the flank"
 check_bad "[scene]
 analysis = optimize
 [optimize]
 population = 30
-budget_evals = 50" "case.ini:5: optimize.budget_evals: a budget of 50 evaluations for ALO with 30 ants \\(valid: at least two populations, 60\\)" "optimize: budget below two ALO populations"
+budget_evals = 50
+[operating]
+torque_nm = 500" "case.ini:5: optimize.budget_evals: a budget of 50 evaluations for ALO with 30 ants \\(valid: at least two populations, 60\\)" "optimize: budget below two ALO populations"
 check_bad "[scene]
 analysis = optimize
 [optimize]
 iterations = 10
-budget_evals = 500" "case.ini:5: optimize.budget_evals: give iterations or budget_evals, not both" "optimize: iterations and budget"
+budget_evals = 500
+[operating]
+torque_nm = 500" "case.ini:5: optimize.budget_evals: give iterations or budget_evals, not both" "optimize: iterations and budget"
 check_bad "[scene]
 analysis = optimize
 [optimize]
-shift = 0.3" "case.ini:4: optimize.shift: 0.3 for gear-lte \\(valid: 0; " "optimize: shift of the gear problem"
+shift = 0.3
+[operating]
+torque_nm = 500" "case.ini:4: optimize.shift: 0.3 for gear-lte \\(valid: 0; " "optimize: shift of the gear problem"
 check_bad "[scene]
 model = torsional
 [output]
-response_variable = y1L" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, lambda_R, dte_L, dte_R, q\\)" "response variable of another model"
+response_variable = y1L
+[operating]
+speed_rpm = 4000
+torque_nm = 500" "case.ini:4: output.response_variable: 'y1L' is not a variable of this model \\(valid: lambda_L, lambda_R, dte_L, dte_R, q\\)" "response variable of another model"
 check_bad "[run]
 transient_periods = 500
 transient_max_periods = 400" "case.ini:3: run.transient_max_periods: 400 is below run.transient_periods = 500 \\(valid: 0, or at least transient_periods\\)" "adaptive transient shorter than the fixed one"

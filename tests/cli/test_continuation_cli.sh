@@ -7,7 +7,9 @@
 # its closed form 1/sqrt(1.99)); its stable points have |mu_max| < 1; the period-2 branch switched to at
 # the period doubling starts there, period-doubles again where the library test finds it, and the
 # period-4 branch born there runs to the bound; each switched branch is followed back to its doubling;
-# max_branches bounds their number; end_reason says the bound in rpm. Bad [continuation] settings are
+# max_branches bounds their number; end_reason says the bound in rpm; to Omega 2, each curve of doubled
+# orbits joining two period doublings is followed once and names both; a user's spur pair runs on the
+# default settings. Bad [continuation] settings are
 # refused with exit 2 naming file, line and key, and
 # nothing is written. TAP output.
 . "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
@@ -19,6 +21,13 @@ grep -Eq "^locate_tol = 1e-08 +; file line" "$work/check.txt"; ok $? "check list
 
 out="$work/ks"
 "$G" run "$KS" --out "$out" --quiet > "$work/run.txt" 2>&1; ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
+# the progress on stderr: one line per count of branches followed, never the same line twice (both
+# directions from the middle, then the switchings at the doublings, which add two branches)
+"$G" run "$KS" --out "$work/ks-progress" --set output.plots=off --set continuation.direction=both \
+    --set continuation.max_branches=4 > /dev/null 2> "$work/progress.txt"
+grep "continuation:" "$work/progress.txt" > "$work/progress2.txt"
+[ -s "$work/progress2.txt" ] && [ -z "$(sort "$work/progress2.txt" | uniq -d)" ] && tail -1 "$work/progress2.txt" | grep -q "4 of 4 branches"
+ok $? "progress: each line once, ending at 4 of 4 branches ($(tr '\n' ' ' < "$work/progress2.txt"))"
 for f in branch.csv bifurcations.csv summary.json; do
     [ -s "$out/$f" ]; ok $? "wrote $f"
 done
@@ -110,7 +119,7 @@ refuse continuation.ds=0.2 "continuation.ds: 0.2 is outside \[ds_min, ds_max\]"
 refuse continuation.period=17 "continuation.period"
 refuse continuation.direction=sideways "continuation.direction"
 refuse continuation.start_value=9000 "continuation.start_value: 9000 is outside the bounds"
-refuse continuation.newton_tol=1e-12 "continuation.newton_tol: 1e-12 is below solver.rtol = 1e-10"
+refuse continuation.newton_tol=1e-13 "continuation.newton_tol: 1e-13 is below solver.atol = 1e-12, the absolute error"
 refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: no /nonexistent/sweep.csv" \
     continuation.response=rms_accel
 refuse continuation.overlay_sweep=/nonexistent "continuation.overlay_sweep: a sweep has no deflection extremes"
@@ -129,25 +138,99 @@ assert len(s["branches"]) == 3, len(s["branches"])
 assert any("max_branches" in n for n in s["notes"]), s["notes"]
 ' "$work/mb"
 ok $? "max_branches = 3: three branches, a note for the doubling not switched"
-# to Omega 2: the period-2 branch is a closed curve between the period doublings at Omega 1.2267 and
-# 1.9527 (it comes back to its first orbit shifted by one mesh period, passed the other way), and the
-# period-4 branch from its doubling runs back onto the doubled period-2 orbit: every branch ends by
-# its geometry or a bound, none by the point budget
+# to Omega 2: the period-2 orbits form one curve between the period doublings of the period-1 branch at
+# Omega 1.2267 and 1.9527 (branch 1 from the first to the second, branch 2 back to the first): it is followed
+# once, and the doubling at 1.9527 is named as the one it joins, not switched at again; the same for the
+# period-4 curve between the doublings of branch 1 at 1.4004 and 1.8462, and the period-8 one between those
+# of the period-4 branch; no branch ends on the point budget
 "$G" run "$KS" --out "$work/o2" --quiet --set continuation.to=6366.1977236758 --set continuation.max_points=400 \
     --set continuation.max_branches=7 --set output.plots=off > "$work/o2.txt" 2>&1
 ok $? "continuation to Omega 2 runs"
 python3 -c '
 import json, sys
-b = json.load(open(sys.argv[1] + "/summary.json"))["results"]["branches"]
+s = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+b = s["branches"]
+scale = 3183.0988618379
 ends = [x["end"] for x in b]
 assert "budget" not in ends, ends
-c = [x for x in b if x["end"] == "closed"]
-assert len(c) >= 1 and c[0]["period_n"] == 2 and "shifted by 1 mesh period" in c[0]["end_reason"], c[:1]
-h = [x for x in b if x["end"] == "half-period"]
-assert len(h) == 1 and h[0]["period_n"] == 4, ends
-print("# ends:", ends)
+def born(x): return x["born_at"] / scale if x["born_at"] is not None else None
+def joins(x): return (x["joins_doubling"]["branch"], x["joins_doubling"]["value"] / scale) if x["joins_doubling"] else None
+p2 = [x for x in b if x["period_n"] == 2]
+assert len(p2) == 2, [(x["period_n"], born(x)) for x in b]
+assert all(abs(born(x) - 1.2267006347) < 1e-8 for x in p2), [born(x) for x in p2]
+j = sorted(joins(x) for x in p2)
+assert j[0][0] == 0 and abs(j[0][1] - 1.2267006347) < 1e-8 and j[1][0] == 0 and abs(j[1][1] - 1.9526847) < 1e-6, j
+p4 = [x for x in b if x["period_n"] == 4]
+assert len(p4) == 2 and all(joins(x) and joins(x)[0] == p2[0]["branch"] for x in p4), [joins(x) for x in p4]
+assert sorted(round(joins(x)[1], 4) for x in p4) == [1.4004, 1.8462], [joins(x) for x in p4]
+import csv
+rows = list(csv.DictReader(open(sys.argv[1] + "/bifurcations.csv")))
+for x in b:
+    if joins(x):
+        near = [r for r in rows if int(r["branch"]) == x["branch"] and r["kind"] == "fold" and
+                abs(float(r["continuation_p"]) - joins(x)[1]) < 1e-3]
+        assert not near, ("a fold listed at the doubling a branch joins", x["branch"], near)
+print("# branches:", [(x["period_n"], x["direction"], born(x), joins(x), x["end"]) for x in b])
 ' "$work/o2"
-ok $? "to Omega 2: the period-2 branch closes (shifted by one period), the period-4 one reaches the doubled period-2 orbit, no branch ends on the budget"
+ok $? "to Omega 2: each curve of doubled orbits followed once, from the doubling it was born at to the one it joins (both named), none on the budget"
+# a user's spur pair (the NASA Glenn spur rig pair: 28/28 teeth, module 3.175 mm, 20 deg, face 6.35 mm, 72 N m,
+# backlash 127 um) in rpm, with every [continuation] setting at its default: it runs, from the attractor at
+# 9000 rpm both ways to the bounds 2000 and 16000 rpm, through the folds of its softening resonance (where a
+# brute-force sweep of the same pair jumps: up between 9700 and 9800 rpm, down between 6500 and 6400), and no
+# branch uses up its point budget
+cat > "$work/spur.ini" <<'INI'
+[scene]
+analysis = continuation
+model = torsional
+[gear]
+arrangement = spur
+normal_module_mm = 3.175
+teeth_pinion = 28
+teeth_gear = 28
+helix_angle_deg = 0
+normal_pressure_angle_deg = 20
+face_width_pinion_mm = 6.35
+face_width_gear_mm = 6.35
+[operating]
+speed_rpm = 5000
+torque_nm = 72
+[clearance]
+backlash_um = 127
+[continuation]
+parameter = operating.speed_rpm
+from = 2000
+to = 16000
+INI
+"$G" run "$work/spur.ini" --out "$work/spur" --quiet --set output.plots=off > "$work/spur.txt" 2>&1
+ok $? "a spur pair in rpm with the default [continuation] settings runs ($(head -c 300 "$work/spur.txt"))"
+python3 -c '
+import csv, json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+b = s["branches"]
+f = [float(x["speed_rpm"]) for x in csv.DictReader(open(sys.argv[1] + "/bifurcations.csv")) if x["kind"] == "fold"]
+assert [x["end"] for x in b] == ["bound", "bound"], [(x["end"], x["points"]) for x in b]
+assert sorted([b[0]["last"], b[1]["last"]]) == [2000, 16000], [x["last"] for x in b]
+assert max(x["points"] for x in b) < 400, [x["points"] for x in b]
+assert any(9700 < v < 9800 for v in f) and any(6400 < v < 6500 for v in f), f
+print("# points", [x["points"] for x in b], "folds", f)
+' "$work/spur"
+ok $? "the spur pair: both branches to their bounds within the budget, the folds where a sweep jumps"
+# the same pair in the bta model: down from 9000 rpm the branch passes a branch point onto a closed curve
+# of orbits (between folds at 6322 and 8436 rpm) that does not hold its first point; it ends once round
+# that curve, back at a point it passed, not on the point budget
+sed 's/^model = torsional/model = bta/' "$work/spur.ini" > "$work/spur-bta.ini"
+"$G" run "$work/spur-bta.ini" --out "$work/spur-bta" --quiet --set output.plots=off \
+    --set continuation.branch_switching=off > "$work/spur-bta.txt" 2>&1
+ok $? "the spur pair in the bta model runs on the default settings ($(head -c 300 "$work/spur-bta.txt"))"
+python3 -c '
+import json, sys
+b = json.load(open(sys.argv[1] + "/summary.json"))["results"]["branches"]
+assert b[0]["end"] == "closed" and "back at the orbit of its point" in b[0]["end_reason"], b[0]["end_reason"]
+assert b[0]["points"] < 400 and b[1]["end"] == "bound", [(x["end"], x["points"]) for x in b]
+print("#", b[0]["points"], "points:", b[0]["end_reason"])
+' "$work/spur-bta"
+ok $? "the spur pair in the bta model: the branch down ends once round the closed curve it entered, within the budget"
+
 # in the file: the message names its line
 sed 's/^to = .*/to = 1000/' "$KS" > "$work/bad.ini"
 line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)

@@ -52,6 +52,15 @@ PY
 dd=$(cmp_start "$work/from-sweep" "$work/from-attr" 1e-8); ok $? "the sweep's point at Omega 1 starts the attractor's orbit (|dy| $dd < 1e-8)"
 grep -q "\"start_sweep_point\": \"sweep $work/sweep, up, speed_rpm = 3183.098862\"" "$work/from-sweep/summary.json"
 ok $? "summary.json names the sweep's point"
+python3 - "$work" <<'PY'
+import csv, sys
+o = list(csv.DictReader(open(sys.argv[1] + "/from-sweep/branch.csv")))[0]
+s = [r for r in csv.DictReader(open(sys.argv[1] + "/sweep/sweep.csv")) if r["parameter"] == "3183.09886184" and r["direction"] == "up"][0]
+a, b = float(o["dynamic_load_factor"]), float(s["dynamic_load_factor"])
+print(a, b)
+sys.exit(0 if a > 1 and abs(a - b) < 1e-6 * a else 1)
+PY
+ok $? "the orbit's dynamic load factor is the sweep point's there (same samples of one period)"
 
 # the hysteresis interval: Omega 0.65, up on the orbit without impacts, down on the impacting one
 V=2069.01426019

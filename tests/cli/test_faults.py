@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Fault injection without privileges: a full disk (RLIMIT_FSIZE, SIGXFSZ ignored) at several
-sizes and SIGINT / SIGTERM / SIGHUP at several moments of a response run, a sweep and an
-optimisation, and SIGKILL then --resume for the sweep. Early signals in the long computations that
+sizes and SIGINT / SIGTERM / SIGHUP at several moments of a response run, a sweep, an
+optimisation and basins, and SIGKILL then --resume for the sweep. Early signals in the long computations that
 are not integrations (an optimisation, a large LTCA and TCA, an optimiser comparison, a
-continuation of one branch, a work-precision study): each ends the process with 128 + the signal within half the run's own
+continuation of one branch, a work-precision study, basins): each ends the process with 128 + the signal within half the run's own
 length, measured in the same test, leaving nothing in a new directory or the previous result. Each trial runs into a directory that holds
 a previous result and proves that afterwards it holds either that result unchanged (sha256 of
 every file) or a whole new set (exactly the files its summary.json lists, every picture whole),
@@ -244,6 +244,13 @@ def main():
                 ['optimize.runs=2', 'optimize.budget_evals=40', 'optimize.population=10',
                  'solver.ltca_positions_per_cycle=8'])
     early_stops('continuation', tmp, 'cases/continuation/paper-speed.ini', [])  # one branch: a stop between points
+    # basins: a small picture and sample (a full disk, signals), then a larger one stopped early (the stop hook
+    # is asked every mesh period of every trajectory)
+    b = os.path.join(tmp, 'basins')
+    bargs = [os.path.join(SRC, 'cases', 'basins', 'ks-hysteresis.ini'), '--out', b, '--quiet', '--set',
+             'basins.resolution=30', '--set', 'basins.samples=200']
+    series('basins', b, bargs, [300, 60000], [0.5])
+    early_stops('basins', tmp, 'cases/basins/ks-hysteresis.ini', ['basins.resolution=80', 'basins.samples=500'])
     early_stops('work-precision', tmp, 'cases/accuracy/period1-7000rpm.ini',
                 ['workprecision.families=rk4,erk4,erk8', 'workprecision.rtol_tightest=1e-7',
                  'workprecision.rk4_steps_max=64', 'workprecision.order_steps_max=64', 'workprecision.repeats=1',

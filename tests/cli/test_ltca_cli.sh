@@ -47,6 +47,36 @@ PY
     head -1 "$out/pair_loads.csv" | grep -q "^position,phi1_deg,half,pair,load_n,share_of_half"; ok $? "$case: pair_loads.csv header"
 done
 
+# edge loading (docs/ltca.md section 5) both ways: the aligned pairs of unmodified flanks (the guide's
+# spur pair, whose line load is uniform to its face ends, and the paper's herringbone without its
+# misalignment, whose helical lines carry more near the root, wherever they end) raise none; the
+# spur pair with its gear axis tilted 10' across the plane loads one face end at every position, at
+# several times its line's mean
+edge_case() { # name case extra-set...
+    local name=$1 case=$2; shift 2
+    "$G" run "$SRC/cases/$case.ini" --out "$work/edge-$name" --quiet --set scene.analysis=ltca --set output.plots=off \
+        --set solver.ltca_positions_per_cycle=16 "$@" > /dev/null 2>&1
+}
+edge_case spur guide/spur
+edge_case spur-tilted guide/spur --set misalignment.axis_cross_plane_arcmin=10
+edge_case paper-aligned paper/ltca-unmodified --set misalignment.axis_in_plane_arcmin=0 \
+    --set misalignment.axis_cross_plane_arcmin=0 --set misalignment.centre_distance_error_mm=0
+python3 - "$work" <<'PY'
+import json, sys
+r = {n: json.load(open("%s/edge-%s/summary.json" % (sys.argv[1], n)))["results"]
+     for n in ("spur", "spur-tilted", "paper-aligned")}
+for n in ("spur", "paper-aligned"):
+    assert r[n]["edge_loading"]["left"] is False and r[n]["edge_positions"]["left"] == 0, (n, r[n]["edge_loading"])
+    assert not [k for k in r[n]["edge_kinds"]["left"] if "end" in k], r[n]["edge_kinds"]
+assert abs(r["spur"]["edge_line_load_ratio_max"]["left"] - 1) < 1e-3, r["spur"]["edge_line_load_ratio_max"]
+t = r["spur-tilted"]
+assert t["edge_loading"]["left"] is True and t["edge_positions"]["left"] == 16, t["edge_positions"]
+assert t["edge_line_load_ratio_max"]["left"] > 2 and "pinion_end_hi" in t["edge_kinds"]["left"], t
+print(r["spur"]["edge_line_load_ratio_max"]["left"], r["spur"]["tip_contact_positions"]["left"],
+      t["edge_line_load_ratio_max"]["left"])
+PY
+ok $? "edge loading: none on the aligned unmodified pairs, at every position of the tilted spur pair"
+
 # one key switches a case to the unmodified pair: modification.apply = off must give exactly the
 # LTCA of the case without a [modification] section (every amount resolves to 0)
 out="$work/apply-off"

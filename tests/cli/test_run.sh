@@ -13,6 +13,34 @@ grep -Eq "^pinion_mass_kg = [0-9.]+ kg +; derived" "$work/check.txt"; ok $? "che
 grep -Eq "^poisson_ratio = 0.3 +; default" "$work/check.txt"; ok $? "check shows defaults"
 grep -Eq "^contact_ratio_transverse = 1\.[0-9]+" "$work/check.txt"; ok $? "check shows derived geometry"
 
+# the operating point has no default; every other physical value taken from a default is listed by
+# check and at the start of a run, as far as the analysis and model use it
+printf '[gear]\narrangement = spur\nhelix_angle_deg = 0\nface_width_pinion_mm = 20\nface_width_gear_mm = 20\n[scene]\nmodel = torsional\n' > "$work/bare.ini"
+"$G" check "$work/bare.ini" > /dev/null 2> "$work/bare.err"; rc=$?
+[ $rc -eq 2 ] && grep -q "bare.ini: operating.speed_rpm: missing" "$work/bare.err"
+ok $? "a response without its operating point exits 2 naming the key ($(cat "$work/bare.err"))"
+"$G" check "$work/bare.ini" --set scene.analysis=tca > /dev/null 2>&1; ok $? "a TCA needs no operating point"
+printf '[operating]\nspeed_rpm = 3000\ntorque_nm = 100\n' >> "$work/bare.ini"
+"$G" check "$work/bare.ini" > "$work/bare.txt"; ok $? "with it, check exits 0"
+assumed() { sed -n '/^# physical values the case does not give/,/^$/p' "$1"; }
+assumed "$work/bare.txt" | grep -q "\[clearance\] backlash_um = 10\b" &&
+    assumed "$work/bare.txt" | grep -q "ste_amplitude_um = 10\b" && assumed "$work/bare.txt" | grep -q "mesh_damping_ratio = 0.02" &&
+    assumed "$work/bare.txt" | grep -q "density_kg_per_m3 = 7850" && assumed "$work/bare.txt" | grep -q "bore_diameter_pinion_mm = 0"
+ok $? "check lists the backlash, STE, damping and bodies taken from defaults"
+! assumed "$work/bare.txt" | grep -Eq "bearing_clearance_um|radial_stiffness|helix_angle_deg|groove_width|speed_rpm|torque_nm|modification|misalignment"
+ok $? "and nothing the torsional spur response does not use ($(assumed "$work/bare.txt" | tr '\n' ' '))"
+"$G" check "$work/bare.ini" --set scene.model=bta --set clearance.backlash_um=10 > "$work/bare2.txt"
+assumed "$work/bare2.txt" | grep -q "bearing_clearance_um = 5" && ! assumed "$work/bare2.txt" | grep -q "backlash_um"
+ok $? "with bta the bearing clearance joins the list; a key given leaves it"
+"$G" check "$work/bare.ini" --set scene.analysis=ltca > "$work/bare3.txt"
+assumed "$work/bare3.txt" | grep -q "\[misalignment\] axis_in_plane_arcmin = 0" && ! assumed "$work/bare3.txt" | grep -q "backlash_um"
+ok $? "an LTCA lists the alignment it assumes, not the backlash"
+"$G" run "$work/bare.ini" --out "$work/bare" --set run.transient_periods=20 --set run.record_periods=10 > /dev/null 2> "$work/bare.run"
+head -1 "$work/bare.run" | grep -q "^geardyn: physical values the case does not give" && grep -q "^geardyn:   \[clearance\] backlash_um = 10" "$work/bare.run"
+ok $? "a run lists them on its first lines ($(head -3 "$work/bare.run" | tr '\n' ' '))"
+"$G" run "$work/bare.ini" --out "$work/bare" --quiet --set run.transient_periods=20 --set run.record_periods=10 > /dev/null 2> "$work/bare.q"
+[ ! -s "$work/bare.q" ]; ok $? "--quiet prints none of it"
+
 out="$work/run"
 "$G" run "$SRC/cases/quickstart.ini" --out "$out" --quiet --set scene.model=torsional-lr \
     --set run.transient_periods=50 --set run.record_periods=20 > "$work/run.txt" 2>&1

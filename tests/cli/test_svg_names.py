@@ -18,7 +18,7 @@ import sys
 import tempfile
 
 # case, --set assignments: every kind of picture (response, the local analysis's four panels,
-# sweep, tca, ltca, optimize with optimum/ and optimum-tca/, compare, work-precision, continuation)
+# sweep, tca, ltca, optimize with optimum/ and optimum-tca/, compare, work-precision, continuation, basins)
 CASES = [
     ('cases/quickstart.ini', ['run.transient_periods=50', 'run.record_periods=20']),
     ('cases/paper/local-speed-7000rpm.ini', ['run.transient_periods=100', 'run.transient_max_periods=100',
@@ -36,6 +36,8 @@ CASES = [
                                             'workprecision.repeats=1', 'workprecision.horizon_periods=5',
                                             'run.transient_periods=50', 'run.record_periods=10']),
     ('cases/continuation/kahraman-singh.ini', []),
+    ('cases/basins/ks-hysteresis.ini', ['basins.resolution=30', 'basins.samples=200']),
+    ('cases/basins/ks-fractions.ini', ['basins.points=3', 'basins.samples=100']),
 ]
 
 TITLE = re.compile(r'<title>(.*?)</title>', re.S)

@@ -91,6 +91,33 @@ ok $? "independent sweeps with 1 and 2 threads exit 0"
 same_files "$work/ind1" "$work/ind2"; ok $? "independent points: 1 and 2 threads give identical files"
 cut -d, -f2 "$work/ind1/sweep.csv" | tail -n +2 | sort -u | grep -qx independent; ok $? "independent points are marked 'independent'"
 
+# the summary lines: the largest RMS acceleration and dynamic load factor, each with its branch, and
+# whether it lies on an end of the range; the same in summary.json; the factor in sweep.csv per mesh
+for range in "1591.5 4774.6" "1591.5 2300"; do
+    set -- $range
+    "$G" run "$case" --out "$work/sum-$1-$2" --threads 2 --set sweep.points=12 --set sweep.to=$2 > "$work/sum.txt" 2> /dev/null
+    python3 - "$work/sum-$1-$2" "$work/sum.txt" <<'PY'
+import csv, json, re, sys
+d, out = sys.argv[1], open(sys.argv[2]).read()
+s = json.load(open(d + "/summary.json"))["results"]
+rows = [r for r in csv.DictReader(open(d + "/sweep.csv")) if r["status"] == "done"]
+values = sorted(float(r["parameter"]) for r in rows)
+for key, col, label in (("rms_accel_mps2", "rms_accel_mps2", "largest RMS mesh acceleration"),
+                        ("dynamic_load_factor", "dynamic_load_factor", "largest dynamic load factor")):
+    best = max(rows, key=lambda r: float(r[col]))
+    e = s[key]
+    assert abs(e["max"] - float(best[col])) <= 1e-8 * e["max"] and e["max_direction"] == best["direction"], (e, best)
+    line = [l for l in out.splitlines() if l.strip().startswith(label)][0]
+    assert "(%s branch)" % best["direction"] in line, line
+    at_end = float(best["parameter"]) in (values[0], values[-1])
+    assert ("an end of the swept range" in line) == at_end, (line, at_end)
+    print(line.strip())
+for r in rows:
+    assert float(r["dynamic_load_factor"]) == max(float(r["dynamic_load_factor_L"]), float(r["dynamic_load_factor_R"])) >= 0
+PY
+    ok $? "summary lines name the branch and the end of the range ($1 to $2 rpm): $(grep largest "$work/sum.txt" | tr '\n' ' ')"
+done
+
 # kill -9 mid-sweep, a torn line, --resume
 k="$work/kill"
 "$G" run "$case" --out "$k" --quiet --threads 2 > /dev/null 2>&1 &
@@ -151,10 +178,12 @@ else
     ok 0 "pictures (skipped: gnuplot not installed)"
 fi
 
-# bad [sweep] input: exit 2, one message naming file:line, nothing written
+# bad [sweep] input: exit 2, one message naming file:line, nothing written; the case without its
+# [sweep] gives the speed that the sweep gave (a sweep of another key needs it)
+ks_base() { ks_case | sed '/^\[sweep\]/,$d'; printf '[operating]\nspeed_rpm = 3000\n'; }
 check_bad() { # sweep-section-lines expected-regex name
     local f="$work/bad.ini" out="$work/bad-$n"
-    ks_case | sed '/^\[sweep\]/,$d' > "$f"
+    ks_base > "$f"
     printf '[sweep]\n%s\n' "$1" >> "$f"
     "$G" run "$f" --out "$out" --quiet > "$work/stdout" 2> "$work/stderr"
     local rc=$? msg; msg=$(cat "$work/stderr")
@@ -162,7 +191,7 @@ check_bad() { # sweep-section-lines expected-regex name
     echo "$msg" | grep -Eq -- "$2"; ok $? "$3: message matches /$2/ (got: $msg)"
     [ "$(echo "$msg" | wc -l)" -eq 1 ] && [ ! -e "$out" ]; ok $? "$3: one line, nothing written"
 }
-L=$(($(ks_case | sed '/^\[sweep\]/,$d' | wc -l) + 1)) # line of [sweep]
+L=$(($(ks_base | wc -l) + 1)) # line of [sweep]
 check_bad "parameter = operating.speed_rmp
 from = 100
 to = 200" "bad.ini:$((L + 1)): sweep.parameter: 'operating.speed_rmp' is not a numeric case key: .*did you mean operating.speed_rpm" "unknown swept key"

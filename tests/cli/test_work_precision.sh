@@ -9,6 +9,9 @@ cat > "$work/wp.ini" <<'INI'
 analysis = work-precision
 model = torsional
 title = test grid
+[operating]
+speed_rpm = 4000
+torque_nm = 500
 [run]
 transient_periods = 300
 record_periods = 20
