@@ -1,4 +1,4 @@
-/* The Harris map of a spur pair with profile relief only (docs/optimisation.md section 13.2): the
+/* The Harris map of a spur pair with profile relief only (docs/optimisation.md section 13): the
  * torque T* at which the LTE amplitude is smallest grows with the relief amount C_a, in proportion
  * to the tooth-pair deflection.
  *

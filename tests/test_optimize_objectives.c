@@ -1,4 +1,4 @@
-/* The gear objectives of docs/optimisation.md section 13: gear-lte-range is the largest or the
+/* The gear objectives of docs/optimisation.md sections 12 and 13: gear-lte-range is the largest or the
  * duty-weighted mean of the LTE amplitudes at its torques, each the LTE of gd_opt_gear_lte_pp, and
  * the gear problem records each torque's; the robust variant is the 0.9 quantile over its Monte
  * Carlo sample, recomputed here from the sample's deviations; the sample is a function of the seed

@@ -116,7 +116,7 @@ typedef struct gd_opt_settings {
     int keep_history;        /* record every evaluation (f_history, best_history) */
     gd_stop_hook stop;       /* asked before each objective evaluation (from the threads evaluating a
                                 population); stopped: GD_ERR_INTERRUPTED, no result */
-    /* two objectives (docs/optimisation.md section 12) */
+    /* two objectives (docs/optimisation.md section 13) */
     int archive;             /* MOALO: the archive's size (0: 100) */
     int scalar_algorithm;    /* weighted-sum, eps-constraint: the NLopt method of every subproblem (0: gn_crs2_lm) */
     int scalar_grid;         /* weighted-sum, eps-constraint: subproblems (0: 8) */

@@ -134,8 +134,11 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
         }
     }
     if (o->gear) {
-        printf("  LTE peak-to-peak at %g N m: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec "
-               "(%+.1f %% against the unmodified pair, %+.1f %% against the case's)\n", c->torque_nm,
+        char at[64] = ""; /* the objective over several torques: the LTE table's own */
+        if (o->objective != GD_OBJ_GEAR_LTE)
+            snprintf(at, sizeof at, " at %g N m", c->torque_nm);
+        printf("  LTE peak-to-peak%s: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec "
+               "(%+.1f %% against the unmodified pair, %+.1f %% against the case's)\n", at,
                o->lte[0].lte_pp_arcsec,
                o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
                100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec,

@@ -1,7 +1,7 @@
 /* The multi-objective Ant Lion Optimizer (S. Mirjalili, P. Jangir, S. Saremi, Multi-objective ant
  * lion optimizer: a multi-objective optimization algorithm for solving engineering problems,
  * Applied Intelligence 46 (2017) 79-95), two objectives, in the normalised box [-1, 1]^d
- * (docs/optimisation.md section 12):
+ * (docs/optimisation.md section 13):
  *
  *   N antlions uniform in the box, evaluated; the archive holds their non-dominated points.
  *   The crowding of an archive member: the members within r_k = (max_k - min_k) / 20 of it in

@@ -1,6 +1,6 @@
 /* Two objectives: the non-dominated set of the points evaluated so far, kept sorted by the first
  * objective, and the hypervolume it dominates within a reference point (docs/optimisation.md
- * section 12). Minimisation throughout: a dominates b when a1 <= b1 and a2 <= b2, one strictly. */
+ * section 13). Minimisation throughout: a dominates b when a1 <= b1 and a2 <= b2, one strictly. */
 #include "opt_internal.h"
 
 #include <math.h>

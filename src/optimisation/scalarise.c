@@ -1,5 +1,5 @@
 /* Two objectives by a single-objective NLopt method: a grid of scalarised subproblems, each run on
- * its share of the budget (docs/optimisation.md section 12). The objectives are divided by the
+ * its share of the budget (docs/optimisation.md section 13). The objectives are divided by the
  * reference point r of the hypervolume (every objective here is >= 0, so 0 is the ideal point and r
  * the nadir the designer accepts): a = f1 / r1, b = f2 / r2.
  *
