@@ -128,7 +128,7 @@ if wanted basins-kahraman-singh-fractions; then
     fig basins-kahraman-singh-fractions basins-ks-fractions/fractions.png
 fi
 if wanted basins-paper-4750rpm; then
-    run basins-paper cases/basins/paper-4750rpm.ini --set basins.resolution=40 --set basins.samples=400 --threads 2
+    run basins-paper cases/basins/paper-4750rpm.ini --threads 2
     fig basins-paper-4750rpm basins-paper/basins.png
 fi
 

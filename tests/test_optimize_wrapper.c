@@ -107,6 +107,8 @@ int main(void)
     /* ---- every optimiser: the count, the budget, the best point ---------------------------------- */
     const long budget = 1237;
     for (int alg = 0; alg < GD_OPT_NALGORITHMS; alg++) {
+        if (!(gd_opt_algorithm_objectives(alg) & 1))
+            continue; /* two objectives only: test_optimize_moalo.c */
         counting c;
         memset(&c, 0, sizeof c);
         double lo4[4] = {-5, -5, -5, -5}, hi4[4] = {5, 5, 5, 5};
@@ -155,6 +157,8 @@ int main(void)
      * (0.25, 0.25, 1/3, 1/3, 1/3), f* = 2 (0.65)^2 + 3 (0.9 - 1/3)^2 ---------------------------- */
     const double fstar = 2 * 0.65 * 0.65 + 3 * pow(0.9 - 1.0 / 3.0, 2);
     for (int alg = 0; alg < GD_OPT_NALGORITHMS; alg++) {
+        if (!(gd_opt_algorithm_objectives(alg) & 1))
+            continue; /* two objectives only: test_optimize_moalo.c */
         counting c;
         memset(&c, 0, sizeof c);
         gd_opt_problem q = p;
@@ -182,6 +186,8 @@ int main(void)
 
     /* ---- errors of the objective stop every optimiser with their message; NaN is refused --------- */
     for (int alg = 0; alg < GD_OPT_NALGORITHMS; alg++) {
+        if (!(gd_opt_algorithm_objectives(alg) & 1))
+            continue; /* two objectives only: test_optimize_moalo.c */
         counting c;
         memset(&c, 0, sizeof c);
         gd_opt_problem q = p;

@@ -195,6 +195,13 @@ typedef struct gd_case {
     double opt_tip_amount_min_um, opt_tip_amount_max_um, opt_tip_length_min_mm, opt_tip_length_max_mm;
     double opt_lead_amount_min_um, opt_lead_amount_max_um, opt_lead_length_min_mm, opt_lead_length_max_mm;
     double opt_lead_centre_min_mm, opt_lead_centre_max_mm, opt_helix_slope_min_um, opt_helix_slope_max_um;
+    /* the objectives over load and speed (docs/optimisation.md section 12) */
+    double opt_torques_nm[GD_MAX_HARMONICS]; int n_opt_torques;
+    double opt_torque_weights[GD_MAX_HARMONICS]; int n_opt_torque_weights;
+    int opt_lte_range_combine, opt_dynamic_combine; /* gd_opt_combine */
+    double opt_speed_from_rpm, opt_speed_to_rpm, opt_dynamic_sweep_step_rpm;
+    int opt_dynamic_response; /* gd_dyn_measure */
+    int opt_dynamic_model;    /* gd_model_kind of the dynamics in the loop */
 
     /* [continuation] (analysis = continuation; gd_continuation.h, docs/continuation.md) */
     char cont_parameter[256]; /* "section.key" */

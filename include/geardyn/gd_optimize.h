@@ -45,11 +45,15 @@ typedef enum gd_opt_algorithm {
     GD_OPT_LN_COBYLA = 6,
     GD_OPT_LN_SBPLX = 7,
     GD_OPT_RANDOM = 8,
-    GD_OPT_NALGORITHMS = 9
+    GD_OPT_MOALO = 9,          /* two objectives: the multi-objective Ant Lion Optimizer */
+    GD_OPT_WEIGHTED_SUM = 10,  /* two objectives: NLopt (scalar_algorithm) on weighted sums over a grid */
+    GD_OPT_EPS_CONSTRAINT = 11, /* two objectives: NLopt (scalar_algorithm) on epsilon-constraints over a grid */
+    GD_OPT_NALGORITHMS = 12
 } gd_opt_algorithm;
 
 /* "alo", "gn_direct_l", "gn_crs2_lm", "gn_isres", "gn_esch", "ln_bobyqa", "ln_cobyla", "ln_sbplx",
- * "random" (the [optimize] algorithm / optimizers names); NULL for an unknown index. */
+ * "random", "moalo", "weighted-sum", "eps-constraint" (the [optimize] algorithm / optimizers names);
+ * NULL for an unknown index. */
 GD_API const char *gd_opt_algorithm_name(int algorithm);
 /* Index of a name, or -1. */
 GD_API int gd_opt_algorithm_parse(const char *name);
@@ -57,13 +61,20 @@ GD_API int gd_opt_algorithm_parse(const char *name);
 GD_API int gd_opt_algorithm_is_local(int algorithm);
 /* Algorithms whose run does not depend on the seed (GN_DIRECT_L). */
 GD_API int gd_opt_algorithm_is_deterministic(int algorithm);
+/* What an algorithm can minimise: 1 a single objective (ALO, NLopt, random search), 2 a pair of
+ * objectives (MOALO, the scalarisations, random search), 3 both (random search). */
+GD_API int gd_opt_algorithm_objectives(int algorithm);
 
 /* ---- problems ---------------------------------------------------------------------------------- */
 
 /* The objective at y (a feasible point in the problem's units). `state` is the caller's own: one
  * per concurrent caller (see state_alloc), so an objective with a workspace is thread-safe. */
 typedef gd_status (*gd_opt_eval_fn)(void *state, const double *y, double *f, gd_error *err);
+/* The objectives at y: f[0 .. nobj - 1], then naux numbers the wrapper records with every evaluation
+ * (what the evaluation did: the dynamic objective's choice of continuation or sweep). */
+typedef gd_status (*gd_opt_evalv_fn)(void *state, const double *y, double *f, gd_error *err);
 
+#define GD_OPT_MAX_AUX 40
 typedef struct gd_opt_problem {
     int dim;
     const double *lower, *upper;  /* dim each, lower < upper */
@@ -72,7 +83,10 @@ typedef struct gd_opt_problem {
     const double *b;              /* ncons */
     const double *anchor;         /* strictly feasible point of the repair (NULL: the centre of the box if it is
                                      strictly feasible, else the lower corner) */
-    gd_opt_eval_fn eval;
+    gd_opt_eval_fn eval;          /* one objective (NULL when evalv is given) */
+    gd_opt_evalv_fn evalv;        /* nobj objectives and naux recorded numbers (used when not NULL) */
+    int nobj;                     /* evalv: 1 or 2 objectives */
+    int naux;                     /* evalv: recorded numbers after the objectives, 0 .. GD_OPT_MAX_AUX */
     /* one state per concurrent caller (NULL: every caller is given `user`) */
     gd_status (*state_alloc)(void *user, void **state, gd_error *err);
     void (*state_free)(void *state);
@@ -102,6 +116,15 @@ typedef struct gd_opt_settings {
     int keep_history;        /* record every evaluation (f_history, best_history) */
     gd_stop_hook stop;       /* asked before each objective evaluation (from the threads evaluating a
                                 population); stopped: GD_ERR_INTERRUPTED, no result */
+    /* two objectives (docs/optimisation.md section 13) */
+    int archive;             /* MOALO: the archive's size (0: 100) */
+    int scalar_algorithm;    /* weighted-sum, eps-constraint: the NLopt method of every subproblem (0: gn_crs2_lm) */
+    int scalar_grid;         /* weighted-sum, eps-constraint: subproblems (0: 8) */
+    double hv_ref[2];        /* the hypervolume's reference point; the scalarisations divide each objective by it
+                                (every objective here is >= 0) */
+    /* after every evaluation recorded (serially, in evaluation order): the evaluations so far */
+    void (*progress)(void *user, long evaluations, long budget);
+    void *progress_user;
 } gd_opt_settings;
 
 GD_API void gd_opt_settings_default(gd_opt_settings *s);
@@ -119,6 +142,18 @@ typedef struct gd_opt_result {
     int nlopt_code;          /* NLopt: the last return code (0 otherwise) */
     int roundoff_stops;      /* NLopt: starts that ended with NLOPT_ROUNDOFF_LIMITED (a local start ends; not an error) */
     double wall_s;
+    /* evalv problems */
+    int nobj, naux;
+    double *fv_history;      /* keep_history: evaluations x (nobj + naux), every evaluation's values */
+    /* two objectives: the non-dominated points of every evaluation (f1 increasing), the hypervolume they
+     * dominate within the reference point after each evaluation, and MOALO's own archive */
+    int nfront;
+    double *front_y, *front_f; /* nfront x dim, nfront x 2 */
+    double hv;               /* of the front */
+    double *hv_history;      /* keep_history: after evaluation k + 1 */
+    int narchive;            /* MOALO: its archive at the end (its front), else 0 */
+    double *archive_y, *archive_f;
+    double archive_hv;
 } gd_opt_result;
 
 /* Minimise p's objective with s.algorithm within s.budget evaluations. The result is the best
@@ -134,6 +169,15 @@ GD_API double gd_alo_ratio(int t, int T);
 /* ALO: iterations T for a budget (N + N T <= budget), 0 if the budget is below 2 N. */
 GD_API int gd_alo_iterations(long budget, int population);
 
+/* ---- two objectives -------------------------------------------------------------------------- */
+
+/* The hypervolume (area) dominated by the n points f (n x 2, any order, dominated points allowed)
+ * within the reference point ref: the area of the union of the boxes [f_i, ref]. */
+GD_API double gd_opt_hypervolume(const double *f, int n, const double ref[2]);
+/* The non-dominated points of f (n x 2): their indices into idx, ordered by f1 increasing (f2 then
+ * decreasing); equal points count once (the first). Returns their count. */
+GD_API int gd_opt_nondominated(const double *f, int n, int *idx);
+
 /* ---- objectives ------------------------------------------------------------------------------- */
 
 typedef enum gd_opt_objective {
@@ -143,12 +187,21 @@ typedef enum gd_opt_objective {
     GD_OBJ_RASTRIGIN = 3,
     GD_OBJ_ACKLEY = 4,
     GD_OBJ_GRIEWANK = 5,
-    GD_OBJ_NOBJECTIVES = 6
+    GD_OBJ_ZDT1 = 6,         /* two objectives (Zitzler, Deb & Thiele 2000): convex front f2 = 1 - sqrt(f1) */
+    GD_OBJ_ZDT2 = 7,         /* two objectives: concave front f2 = 1 - f1^2 */
+    GD_OBJ_GEAR_LTE_RANGE = 8, /* LTE amplitude over a list of torques: the largest or the duty-weighted mean */
+    GD_OBJ_GEAR_DYNAMIC = 9, /* the dynamic response over a speed range at each torque of a list (analysis layer) */
+    GD_OBJ_NOBJECTIVES = 10
 } gd_opt_objective;
 
-/* "gear-lte", "sphere", "rosenbrock", "rastrigin", "ackley", "griewank"; NULL for an unknown index. */
+/* "gear-lte", "sphere", "rosenbrock", "rastrigin", "ackley", "griewank", "zdt1", "zdt2",
+ * "gear-lte-range", "gear-dynamic"; NULL for an unknown index. */
 GD_API const char *gd_opt_objective_name(int objective);
 GD_API int gd_opt_objective_parse(const char *name);
+/* The gear objectives (gear-lte, gear-lte-range, gear-dynamic). */
+GD_API int gd_opt_objective_is_gear(int objective);
+/* Objectives of a test problem: 2 for ZDT1 and ZDT2, 1 for the others. */
+GD_API int gd_opt_objective_count(int objective);
 
 /* Test functions (GD_OBJ_SPHERE .. GD_OBJ_GRIEWANK), each with its minimum 0 at x = o (o NULL:
  * the origin; Rosenbrock is translated so that its minimiser is o rather than (1, ..., 1)):
@@ -161,9 +214,16 @@ GD_API int gd_opt_objective_parse(const char *name);
 GD_API double gd_opt_function_value(int objective, int dim, const double *o, const double *x);
 GD_API void gd_opt_function_domain(int objective, double *lower, double *upper);
 
+/* ZDT1 and ZDT2 on [0, 1]^d (d >= 2): f1 = x1, g = 1 + 9 sum_{i>1} x_i / (d - 1), f2 = g (1 - sqrt(f1/g))
+ * (ZDT1) or g (1 - (f1/g)^2) (ZDT2); the Pareto set is x_i = 0 for i > 1. */
+GD_API void gd_opt_zdt_value(int objective, int dim, const double *x, double f[2]);
+/* The hypervolume of the true front of ZDT1 (ref^2 - 1/3 for a square reference (r, r), r >= 1) and ZDT2
+ * (r^2 - 2/3), for any reference point with both coordinates >= 1. */
+GD_API double gd_opt_zdt_front_hv(int objective, const double ref[2]);
+
 /* An instance of a test function in dimension dim: with shift s in [0, 0.9] its minimiser o is
  * drawn uniformly from s times the box (GSL MT19937 seeded with instance_seed; s = 0: the
- * origin). */
+ * origin). ZDT1 and ZDT2 take no shift. */
 typedef struct gd_opt_testfn {
     int objective, dim;
     double *lower, *upper, *optimum;
@@ -226,6 +286,82 @@ GD_API void gd_opt_gear_table2(gd_pair *pair);
 GD_API int gd_opt_gear_is_paper_pair(const gd_pair *pair);
 /* The case's [optimize] bounds of the variables v, in their order. */
 GD_API void gd_opt_gear_bounds(const gd_case *c, const gd_opt_gear_vars *v, double *lower, double *upper);
+
+/* ---- what the gear problem minimises (docs/optimisation.md sections 1 and 13) ---- */
+
+/* A gear objective: a number of the modified pair, smaller is better, and naux numbers it records
+ * with every evaluation. One state per concurrent caller (state_alloc NULL: every caller gets user).
+ * The optimisers see it through the gear problem, which applies the candidate's variables to the
+ * pair first: an objective computed in a higher layer (the dynamic response, gd_dynobj.h) is such
+ * a callback, so the optimisers never see what it computes. */
+typedef struct gd_opt_gear_objective {
+    char name[32];           /* "gear-lte", "gear-lte-range", "gear-dynamic" */
+    int naux;                /* recorded numbers, 0 .. GD_OPT_MAX_AUX / 2 - 1 */
+    gd_status (*eval)(void *state, const gd_pair *pair, double *f, double *aux, gd_error *err);
+    gd_status (*state_alloc)(void *user, void **state, gd_error *err);
+    void (*state_free)(void *state);
+    void *user;
+} gd_opt_gear_objective;
+
+/* How the values at several torques (or over a speed range at each) become one: the largest (worst
+ * case) or the duty-weighted mean sum w_k f_k / sum w_k. */
+typedef enum gd_opt_combine { GD_OPT_COMBINE_MAX = 0, GD_OPT_COMBINE_MEAN = 1 } gd_opt_combine;
+#define GD_OPT_MAX_TORQUES 8
+
+/* gear-lte-range: the LTE amplitude (gd_opt_gear_lte_pp) at each torque, combined (gear-lte is the
+ * case of one torque). Records the amplitude at each torque (naux = n). */
+typedef struct gd_opt_lte_range {
+    gd_ltca_settings set;    /* its torque_nm is replaced by each of torques_nm */
+    int n;
+    double torques_nm[GD_OPT_MAX_TORQUES];
+    double weights[GD_OPT_MAX_TORQUES]; /* >= 0, a positive sum (mean) */
+    int combine;             /* gd_opt_combine */
+} gd_opt_lte_range;
+/* The objective (user = r, which must outlive it). */
+GD_API void gd_opt_lte_range_objective(const gd_opt_lte_range *r, gd_opt_gear_objective *o);
+/* Its value for a pair, and the amplitude at each torque (each: n values, may be NULL). */
+GD_API gd_status gd_opt_lte_range_value(const gd_opt_lte_range *r, const gd_pair *pair, double *f, double *each,
+                                        gd_error *err);
+/* The combination of n values v with weights w. */
+GD_API double gd_opt_combine_values(int combine, int n, const double *v, const double *w);
+
+/* The robust variant of every objective: its quantile (0.9 by default) over a Monte Carlo sample of
+ * the pair's misalignment and of manufacturing deviations of the design variables, drawn once from
+ * GSL's MT19937 seeded with seed (serially, before any evaluation: the same sample for every
+ * candidate, whatever the threads). Sample s deviates the two tilt components of the axis (arcmin),
+ * the centre distance (mm) and each design variable (amounts y1, y3, y5, y6, y9 by amount_um,
+ * lengths y2, y4, y7, y8 by length_mm), each uniform in [-range, range]; a deviated variable is
+ * kept in the box of [optimize] and the linear constraints are repaired, so every deviated flank
+ * fits. Records, per objective, its value at the nominal flank before its own numbers. */
+typedef struct gd_opt_robust {
+    int samples;             /* 0: not robust */
+    unsigned long seed;
+    double quantile;         /* 0 < q <= 1 (0: 0.9) */
+    double tilt_arcmin, centre_distance_mm, amount_um, length_mm;
+} gd_opt_robust;
+
+/* The objectives of the gear problem (one or two) and its robust variant (NULL or samples = 0:
+ * none); without a call, the LTE amplitude at the LTCA settings' torque. The objectives' users must
+ * outlive g. */
+GD_API gd_status gd_opt_gear_set_objectives(gd_opt_gear *g, int nobj, const gd_opt_gear_objective *obj,
+                                            const gd_opt_robust *robust, gd_error *err);
+/* The Monte Carlo sample: its size, and dev (samples x (3 + the variables' count): in-plane and
+ * cross-plane tilt deviations in arcmin, the centre-distance deviation in mm, then each variable's
+ * deviation in its unit). */
+GD_API int gd_opt_gear_robust_sample(const gd_opt_gear *g, const double **dev);
+/* The objectives (and recorded numbers) of the pair with the variables x, as an optimiser's
+ * evaluation computes them (for the reports of a run: the unmodified flank, the case's, an optimum):
+ * f[nobj], aux[gd_opt_gear_naux]. */
+GD_API gd_status gd_opt_gear_value(const gd_opt_gear *g, const double *x, double *f, double *aux, gd_error *err);
+/* The same for any flank: the pair's own modification (and misalignment, deviated by the robust
+ * sample as the candidates'). */
+GD_API gd_status gd_opt_gear_value_of_pair(const gd_opt_gear *g, const gd_pair *pair, double *f, double *aux,
+                                           gd_error *err);
+GD_API int gd_opt_gear_nobj(const gd_opt_gear *g);
+GD_API int gd_opt_gear_naux(const gd_opt_gear *g);
+/* The pair the gear problem modifies (the case's, with its own modification in the variables not
+ * optimised). */
+GD_API const gd_pair *gd_opt_gear_pair(const gd_opt_gear *g);
 
 
 /* ---- comparison -------------------------------------------------------------------------------- */
@@ -315,6 +451,14 @@ typedef struct gd_opt_optimize_summary {
     const double *table2;         /* gear-lte, the paper's pair: Table 2's value of each variable (else NULL) */
     const char *const *no_effect; /* gear-lte: per variable NULL, or why it has no effect at the optimum */
     double active_profile_mm;
+    /* gear-lte-range, gear-dynamic: the objective's unit; its value for the unmodified flank, the
+     * case's own and the optimum (0, 1, 2), with its recorded numbers (gd_opt_gear_naux: per torque,
+     * the LTE amplitude, or the dynamic peak and how its curve was found, gd_dyn_method) */
+    const char *objective_unit;
+    int ntorques;
+    const double *torques_nm;
+    double objective_of[3];
+    const double *aux_of[3];
     /* the best run's progress: the relative fall of its best value over the last tenth of its
      * evaluations; converged = that fall is at most 1e-3 */
     double last_tenth_improvement;
@@ -361,6 +505,13 @@ typedef struct gd_optimize_outcome {
     double wall_s;           /* the runs' wall time summed */
     gd_opt_gear *gear_problem;
     gd_opt_testfn tf;
+    /* gear-lte-range, gear-dynamic: the objective's own state (freed by user_free) and its value
+     * (with its recorded numbers) for the unmodified flank, the case's own and the optimum */
+    gd_opt_lte_range lte_range;
+    void *user;
+    void (*user_free)(void *user);
+    double objective_of[3];
+    double aux_of[3][GD_OPT_MAX_AUX];
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */

@@ -29,5 +29,6 @@
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_excitation.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_dynobj.h"
 
 #endif

@@ -285,6 +285,17 @@ GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
         return "ignored: excitation.ste = ltca";
     if (!c->impact && IS("excitation", "impact_exponent"))
         return "ignored: excitation.impact = off";
+    if (strcmp(k->section, "optimize") == 0) { /* the keys of the objectives over load and speed */
+        int dyn = strcmp(c->opt_objective, "gear-dynamic") == 0, range = strcmp(c->opt_objective, "gear-lte-range") == 0;
+        if (!dyn && !range && (IS("optimize", "torques_nm") || IS("optimize", "torque_weights")))
+            return "ignored: only optimize.objective = gear-lte-range or gear-dynamic uses it";
+        if (!range && IS("optimize", "lte_range_combine"))
+            return "ignored: only optimize.objective = gear-lte-range uses it";
+        if (!dyn && (IS("optimize", "dynamic_combine") || IS("optimize", "speed_from_rpm") ||
+                     IS("optimize", "speed_to_rpm") || IS("optimize", "dynamic_response") ||
+                     IS("optimize", "dynamic_model") || IS("optimize", "dynamic_sweep_step_rpm")))
+            return "ignored: only optimize.objective = gear-dynamic uses it";
+    }
 #undef IS
     return NULL;
 }

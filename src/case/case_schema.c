@@ -504,6 +504,27 @@ static const gd_keyspec schema[] = {
       "the face))"),
     D("optimize", "helix_slope_max_um", "um", opt_helix_slope_max_um, -1000, 1000, 0, 0, NAN,
       "gear-lte: upper bound of y9 (derived: the static deflection plus twice the misalignment's mismatch)"),
+    L("optimize", "torques_nm", "N m", opt_torques_nm, n_opt_torques, 0, 1e7,
+      "gear-lte-range, gear-dynamic: the pinion torques, comma-separated, at most 8 (derived: operating.torque_nm)"),
+    L("optimize", "torque_weights", "", opt_torque_weights, n_opt_torque_weights, 0, 1e30,
+      "gear-lte-range, gear-dynamic: the duty weights of the torques, one each, a positive sum (derived: equal)"),
+    E("optimize", "lte_range_combine", opt_lte_range_combine, 0, "max|mean",
+      "gear-lte-range: the largest LTE amplitude of the torques, or their duty-weighted mean"),
+    E("optimize", "dynamic_combine", opt_dynamic_combine, 0, "max|mean",
+      "gear-dynamic: the torques' peaks combined: the largest (worst case), or their duty-weighted mean"),
+    D("optimize", "speed_from_rpm", "rpm", opt_speed_from_rpm, 0, 100000, 1, 0, NAN,
+      "gear-dynamic: the lowest speed of the range (derived: 0.8 operating.speed_rpm)"),
+    D("optimize", "speed_to_rpm", "rpm", opt_speed_to_rpm, 0, 100000, 1, 0, NAN,
+      "gear-dynamic: the highest speed of the range, above speed_from_rpm (derived: 1.2 operating.speed_rpm)"),
+    E("optimize", "dynamic_response", opt_dynamic_response, 0, "rms_accel|dte_pp",
+      "gear-dynamic: the response of the stable motion: the RMS mesh acceleration (combined), or the peak-to-peak "
+      "dynamic transmission error (the larger of the halves')"),
+    E("optimize", "dynamic_model", opt_dynamic_model, 1, "torsional|torsional-lr|bta",
+      "gear-dynamic: the model of the dynamics in the loop (derived: torsional-lr for a herringbone, torsional for "
+      "a single pair)"),
+    D("optimize", "dynamic_sweep_step_rpm", "rpm", opt_dynamic_sweep_step_rpm, 0, 100000, 1, 0, NAN,
+      "gear-dynamic: the spacing of the short sweep where the period-1 orbit is unstable or lost (derived: a "
+      "fiftieth of the speed range); its points run run.transient_periods and run.record_periods"),
 };
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)

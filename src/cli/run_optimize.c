@@ -18,25 +18,62 @@ void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const g
                r->wall_s);
 }
 
+/* The unit of the objective: the LTE's arcsec, the dynamic response's m/s^2 or um, none. */
+static const char *unit_of(const gd_case *c, const gd_optimize_outcome *o)
+{
+    if (o->objective == GD_OBJ_GEAR_DYNAMIC)
+        return c->opt_dynamic_response == GD_DYN_DTE_PP ? "um" : "m/s^2";
+    return o->gear ? "arcsec" : "";
+}
+
+/* Two LTE curves equal to round-off (the case's modification is the unmodified flank or the
+ * published one). */
+static int same_lte(const gd_ltca_result *a, const gd_ltca_result *b)
+{
+    double d = 0, sc = 0;
+    for (int k = 0; k < a->npos && k < b->npos; k++) {
+        d = fmax(d, fabs(a->lte_arcsec[k] - b->lte_arcsec[k]));
+        sc = fmax(sc, fabs(b->lte_arcsec[k]));
+    }
+    return a->npos == b->npos && d <= 1e-9 * fmax(sc, 1e-300);
+}
+
 static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outcome *o, gd_error *err)
 {
     static const char *names[NPICS] = {"convergence", "lte"};
     int npics = o->gear ? 2 : 1;
     const gd_opt_result *b = &o->res[o->best];
     gd_gnuplot_script s = {0};
-    char obj[160];
-    if (o->gear)
+    char obj[160], ylabel[200];
+    const char *unit = strcmp(unit_of(c, o), "um") == 0      ? "µm"
+                       : strcmp(unit_of(c, o), "m/s^2") == 0 ? "m/s²"
+                                                             : unit_of(c, o);
+    int worst_dyn = c->opt_dynamic_combine == GD_OPT_COMBINE_MAX, worst_lte = c->opt_lte_range_combine == GD_OPT_COMBINE_MAX;
+    if (o->objective == GD_OBJ_GEAR_DYNAMIC) {
+        snprintf(obj, sizeof obj, "the dynamic response of the gear pair");
+        snprintf(ylabel, sizeof ylabel, "%s %s over the speeds and torques (%s)",
+                 worst_dyn ? "largest" : "duty-weighted mean of the largest",
+                 c->opt_dynamic_response == GD_DYN_DTE_PP ? "peak-to-peak dynamic transmission error"
+                                                          : "RMS mesh acceleration", unit);
+    } else if (o->objective == GD_OBJ_GEAR_LTE_RANGE) {
+        snprintf(obj, sizeof obj, "the LTE of the gear pair over its torques");
+        snprintf(ylabel, sizeof ylabel, "%s peak-to-peak loaded transmission error over the torques (arcsec)",
+                 worst_lte ? "largest" : "duty-weighted mean");
+    } else if (o->gear) {
         snprintf(obj, sizeof obj, "the LTE of the gear pair");
-    else
+        snprintf(ylabel, sizeof ylabel, "peak-to-peak loaded transmission error (arcsec)");
+    } else {
         cli_gp_text(gd_opt_objective_name(o->objective), obj, sizeof obj);
+        snprintf(ylabel, sizeof ylabel, "objective value f (-)");
+    }
     for (int fi = 0; fi < 2; fi++) {
         cli_fig_begin(&s, fi, 1250, 720, "convergence");
-        gd_gnuplot_printf(&s, "set title '%s on %s (%d variable%s): %d run%s of %ld evaluations, best %.6g%s'\n",
+        gd_gnuplot_printf(&s, "set title '%s on %s (%d variable%s): %d run%s of %ld evaluations, best %.6g%s%s'\n",
                           cli_optimizer_words(c->opt_algorithm), obj, o->dim, o->dim == 1 ? "" : "s", o->runs,
-                          o->runs == 1 ? "" : "s", b->evaluations, b->f, o->gear ? " arcsec" : "");
+                          o->runs == 1 ? "" : "s", b->evaluations, b->f, unit[0] ? " " : "", unit);
         gd_gnuplot_printf(&s, "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\n"
                               "set format y '%%g'\nset key outside right top vertical Left reverse\n",
-                          o->gear ? "peak-to-peak loaded transmission error (arcsec)" : "objective value f (-)");
+                          ylabel);
         gd_gnuplot_printf(&s, "plot 'convergence.csv' using (column('run') == %d ? column('evaluation') : 1/0):"
                               "(column('f') > 0 ? column('f') : 1/0) with points pt 7 ps 0.3 lc rgb '#999999' "
                               "title 'every evaluation of the best run'",
@@ -63,18 +100,13 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                                   "about its mean, gear (arcsec)'\nset key outside below horizontal\n",
                               c->torque_nm);
             /* the case's own modification drawn apart only where it differs from the unmodified flank
-             * (a case without one would hide the unmodified curve under its own) */
-            double d = 0, sc = 0;
-            for (int k = 0; k < o->lte[0].npos; k++) {
-                d = fmax(d, fabs(o->lte[1].lte_arcsec[k] - o->lte[0].lte_arcsec[k]));
-                sc = fmax(sc, fabs(o->lte[0].lte_arcsec[k]));
-            }
-            int same = d <= 1e-9 * fmax(sc, 1e-300);
+             * and from the published one (a curve drawn twice hides the first under the second) */
+            int same = same_lte(&o->lte[1], &o->lte[0]), as_paper = !same && o->paper && same_lte(&o->lte[1], &o->lte[3]);
             gd_gnuplot_printf(&s, "plot 'lte.csv' using 'phi1_deg':(column('lte_unmodified_arcsec') - %.10g) with "
                                   "linespoints pt 7 ps 0.6 lw 2 lc rgb '%s' title 'unmodified%s: %.4f arcsec "
                                   "peak-to-peak'",
                               m[0], cli_colour[0], same ? ", as the case is" : "", o->lte[0].lte_pp_arcsec);
-            if (!same)
+            if (!same && !as_paper)
                 gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_case_arcsec') - %.10g) with linespoints pt 5 "
                                       "ps 0.6 lw 2 dt 2 lc rgb '%s' title 'the case''s modification: %.4f arcsec "
                                       "peak-to-peak'",
@@ -85,8 +117,8 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
             if (o->paper)
                 gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_paper_table2_arcsec') - %.10g) with linespoints "
                                       "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the modification published with "
-                                      "the paper''s pair: %.4f arcsec peak-to-peak'",
-                                  m[3], cli_colour[2], o->lte[3].lte_pp_arcsec);
+                                      "the paper''s pair%s: %.4f arcsec peak-to-peak'",
+                                  m[3], cli_colour[2], as_paper ? ", as the case's" : "", o->lte[3].lte_pp_arcsec);
             gd_gnuplot_printf(&s, "\n");
             cli_fig_end(&s, 0);
         }
@@ -124,10 +156,11 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
     double wall = o->wall_s;
     int threads = o->threads;
     const gd_opt_result *b = &o->res[o->best];
-    printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s "
+    printf("%s: %s on %s, %d variable%s, %d run%s of %ld evaluations (%.1f s, %d thread%s): best %.8g%s%s "
            "(evaluation %ld of run %d)\n", dir, gd_opt_algorithm_name(c->opt_algorithm),
            gd_opt_objective_name(o->objective), o->dim, o->dim == 1 ? "" : "s", o->runs, o->runs == 1 ? "" : "s",
-           budget, wall, threads, threads == 1 ? "" : "s", b->f, o->gear ? " arcsec" : "", b->best_at, o->best + 1);
+           budget, wall, threads, threads == 1 ? "" : "s", b->f, o->gear ? " " : "", unit_of(c, o), b->best_at,
+           o->best + 1);
     for (int i = 0; i < o->dim; i++) {
         const char *unit = "", *sym = o->names[i];
         if (o->gear)
@@ -140,9 +173,27 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
             printf("   (%s)", o->no_effect[i]);
         printf("\n");
     }
+    if (o->gear && o->objective != GD_OBJ_GEAR_LTE) {
+        int dyn = o->objective == GD_OBJ_GEAR_DYNAMIC;
+        printf("  %s (%s): unmodified %.6g, the case's modification %.6g, optimum %.6g (%+.1f %% against the "
+               "unmodified pair)\n", gd_opt_objective_name(o->objective), unit_of(c, o), o->objective_of[0],
+               o->objective_of[1], o->objective_of[2],
+               100 * (o->objective_of[2] - o->objective_of[0]) / o->objective_of[0]);
+        for (int k = 0; k < c->n_opt_torques; k++) {
+            printf("    at %g N m: unmodified %.6g, the case's %.6g, optimum %.6g", c->opt_torques_nm[k],
+                   o->aux_of[0][dyn ? 2 * k : k], o->aux_of[1][dyn ? 2 * k : k], o->aux_of[2][dyn ? 2 * k : k]);
+            if (dyn)
+                printf(" (the optimum's curve by %s)", gd_dyn_method_name((int)o->aux_of[2][2 * k + 1]));
+            printf("\n");
+        }
+    }
     if (o->gear) {
-        printf("  LTE peak-to-peak: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec (%+.1f %% "
-               "against the unmodified pair, %+.1f %% against the case's)\n", o->lte[0].lte_pp_arcsec,
+        char at[64] = ""; /* the objective over several torques: the LTE table's own */
+        if (o->objective != GD_OBJ_GEAR_LTE)
+            snprintf(at, sizeof at, " at %g N m", c->torque_nm);
+        printf("  LTE peak-to-peak%s: unmodified %.6g, the case's modification %.6g, optimum %.6g arcsec "
+               "(%+.1f %% against the unmodified pair, %+.1f %% against the case's)\n", at,
+               o->lte[0].lte_pp_arcsec,
                o->lte[1].lte_pp_arcsec, o->lte[2].lte_pp_arcsec,
                100 * (o->lte[2].lte_pp_arcsec - o->lte[0].lte_pp_arcsec) / o->lte[0].lte_pp_arcsec,
                100 * (o->lte[2].lte_pp_arcsec - o->lte[1].lte_pp_arcsec) / o->lte[1].lte_pp_arcsec);

@@ -51,11 +51,7 @@ GD_API int gd_alo_iterations(long budget, int population)
 
 /* Eight steps of a walk at once: sum of the steps (bit 1: +1, bit 0: -1) and the least and the
  * largest partial sum after each of the eight. */
-typedef struct walk_byte {
-    signed char sum, lo, hi;
-} walk_byte;
-
-static void walk_table(walk_byte tab[256])
+void opt_walk_table(walk_byte tab[256])
 {
     for (int v = 0; v < 256; v++) {
         int x = 0, lo = 1 << 20, hi = -(1 << 20);
@@ -72,7 +68,7 @@ static void walk_table(walk_byte tab[256])
 
 /* A random walk X_0 = 0, X_k = X_{k-1} +- 1 (k = 1 .. T, fair steps from the generator's bits),
  * min-max normalised into [c, d]; its value at step t. */
-static double walk(gsl_rng *rng, const walk_byte *tab, int T, int t, double c, double d)
+double opt_walk(gsl_rng *rng, const walk_byte *tab, int T, int t, double c, double d)
 {
     long x = 0, lo = 0, hi = 0, xt = 0;
     int k = 0;           /* steps taken */
@@ -164,8 +160,8 @@ static void alo_walk_ants(alo_arrays *A, gsl_rng *rng, const walk_byte *tab, int
         const double *L = A->lion + (size_t)j * d;
         double *x = A->ant + (size_t)i * d;
         for (int k = 0; k < d; k++) {
-            double ra = walk(rng, tab, T, t, L[k] - w, L[k] + w);
-            double re = walk(rng, tab, T, t, elite[k] - w, elite[k] + w);
+            double ra = opt_walk(rng, tab, T, t, L[k] - w, L[k] + w);
+            double re = opt_walk(rng, tab, T, t, elite[k] - w, elite[k] + w);
             double v = 0.5 * (ra + re);
             x[k] = v < -1.0 ? -1.0 : v > 1.0 ? 1.0 : v;
         }
@@ -218,14 +214,14 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
         st = gd_error_set(err, GD_ERR_NOMEM, "ALO: out of memory for %d ants in %d dimensions", N, d);
         goto done;
     }
-    walk_table(tab);
+    opt_walk_table(tab);
     gsl_rng_set(rng, s->seed);
     /* the initial antlions, uniform in the box (the initial ants of the reference code are
      * overwritten by the first walks before they are evaluated: they are not drawn here) */
     for (size_t i = 0; i < nd; i++)
         A.lion[i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
     int m;
-    st = opt_eval_batch(c, A.lion, N, A.flion, s->threads, &m, err);
+    st = opt_eval_batch(c, A.lion, N, A.flion, NULL, s->threads, &m, err);
     if (st != GD_OK)
         goto done;
     if (m < N) { /* cannot happen: the budget holds two populations */
@@ -242,7 +238,7 @@ gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_err
     int t;
     for (t = 1; t <= T; t++) {
         alo_walk_ants(&A, rng, tab, T, t, total);
-        st = opt_eval_batch(c, A.ant, N, A.fant, s->threads, &m, err);
+        st = opt_eval_batch(c, A.ant, N, A.fant, NULL, s->threads, &m, err);
         if (st != GD_OK)
             goto done;
         alo_select(&A, m);

@@ -5,7 +5,29 @@
 
 #include "geardyn/gd_optimize.h"
 
+#include <gsl/gsl_rng.h>
 #include <pthread.h>
+
+/* The non-dominated points of a run with two objectives, sorted by f1 increasing (f2 decreasing;
+ * pareto.c). */
+typedef struct opt_front {
+    int n, cap, dim;
+    double ref[2];                  /* the hypervolume's reference point */
+    double hv;                      /* the area the points dominate within ref, updated by every insertion */
+    double *y;                      /* n x dim (dim 0: no points kept, only their values) */
+    double *f;                      /* n x 2 */
+} opt_front;
+
+void opt_front_free(opt_front *F);
+/* Insert (y, f) unless a point of F dominates or equals it; the points it dominates go. 1: inserted, 0:
+ * dominated, -1: out of memory. */
+int opt_front_insert(opt_front *F, const double *y, const double f[2]);
+/* The area F dominates within F->ref, summed afresh (F->hv is the running sum). */
+double opt_front_hv(const opt_front *F);
+
+/* How the wrapper turns two objectives into the one value a single-objective optimiser sees
+ * (scalarise.c): none, a weighted sum, an epsilon-constraint. */
+enum { OPT_SC_NONE = 0, OPT_SC_WEIGHTED = 1, OPT_SC_EPS = 2 };
 
 /* The wrapper of one run. Optimisers see x in [-1, 1]^dim; the wrapper maps x to the box, repairs
  * the linear constraints, evaluates, counts, records. */
@@ -13,6 +35,7 @@ typedef struct opt_ctx {
     const gd_opt_problem *p;
     int dim;
     double *centre, *half, *anchor; /* dim each */
+    double *yrec;                   /* dim: the physical point of the evaluation being recorded */
     long budget, count;
     double best_f;
     double *best_y;                 /* dim: physical, repaired */
@@ -25,17 +48,40 @@ typedef struct opt_ctx {
     gd_status st;                   /* first failure of the objective */
     gd_error err;
     gd_stop_hook stop;              /* asked before each evaluation (gd_opt_settings.stop) */
+    /* evalv problems */
+    int nobj, naux, nf;             /* nf = nobj + naux values per evaluation (1 for eval) */
+    double *fbuf;                   /* nstates x nf scratch */
+    double *fv_hist;                /* budget x nf when keep */
+    /* two objectives: the front of every evaluation, its hypervolume after each */
+    opt_front front;
+    double hv_ref[2];
+    double *hv_hist;                /* budget when keep */
+    /* the scalarisation of two objectives the optimiser sees (scalarise.c) */
+    int sc_kind;
+    double sc_w, sc_eps;
+    void (*progress)(void *user, long evaluations, long budget);
+    void *progress_user;
 } opt_ctx;
 
 gd_status opt_ctx_init(opt_ctx *c, const gd_opt_problem *p, long budget, int nstates, int keep, gd_error *err);
+/* The objectives' count of a problem (1 for eval) and the values of an evaluation (nobj + naux). */
+int opt_problem_nobj(const gd_opt_problem *p);
+int opt_problem_nf(const gd_opt_problem *p);
 void opt_ctx_free(opt_ctx *c);
 /* Normalised x (clamped to [-1, 1]) -> the repaired physical point. */
 void opt_to_physical(const opt_ctx *c, const double *x, double *y);
 /* Evaluate the n normalised points X (n x dim) with `threads` threads, as many as the budget
  * allows (*m of them, in index order); f[i] = +inf for the rest. Records every evaluation in
  * index order, so the history does not depend on the thread count. Both evaluators ask c->stop
- * before each evaluation: stopped, GD_ERR_INTERRUPTED. */
-gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, int threads, int *m, gd_error *err);
+ * before each evaluation: stopped, GD_ERR_INTERRUPTED. f[i] is the value the optimiser sees (the
+ * objective, or its scalarisation); fv (NULL: not wanted) gets every evaluation's nf values. */
+gd_status opt_eval_batch(opt_ctx *c, const double *X, int n, double *f, double *fv, int threads, int *m,
+                         gd_error *err);
+/* The value a single-objective optimiser sees of the nf values fv: the objective, or with two the
+ * scalarisation of c->sc_kind on the objectives divided by the reference point (an infeasible point
+ * of an epsilon-constraint is OPT_EPS_INFEASIBLE plus its excess: after every feasible one). */
+#define OPT_EPS_INFEASIBLE 1e6
+double opt_scalar(const opt_ctx *c, const double *fv);
 /* Evaluate one normalised point on state 0 (serial callers: NLopt). Returns 1 in *done when the
  * budget was already used (nothing evaluated). */
 gd_status opt_eval_one(opt_ctx *c, const double *x, double *f, int *done, gd_error *err);
@@ -44,6 +90,18 @@ gd_status opt_eval_one(opt_ctx *c, const double *x, double *f, int *done, gd_err
 gd_status opt_alo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 gd_status opt_nlopt(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
 gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+gd_status opt_moalo(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+/* weighted-sum and eps-constraint: the subproblems one after the other, each an NLopt run of
+ * s->scalar_algorithm on its share of the budget (scalarise.c) */
+gd_status opt_scalarised(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_error *err);
+
+/* ALO's random walks (alo.c), shared with MOALO: eight steps of a walk from one byte. */
+typedef struct walk_byte {
+    signed char sum, lo, hi;
+} walk_byte;
+void opt_walk_table(walk_byte tab[256]);
+/* A walk of T fair +-1 steps drawn from rng, min-max normalised into [c, d]: its value at step t. */
+double opt_walk(gsl_rng *rng, const walk_byte *tab, int T, int t, double c, double d);
 
 /* The gear box [lower, upper] of the variables v on the pair (gear_objective.c): the constraint's
  * right side (the active profile), and the first corner of the box (bit i: variable i at its upper

@@ -218,23 +218,23 @@ static gd_status resolve_optimizers(const gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     char valid[512] = "";
-    for (int a = 0; a < GD_OPT_NALGORITHMS; a++) {
+    for (int a = 0; a < GD_OPT_MOALO; a++) { /* the optimisers of one objective (two objectives: the library's) */
         size_t u = strlen(valid);
         snprintf(valid + u, sizeof valid - u, "%s%s", a ? ", " : "", gd_opt_algorithm_name(a));
     }
     char names[GD_OPT_NALGORITHMS + 1][48];
-    int n = split(c->opt_optimizers, names, GD_OPT_NALGORITHMS + 1);
+    int n = split(c->opt_optimizers, names, GD_OPT_MOALO + 1);
     int seen[GD_OPT_NALGORITHMS] = {0};
     gd_case_key_where(c, "optimize", "optimizers", w, sizeof w);
     if (n < 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: more than %d names (valid: each of %s at "
-                            "most once)", w, GD_OPT_NALGORITHMS, valid);
+                            "most once)", w, GD_OPT_MOALO, valid);
     if (n == 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: empty (valid: comma-separated, of %s)", w,
                             valid);
     for (int i = 0; i < n; i++) {
         int a = gd_opt_algorithm_parse(names[i]);
-        if (a < 0)
+        if (a < 0 || a >= GD_OPT_MOALO)
             return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: unknown optimiser '%s' (valid: %s)", w,
                                 names[i], valid);
         if (seen[a]++)
@@ -247,20 +247,35 @@ static gd_status resolve_optimizers(const gd_case *c, gd_error *err)
 /* What the objectives named include: the gear, test functions, Rosenbrock. */
 typedef struct objective_kinds {
     int gear, tests, rosen;
+    int objective;           /* the last named */
 } objective_kinds;
+
+/* The objectives a case can name: gear-lte and the test functions of one objective everywhere;
+ * gear-lte-range and gear-dynamic for optimize only (zdt1 and zdt2, two objectives, are the
+ * library's). */
+static int case_objective(int o, int compare)
+{
+    if (o == GD_OBJ_ZDT1 || o == GD_OBJ_ZDT2)
+        return 0;
+    if (o == GD_OBJ_GEAR_LTE_RANGE || o == GD_OBJ_GEAR_DYNAMIC)
+        return !compare;
+    return 1;
+}
 
 /* optimize.objective: known names, each at most once, one for optimize. */
 static gd_status resolve_objectives(const gd_case *c, int compare, objective_kinds *ok, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     char valid[512] = "";
-    for (int o = 0; o < GD_OBJ_NOBJECTIVES; o++) {
-        size_t u = strlen(valid);
-        snprintf(valid + u, sizeof valid - u, "%s%s", o ? ", " : "", gd_opt_objective_name(o));
-    }
+    for (int o = 0, k = 0; o < GD_OBJ_NOBJECTIVES; o++)
+        if (case_objective(o, compare)) {
+            size_t u = strlen(valid);
+            snprintf(valid + u, sizeof valid - u, "%s%s", k++ ? ", " : "", gd_opt_objective_name(o));
+        }
     char onames[GD_OBJ_NOBJECTIVES + 1][48];
     int no = split(c->opt_objective, onames, GD_OBJ_NOBJECTIVES + 1);
     ok->gear = ok->tests = ok->rosen = 0;
+    ok->objective = -1;
     int seen[GD_OBJ_NOBJECTIVES] = {0};
     gd_case_key_where(c, "optimize", "objective", w, sizeof w);
     if (no <= 0)
@@ -271,15 +286,95 @@ static gd_status resolve_objectives(const gd_case *c, int compare, objective_kin
                             "%s; compare-optimizers takes a list)", w, no, valid);
     for (int i = 0; i < no; i++) {
         int o = gd_opt_objective_parse(onames[i]);
-        if (o < 0)
+        if (o >= 0 && !case_objective(o, compare) && case_objective(o, 0))
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.objective: '%s' for compare-optimizers (valid: %s; "
+                                "%s is an objective of optimize)", w, onames[i], valid, onames[i]);
+        if (o < 0 || !case_objective(o, compare))
             return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.objective: unknown objective '%s' (valid: %s)", w,
                                 onames[i], valid);
         if (seen[o]++)
             return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.objective: '%s' twice (valid: each at most once)",
                                 w, onames[i]);
-        ok->gear |= o == GD_OBJ_GEAR_LTE;
-        ok->tests |= o != GD_OBJ_GEAR_LTE;
+        ok->gear |= gd_opt_objective_is_gear(o);
+        ok->tests |= !gd_opt_objective_is_gear(o);
         ok->rosen |= o == GD_OBJ_ROSENBROCK;
+        ok->objective = o;
+    }
+    return GD_OK;
+}
+
+/* The torques and duty weights of gear-lte-range and gear-dynamic, the speed range and model of
+ * gear-dynamic (docs/optimisation.md section 12); the dynamics in the loop need the candidate's
+ * LTCA mesh stiffness. */
+static gd_status resolve_load_speed(gd_case *c, const gd_pair *pair, int objective, gd_error *err)
+{
+    char w[GD_PATH_MAX + 32];
+    const char *name = gd_opt_objective_name(objective);
+    if (c->n_opt_torques == 0) {
+        if (!(c->torque_nm > 0)) {
+            gd_case_key_where(c, "optimize", "torques_nm", w, sizeof w);
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torques_nm: none, and operating.torque_nm is %g N m "
+                                "(valid: 1 to %d torques > 0 N m, comma-separated)", w, c->torque_nm, GD_OPT_MAX_TORQUES);
+        }
+        c->opt_torques_nm[0] = c->torque_nm;
+        c->n_opt_torques = 1;
+        derived(c, "torques_nm");
+    }
+    gd_case_key_where(c, "optimize", "torques_nm", w, sizeof w);
+    if (c->n_opt_torques > GD_OPT_MAX_TORQUES)
+        return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torques_nm: %d torques (valid: 1 to %d)", w,
+                            c->n_opt_torques, GD_OPT_MAX_TORQUES);
+    for (int k = 0; k < c->n_opt_torques; k++)
+        if (!(c->opt_torques_nm[k] > 0))
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torques_nm: a torque of %g N m (valid: > 0, the "
+                                "loaded contact needs a load)", w, c->opt_torques_nm[k]);
+    if (c->n_opt_torque_weights > 0) {
+        gd_case_key_where(c, "optimize", "torque_weights", w, sizeof w);
+        if (c->n_opt_torque_weights != c->n_opt_torques)
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torque_weights: %d weights for %d torques (valid: one "
+                                "weight per torque of optimize.torques_nm)", w, c->n_opt_torque_weights,
+                                c->n_opt_torques);
+        double sum = 0;
+        for (int k = 0; k < c->n_opt_torque_weights; k++)
+            sum += c->opt_torque_weights[k];
+        if (!(sum > 0))
+            return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torque_weights: the weights sum to %g (valid: >= 0 "
+                                "each, a positive sum)", w, sum);
+    }
+    if (objective != GD_OBJ_GEAR_DYNAMIC)
+        return GD_OK;
+    if (c->stiffness != GD_STIFF_LTCA) {
+        gd_case_key_where(c, "excitation", "stiffness", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: excitation.stiffness: not ltca for %s (valid: ltca, so that the "
+                            "candidate flank's loaded mesh stiffness drives the dynamics)", w, name);
+    }
+    if (!isfinite(c->opt_speed_from_rpm))
+        gd_case_key_derive(c, "optimize", "speed_from_rpm", &c->opt_speed_from_rpm, 0.8 * c->speed_rpm);
+    if (!isfinite(c->opt_speed_to_rpm))
+        gd_case_key_derive(c, "optimize", "speed_to_rpm", &c->opt_speed_to_rpm, 1.2 * c->speed_rpm);
+    if (!(c->opt_speed_from_rpm > 0 && c->opt_speed_from_rpm < c->opt_speed_to_rpm)) {
+        const char *k = gd_case_key_given(c, "optimize", "speed_to_rpm") ? "speed_to_rpm" : "speed_from_rpm";
+        gd_case_key_where(c, "optimize", k, w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the speed range %g to %g rpm (valid: 0 < "
+                            "speed_from_rpm < speed_to_rpm)", w, k, c->opt_speed_from_rpm, c->opt_speed_to_rpm);
+    }
+    if (!isfinite(c->opt_dynamic_sweep_step_rpm))
+        gd_case_key_derive(c, "optimize", "dynamic_sweep_step_rpm", &c->opt_dynamic_sweep_step_rpm,
+                           (c->opt_speed_to_rpm - c->opt_speed_from_rpm) / 50);
+    if (!(c->opt_dynamic_sweep_step_rpm > 0 &&
+          c->opt_dynamic_sweep_step_rpm <= c->opt_speed_to_rpm - c->opt_speed_from_rpm)) {
+        gd_case_key_where(c, "optimize", "dynamic_sweep_step_rpm", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.dynamic_sweep_step_rpm: %g rpm (valid: > 0 and at most "
+                            "the speed range, %g rpm)", w, c->opt_dynamic_sweep_step_rpm,
+                            c->opt_speed_to_rpm - c->opt_speed_from_rpm);
+    }
+    if (!gd_case_key_given(c, "optimize", "dynamic_model")) {
+        c->opt_dynamic_model = pair->arrangement == GD_ARR_HERRINGBONE ? GD_MODEL_TORSIONAL_LR : GD_MODEL_TORSIONAL;
+        derived(c, "dynamic_model");
+    } else if (pair->arrangement != GD_ARR_HERRINGBONE && c->opt_dynamic_model == GD_MODEL_TORSIONAL_LR) {
+        gd_case_key_where(c, "optimize", "dynamic_model", w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.dynamic_model: torsional-lr for a single pair (valid: "
+                            "torsional or bta; torsional-lr has a herringbone's two halves)", w);
     }
     return GD_OK;
 }
@@ -397,5 +492,7 @@ gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
         st = resolve_targets(c, &ok, err);
     if (st == GD_OK && ok.gear)
         st = check_gear(c, pair, err);
+    if (st == GD_OK && !compare && (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC))
+        st = resolve_load_speed(c, pair, ok.objective, err);
     return st;
 }

@@ -21,7 +21,7 @@ gd_status opt_random(opt_ctx *c, const gd_opt_settings *s, gd_opt_result *r, gd_
         for (size_t i = 0; i < (size_t)n * (size_t)d; i++)
             X[i] = 2.0 * gsl_rng_uniform(rng) - 1.0;
         int m;
-        st = opt_eval_batch(c, X, n, f, s->threads, &m, err);
+        st = opt_eval_batch(c, X, n, f, NULL, s->threads, &m, err);
         if (st != GD_OK)
             break;
         r->starts++;

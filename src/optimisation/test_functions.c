@@ -10,7 +10,8 @@
 #include <string.h>
 
 static const char *const obj_names[GD_OBJ_NOBJECTIVES] = {"gear-lte", "sphere", "rosenbrock", "rastrigin", "ackley",
-                                                           "griewank"};
+                                                           "griewank", "zdt1", "zdt2", "gear-lte-range",
+                                                           "gear-dynamic"};
 
 GD_API const char *gd_opt_objective_name(int o) { return o >= 0 && o < GD_OBJ_NOBJECTIVES ? obj_names[o] : NULL; }
 
@@ -22,8 +23,38 @@ GD_API int gd_opt_objective_parse(const char *name)
     return -1;
 }
 
+GD_API int gd_opt_objective_is_gear(int o)
+{
+    return o == GD_OBJ_GEAR_LTE || o == GD_OBJ_GEAR_LTE_RANGE || o == GD_OBJ_GEAR_DYNAMIC;
+}
+
+GD_API int gd_opt_objective_count(int o) { return o == GD_OBJ_ZDT1 || o == GD_OBJ_ZDT2 ? 2 : 1; }
+
+GD_API void gd_opt_zdt_value(int fn, int d, const double *x, double f[2])
+{
+    double s = 0;
+    for (int i = 1; i < d; i++)
+        s += x[i];
+    double g = 1.0 + 9.0 * s / (d - 1), q = x[0] / g;
+    f[0] = x[0];
+    f[1] = fn == GD_OBJ_ZDT2 ? g * (1.0 - q * q) : g * (1.0 - sqrt(q));
+}
+
+/* The area between the front f2 = 1 - f1^p (p = 1/2 or 2) on [0, 1] and the reference point r
+ * (r1, r2 >= 1): r1 r2 minus the area under the front, 1 - 1/(p + 1). */
+GD_API double gd_opt_zdt_front_hv(int fn, const double ref[2])
+{
+    double under = fn == GD_OBJ_ZDT2 ? 2.0 / 3.0 : 1.0 / 3.0;
+    return ref[0] * ref[1] - under;
+}
+
 GD_API void gd_opt_function_domain(int fn, double *lo, double *hi)
 {
+    if (fn == GD_OBJ_ZDT1 || fn == GD_OBJ_ZDT2) {
+        *lo = 0.0;
+        *hi = 1.0;
+        return;
+    }
     double h;
     switch (fn) {
     case GD_OBJ_SPHERE: h = 100; break;
@@ -90,13 +121,15 @@ GD_API gd_status gd_opt_testfn_init(gd_opt_testfn *t, int fn, int dim, double sh
 {
     gd_gsl_quiet(); /* GSL reports errors by return code (src/core/gsl_quiet.c) */
     memset(t, 0, sizeof *t);
-    if (fn < GD_OBJ_SPHERE || fn > GD_OBJ_GRIEWANK)
-        return gd_error_set(err, GD_ERR_INPUT, "test function %d (valid: sphere .. griewank)", fn);
-    if (dim < 1 || (fn == GD_OBJ_ROSENBROCK && dim < 2))
+    int zdt = fn == GD_OBJ_ZDT1 || fn == GD_OBJ_ZDT2;
+    if (!zdt && (fn < GD_OBJ_SPHERE || fn > GD_OBJ_GRIEWANK))
+        return gd_error_set(err, GD_ERR_INPUT, "test function %d (valid: sphere .. griewank, zdt1, zdt2)", fn);
+    if (dim < 1 || ((fn == GD_OBJ_ROSENBROCK || zdt) && dim < 2))
         return gd_error_set(err, GD_ERR_INPUT, "%s in %d dimensions (valid: %s)", gd_opt_objective_name(fn), dim,
-                            fn == GD_OBJ_ROSENBROCK ? ">= 2" : ">= 1");
-    if (!(shift >= 0 && shift <= 0.9))
-        return gd_error_set(err, GD_ERR_INPUT, "test function shift %g (valid: 0 to 0.9)", shift);
+                            fn == GD_OBJ_ROSENBROCK || zdt ? ">= 2" : ">= 1");
+    if (!(shift >= 0 && shift <= 0.9) || (zdt && shift != 0))
+        return gd_error_set(err, GD_ERR_INPUT, "test function shift %g (valid: 0 to 0.9; 0 for %s)", shift,
+                            zdt ? gd_opt_objective_name(fn) : "zdt1 and zdt2");
     t->objective = fn;
     t->dim = dim;
     t->lower = malloc(3 * sizeof(double) * (size_t)dim);
@@ -132,12 +165,25 @@ static gd_status testfn_eval(void *state, const double *y, double *f, gd_error *
     return GD_OK;
 }
 
+static gd_status zdt_eval(void *state, const double *y, double *f, gd_error *err)
+{
+    (void)err;
+    const gd_opt_testfn *t = state;
+    gd_opt_zdt_value(t->objective, t->dim, y, f);
+    return GD_OK;
+}
+
 GD_API void gd_opt_testfn_problem(gd_opt_testfn *t, gd_opt_problem *p)
 {
     memset(p, 0, sizeof *p);
     p->dim = t->dim;
     p->lower = t->lower;
     p->upper = t->upper;
-    p->eval = testfn_eval;
+    if (gd_opt_objective_count(t->objective) == 2) {
+        p->evalv = zdt_eval;
+        p->nobj = 2;
+    } else {
+        p->eval = testfn_eval;
+    }
     p->user = t;
 }

@@ -4,6 +4,7 @@
 #include "output_internal.h"
 
 #include "json_util.h"
+#include "geardyn/gd_dynobj.h"
 
 #include <jansson.h>
 #include <math.h>
@@ -14,7 +15,7 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
                                            gd_error *err)
 {
     json_t *root = gd_json_root(c, "optimize", NULL, NULL);
-    int gear = s->objective == GD_OBJ_GEAR_LTE;
+    int gear = gd_opt_objective_is_gear(s->objective);
     json_t *set = json_object();
     json_object_set_new(set, "algorithm", json_string(gd_opt_algorithm_name(s->algorithm)));
     json_object_set_new(set, "objective", json_string(gd_opt_objective_name(s->objective)));
@@ -46,7 +47,7 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
     const gd_opt_result *b = s->best;
     json_t *res = json_object();
     json_object_set_new(res, "objective_value", gd_json_num(b->f));
-    json_object_set_new(res, "objective_unit", json_string(gear ? "arcsec" : ""));
+    json_object_set_new(res, "objective_unit", json_string(s->objective_unit ? s->objective_unit : gear ? "arcsec" : ""));
     json_t *x = json_object(), *bounds = json_object();
     for (int i = 0; i < s->dim; i++) {
         json_object_set_new(x, s->names[i], gd_json_num(b->y[i]));
@@ -118,6 +119,26 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
             json_object_set_new(paper, "change_percent", gd_json_num(-72.41));
             json_object_set_new(res, "paper", paper);
         }
+    }
+    if (s->objective_unit) { /* gear-lte-range, gear-dynamic: the objective of three flanks, per torque */
+        static const char *const flank[3] = {"unmodified", "case", "optimum"};
+        int dyn = s->objective == GD_OBJ_GEAR_DYNAMIC;
+        json_t *of = json_object();
+        for (int j = 0; j < 3; j++) {
+            json_t *fo = json_object(), *each = json_array();
+            json_object_set_new(fo, "value", gd_json_num(s->objective_of[j]));
+            for (int k = 0; k < s->ntorques; k++) {
+                json_t *t = json_object();
+                json_object_set_new(t, "torque_nm", gd_json_num(s->torques_nm[k]));
+                json_object_set_new(t, dyn ? "peak" : "lte_pp_arcsec", gd_json_num(s->aux_of[j][dyn ? 2 * k : k]));
+                if (dyn)
+                    json_object_set_new(t, "method", json_string(gd_dyn_method_name((int)s->aux_of[j][2 * k + 1])));
+                json_array_append_new(each, t);
+            }
+            json_object_set_new(fo, "torques", each);
+            json_object_set_new(of, flank[j], fo);
+        }
+        json_object_set_new(res, "objective_of", of);
     }
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);

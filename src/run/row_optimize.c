@@ -6,6 +6,7 @@
  * outputs in optimum/ and optimum-tca/, through the rows of those analyses. */
 #include "rows.h"
 #include "geardyn/gd_scene.h"
+#include "geardyn/gd_dynobj.h"
 #include "geardyn/gd_geometry.h"
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
@@ -55,8 +56,62 @@ void gd_row_optimize_free(void *result)
         gd_ltca_result_free(&o->lte[j]);
     free(o->run_f);
     gd_opt_gear_free(o->gear_problem);
+    if (o->user_free)
+        o->user_free(o->user);
     gd_opt_testfn_free(&o->tf);
     free(o);
+}
+
+static void dynobj_free(void *user) { gd_dynobj_free(user); }
+
+/* gear-lte-range and gear-dynamic (docs/optimisation.md section 12): the objective of the gear
+ * problem, its state kept in the outcome. */
+static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_outcome *o, gd_opt_gear *gear,
+                               gd_error *err)
+{
+    gd_opt_gear_objective obj;
+    if (o->objective == GD_OBJ_GEAR_LTE_RANGE) {
+        gd_opt_lte_range *r = &o->lte_range;
+        r->set = gd_ltca_settings_from_case(c);
+        r->set.stop = stop;
+        r->n = c->n_opt_torques;
+        for (int k = 0; k < r->n; k++) {
+            r->torques_nm[k] = c->opt_torques_nm[k];
+            r->weights[k] = c->n_opt_torque_weights ? c->opt_torque_weights[k] : 1.0;
+        }
+        r->combine = c->opt_lte_range_combine;
+        gd_opt_lte_range_objective(r, &obj);
+    } else {
+        gd_dynobj_settings ds;
+        gd_dynobj_settings_from_case(c, &ds);
+        gd_dynobj *d;
+        gd_status st = gd_dynobj_create(c, &ds, &stop, &d, err);
+        if (st != GD_OK)
+            return st;
+        o->user = d;
+        o->user_free = dynobj_free;
+        gd_dynobj_objective(d, &obj);
+    }
+    return gd_opt_gear_set_objectives(gear, 1, &obj, NULL, err);
+}
+
+/* The objective (and its recorded numbers) of the unmodified flank, the case's own and the optimum. */
+static gd_status objective_of_flanks(const gd_case *c, gd_optimize_outcome *o, gd_error *err)
+{
+    for (int j = 0; j < 3; j++) {
+        gd_pair t = gd_pair_from_case(c);
+        if (j == 0) {
+            t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
+            t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
+            t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
+        } else if (j == 2) {
+            gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
+        }
+        gd_status st = gd_opt_gear_value_of_pair(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j], err);
+        if (st != GD_OK)
+            return gd_error_prefix(err, "the %s flank", j == 0 ? "unmodified" : j == 1 ? "case's" : "optimum's");
+    }
+    return GD_OK;
 }
 
 /* The problem of the case's first objective (the gear's modification or a test function), its
@@ -67,7 +122,7 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
     int objs[GD_OBJ_NOBJECTIVES];
     gd_opt_case_objectives(c, objs, GD_OBJ_NOBJECTIVES);
     o->objective = objs[0];
-    o->gear = o->objective == GD_OBJ_GEAR_LTE;
+    o->gear = gd_opt_objective_is_gear(o->objective);
     if (o->gear)
         gd_opt_case_gear_vars(c, &o->vars);
     o->dim = o->gear ? o->vars.n : (int)c->opt_dimensions[0];
@@ -80,6 +135,8 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
         double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
         gd_opt_gear_bounds(c, &o->vars, lower, upper);
         st = gd_opt_gear_create(&pair, &set, &o->vars, lower, upper, gear, err);
+        if (st == GD_OK && o->objective != GD_OBJ_GEAR_LTE)
+            st = set_objective(c, stop, o, *gear, err);
         if (st == GD_OK) {
             gd_opt_gear_problem(*gear, p);
             o->active_mm = gd_opt_gear_active_profile_mm(*gear);
@@ -257,6 +314,8 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
         assess_optimum(&c, o);
     if (st == GD_OK && o->gear)
         st = compute_lte(&c, stop, o, err);
+    if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
+        st = objective_of_flanks(&c, o, err);
     if (st == GD_OK && o->gear)
         st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
     if (st == GD_OK && o->gear)
@@ -317,6 +376,16 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     sm.last_tenth_improvement = o->last_tenth_improvement;
     sm.converged = o->converged;
     sm.active_profile_mm = o->active_mm;
+    if (o->gear && o->objective != GD_OBJ_GEAR_LTE) {
+        sm.objective_unit = o->objective == GD_OBJ_GEAR_LTE_RANGE ? "arcsec"
+                            : c->opt_dynamic_response == GD_DYN_DTE_PP ? "um" : "m/s^2";
+        sm.ntorques = c->n_opt_torques;
+        sm.torques_nm = c->opt_torques_nm;
+        for (int j = 0; j < 3; j++) {
+            sm.objective_of[j] = o->objective_of[j];
+            sm.aux_of[j] = o->aux_of[j];
+        }
+    }
     sm.wall_s = wall;
     return gd_summary_write_optimize(out, c, &sm, err);
 }
