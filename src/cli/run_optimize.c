@@ -74,6 +74,28 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
         gd_gnuplot_printf(&s, "set xlabel 'objective evaluations'\nset ylabel '%s'\nset logscale y\n"
                               "set format y '%%g'\nset key outside right top vertical Left reverse\n",
                           ylabel);
+        /* the ticks of the values drawn: 1, 2 and 5 times the powers of ten on a short log axis */
+        double ylo = INFINITY, yhi = -INFINITY;
+        for (long k = 0; b->f_history && k < b->evaluations; k++)
+            if (b->f_history[k] > 0) {
+                ylo = fmin(ylo, b->f_history[k]);
+                yhi = fmax(yhi, b->f_history[k]);
+            }
+        for (int r = 0; r < o->runs && r < 20; r++)
+            for (long k = 0; o->res[r].best_history && k < o->res[r].evaluations; k++)
+                if (o->res[r].best_history[k] > 0) {
+                    ylo = fmin(ylo, o->res[r].best_history[k]);
+                    yhi = fmax(yhi, o->res[r].best_history[k]);
+                }
+        if (yhi > ylo && yhi < 10 * ylo) { /* less than a decade: round steps, as on a linear axis */
+            double st = cli_nice_step(yhi - ylo, 5);
+            gd_gnuplot_printf(&s, "set ytics (");
+            for (double t = ceil(ylo / st) * st; t <= yhi * (1 + 1e-12); t += st)
+                gd_gnuplot_printf(&s, "%s%.10g", t > ceil(ylo / st) * st ? ", " : "", t);
+            gd_gnuplot_printf(&s, ")\n");
+        } else if (yhi > ylo) {
+            cli_log_tics(&s, "y", ylo, yhi);
+        }
         gd_gnuplot_printf(&s, "plot 'convergence.csv' using (column('run') == %d ? column('evaluation') : 1/0):"
                               "(column('f') > 0 ? column('f') : 1/0) with points pt 7 ps 0.3 lc rgb '#999999' "
                               "title 'every evaluation of the best run'",
@@ -118,7 +140,7 @@ static gd_status draw(const char *dir, const gd_case *c, const gd_optimize_outco
                 gd_gnuplot_printf(&s, ", '' using 'phi1_deg':(column('lte_paper_table2_arcsec') - %.10g) with linespoints "
                                       "pt 12 ps 0.7 lw 1.5 dt 3 lc rgb '%s' title 'the modification published with "
                                       "the paper''s pair%s: %.4f arcsec peak-to-peak'",
-                                  m[3], cli_colour[2], as_paper ? ", as the case's" : "", o->lte[3].lte_pp_arcsec);
+                                  m[3], cli_colour[2], as_paper ? ", as the case''s" : "", o->lte[3].lte_pp_arcsec);
             gd_gnuplot_printf(&s, "\n");
             cli_fig_end(&s, 0);
         }

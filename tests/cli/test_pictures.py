@@ -1045,8 +1045,9 @@ def main():
         svgs = sorted(glob.glob(os.path.join(out, '**', '*.svg'), recursive=True))
         if os.path.basename(out).endswith('-before'):
             continue
-        if rc != 0 or not svgs:
-            lines.append((False, '%s: %s' % (name, 'exit %d: %s' % (rc, err[:300]) if rc else 'no SVG drawn')))
+        if rc != 0 or not svgs or 'pictures not drawn' in err:   # gnuplot refused a script: some not drawn
+            lines.append((False, '%s: %s' % (name, 'exit %d: %s' % (rc, err[:300]) if rc else
+                                             'no SVG drawn' if not svgs else err.strip()[:300])))
             continue
         single, summary = single_pair(out)
         for svg in svgs:
