@@ -136,16 +136,19 @@ static gd_status read_sweep(const char *path, const char *col, double scale, swe
     return GD_OK;
 }
 
-/* the kinds of bifurcation: marker (gnuplot point type), label, key entry */
+/* the kinds of bifurcation: marker (gnuplot point type and size), label, key entry. A branch point
+ * usually sits on another bifurcation (the fold or period doubling it was found beside): it is an
+ * open pentagon, larger than the filled markers and drawn after them, so both stay visible. */
 static const struct {
     int kind, pt;
+    double ps;
     const char *mark, *key;
 } kinds[] = {
-    {GD_BIF_FOLD, 7, "F", "fold (F)"},
-    {GD_BIF_PERIOD_DOUBLING, 5, "PD", "period doubling (PD)"},
-    {GD_BIF_NEIMARK_SACKER, 13, "NS", "Neimark–Sacker (NS)"},
-    {GD_BIF_CONTACT_CHANGE, 9, "C", "contact change, grazing (C)"},
-    {GD_BIF_BRANCH_POINT, 3, "BP", "branch point (BP)"},
+    {GD_BIF_FOLD, 7, 1.5, "F", "fold (F)"},
+    {GD_BIF_PERIOD_DOUBLING, 5, 1.5, "PD", "period doubling (PD)"},
+    {GD_BIF_NEIMARK_SACKER, 13, 1.5, "NS", "Neimark–Sacker (NS)"},
+    {GD_BIF_CONTACT_CHANGE, 9, 1.5, "C", "contact change, grazing (C)"},
+    {GD_BIF_BRANCH_POINT, 14, 2.6, "BP", "branch point (BP)"},
 };
 #define NKINDS 5
 
@@ -378,6 +381,21 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
         }
         free(order);
         free(used);
+        /* labels of different kinds on one point (a branch point on its fold) become one: "F, BP" */
+        for (int i = 0; i < nl; i++)
+            for (int j = i + 1; j < nl; j++)
+                if (hypot(lab[j].x - lab[i].x, lab[j].y - lab[i].y) < 2 &&
+                    strlen(text[i]) + strlen(text[j]) + 3 <= sizeof text[i]) {
+                    strcat(text[i], ", ");
+                    strcat(text[i], text[j]);
+                    lab[i].w = cli_text_width(text[i], CLI_FIG_PX);
+                    for (int k = j; k + 1 < nl; k++) {
+                        lab[k] = lab[k + 1];
+                        memcpy(text[k], text[k + 1], sizeof text[k]);
+                    }
+                    nl--;
+                    j--;
+                }
         cli_place_labels(lab, nl, W * FX0, H * (1 - FY1), W * FX1, H * (1 - FY0), obst, o);
         for (int i = 0; i < nl; i++)
             if (lab[i].keep) {
@@ -406,8 +424,8 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
     gd_gnuplot_printf(s, "%s1/0 with lines lw 2 dt 2 lc rgb '#000000' title 'unstable'", sep);
     for (int k = 0; k < NKINDS; k++)
         if (present[k])
-            gd_gnuplot_printf(s, "%s$BIF%d using 1:2 with points pt %d ps 1.5 lc rgb '#000000' title '%s'", sep, k,
-                              kinds[k].pt, kinds[k].key);
+            gd_gnuplot_printf(s, "%s$BIF%d using 1:2 with points pt %d ps %g lc rgb '#000000' title '%s'", sep, k,
+                              kinds[k].pt, kinds[k].ps, kinds[k].key);
     if (overlay)
         gd_gnuplot_printf(s, "%s'%s/%s' using 'parameter':(strcol('direction') eq 'down' ? 1/0 : column('%s')*%.12g) with "
                              "points pt 1 ps 1.1 lw 1.5 lc rgb '#555555' title 'sweep up', \\\n  '%s/%s' using 'parameter':"

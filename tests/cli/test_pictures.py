@@ -911,6 +911,32 @@ def check_continuation(fig, bad):
             bad.append('continuation: %s drawn with the same shape of marker (%s)' % (' and '.join(repr(s) for s in v), k))
 
 
+LINE_SHAPES = {'gpPt0', 'gpPt1', 'gpPt2'}
+OPEN_SHAPES = {'gpPt3', 'gpPt5', 'gpPt7', 'gpPt9', 'gpPt11', 'gpPt13'}
+
+
+def check_coincident_markers(fig, bad):
+    """Two bifurcations of different kinds on one point (a branch point on its fold) both visible:
+    a marker drawn in lines (plus, cross, star) or as an outline over another is at least 1.4 times
+    its size (black lines on a black marker of the same size vanish; two filled shapes of different
+    outline both show at their edges)."""
+    marks = []
+    for p in fig.plots.values():
+        if not (p.key_texts and re.search(r'\([A-Z]+\)$', p.key_texts[0].s)):
+            continue
+        for e in p.elements:
+            if e.kind == 'use':
+                shape, _, scale = e.marker.partition('@')
+                for x, y in e.points():
+                    marks.append((p.order, p.key_texts[0].s, shape, float(scale or 1), x, y))
+    for a in marks:
+        for b in marks:
+            if b[0] <= a[0] or a[1] == b[1] or math.hypot(a[4] - b[4], a[5] - b[5]) > 3:
+                continue
+            if b[2] in LINE_SHAPES | OPEN_SHAPES and b[3] < 1.4 * a[3]:
+                bad.append('continuation: %r at (%.0f, %.0f) hides %r under it' % (b[1], b[4], b[5], a[1]))
+
+
 BIF_MARKS = {'fold': 'F', 'period-doubling': 'PD', 'neimark-sacker': 'NS', 'contact-change': 'C', 'branch-point': 'BP'}
 
 
@@ -996,6 +1022,7 @@ def check_picture(path, outdir, keys, single, summary):
     if name == 'continuation.svg':
         check_continuation(fig, bad)
         check_continuation_points(fig, os.path.dirname(path), bad)
+        check_coincident_markers(fig, bad)
     if name in ('convergence.svg', 'ecdf.svg'):
         check_bands(fig, bad)
     return bad
