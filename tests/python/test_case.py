@@ -255,3 +255,26 @@ def test_bad_input_as_command_line(c, tmp_path, monkeypatch):
                 geardyn.Case.from_text(f.read(), name=path)
             raise geardyn.CaseError(1, message)         # the file is refused later (its keys)
         assert str(t.value) == message
+
+
+def test_cost_of_gear_objectives():
+    """check()'s estimate of an optimisation counts what one evaluation of its objective computes:
+    gear-lte-range an LTCA per torque, gear-dynamic per torque an LTCA and the orbits followed over
+    the speed range (several times the LTCA's cost: docs/optimisation.md section 12 measured 0.5 s
+    of CPU for an evaluation of three torques), in proportion to the evaluations of the budget, the
+    torques and the speed range."""
+    base = [('output.plots', 'off')]
+
+    def seconds(sets):
+        return load('cases/paper/optimize-dynamic.ini', base + sets).check()['cost']['seconds']
+    lte = seconds([('optimize.objective', 'gear-lte')])
+    lte_range = seconds([('optimize.objective', 'gear-lte-range')])
+    dyn = seconds([])
+    dyn_one = seconds([('optimize.torques_nm', '500')])
+    dyn_long = seconds([('optimize.iterations', 61)])
+    dyn_wide = seconds([('optimize.speed_to_rpm', 8000)])
+    assert lte_range == pytest.approx(3 * lte, rel=0.2)
+    assert dyn > 3 * lte_range
+    assert dyn == pytest.approx(3 * dyn_one, rel=0.2)
+    assert dyn_long == pytest.approx(2 * dyn, rel=0.1)
+    assert 1.3 * dyn < dyn_wide <= 2 * dyn   # twice the orbits, each of fewer steps at higher speed
