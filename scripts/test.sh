@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Install what is missing, build geardyn twice (normal with -Werror, and with ASan+UBSan),
-# run the test suite in both, check that every exported symbol has the gd_ prefix, build a
-# third time with Open MPI and run the sweep and docs suites there (2 MPI ranks; the guide's MPI block), build the command line
-# once more against Debian's SUNDIALS package and check that every shipped case gives the same
-# outputs as with the release build of SUNDIALS (scripts/compare-outputs.sh), build the libFuzzer
-# harnesses with clang and fuzz each for a minute (scripts/fuzz.sh), and end with the line
-# "N passed, N failed".
+# Install what is missing, build geardyn with Open MPI and -Werror and run the whole suite there
+# (its MPI tests run 2 ranks; the guide runs its MPI block), check that every exported symbol has
+# the gd_ prefix, build the command line once more against Debian's SUNDIALS package and check that
+# every shipped case gives the same outputs as with the release build of SUNDIALS
+# (scripts/compare-outputs.sh), build without MPI with ASan+UBSan and run the suites of the
+# library and the command line there (and the Python module's run of every analysis), build the
+# libFuzzer harnesses with clang and fuzz each for a minute (scripts/fuzz.sh), and end with the line
+# "N passed, N failed". On two cores it takes about 25 minutes (CI's budget is 30).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh || { echo "0 passed, 1 failed"; exit 1; }
@@ -43,8 +44,9 @@ build_and_test() { # dir, meson options...
 }
 
 TEST_ARGS=()
-echo "== build with -Werror and run the suite"
-build_and_test build-ci -Dwerror=true -Dbuildtype=debugoptimized
+echo "== build with Open MPI (-Dmpi=enabled) and -Werror and run the suite (its MPI tests run 2 ranks;"
+echo "   the guide runs its MPI block)"
+build_and_test build-ci -Dwerror=true -Dbuildtype=debugoptimized -Dmpi=enabled
 
 echo "== exported symbols of libgeardyn all carry the gd_ prefix"
 lib=$(ls build-ci/src/libgeardyn.so* 2>/dev/null | head -1)
@@ -71,17 +73,17 @@ else
     echo "skipped: build-ci links $(build-ci/src/cli/geardyn --version | tail -1)"
 fi
 
-echo "== build with ASan+UBSan and run the suite again"
+echo "== build without MPI, with ASan+UBSan, and run the suites of the library and the command line"
+echo "   again, and the Python module's run of every analysis (the other Python tests, the guide and"
+echo "   the examples call the same library functions as these)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-TEST_ARGS=(--timeout-multiplier 4)
-build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
-    -Dwerror=true
-
-echo "== build with Open MPI (-Dmpi=enabled) and run the sweep suite (its MPI test runs 2 ranks) and the"
-echo "   docs suite, whose guide runs its MPI block there"
+TEST_ARGS=(--timeout-multiplier 4 --no-suite python --no-suite docs --no-suite examples)
+if build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
+        -Dwerror=true -Dmpi=disabled; then
+    meson test -C build-asan --print-errorlogs --timeout-multiplier 4 python_runs
+    count_log build-asan
+fi
 unset ASAN_OPTIONS UBSAN_OPTIONS
-TEST_ARGS=(--suite sweep --suite docs)
-build_and_test build-mpi -Dmpi=enabled -Dbuildtype=debugoptimized -Dwerror=true
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan): replay each harness's corpus, then fuzz it for 60 s"
 echo "   (scripts/fuzz.sh; a crash leaves its input in build-fuzz/fuzz-artifacts/)"
