@@ -40,7 +40,8 @@ inside the swept ranges, its key names the classes that occur and its exponent's
 set by the bulk of the cells; gte.png of a pair whose GTE is round-off says so and draws it flat;
 contact_pattern.png draws a path, not a scatter; continuation.png's markers each of their own
 shape (a sweep's points are not bifurcations) and every row of bifurcations.csv drawn as a marker
-of its kind (branch points too); the optimiser comparison draws no overlapping
+of its kind (branch points too), a marker of lines or an outline drawn over one of another kind
+(a branch point on its fold) 1.4 times its size so that both show; the optimiser comparison draws no overlapping
 translucent bands.
 
 The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its layout is the PNG's.
