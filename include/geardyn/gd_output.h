@@ -66,6 +66,25 @@ GD_API const char *gd_run_dir_fallback(const gd_run_dir *d);
 /* The files of the run so far, in order (valid until the next call on d). */
 GD_API const char *const *gd_run_dir_files(const gd_run_dir *d, int *n);
 
+/* The pictures of a run. The library writes the gnuplot script of an analysis's pictures and asks
+ * a drawer its caller gives (gd_run_env.draw) to turn it into pictures; it never spawns a process
+ * itself, so a run without a drawer has no pictures (its notes say so). The drawer is called with
+ * dir, the run's stage (the script reads the run's tables by their names there), the script, and
+ * the stems names[0..nnames-1] of the pictures it writes, each as .NAME.png.tmp and .NAME.svg.tmp
+ * in dir: it runs the script in dir and, when it succeeded and every picture is whole (a PNG to
+ * its IEND chunk, an SVG to its closing tag), moves them to NAME.png and NAME.svg, removing the
+ * temporary files either way; any other outcome is an error whose message says why. Called with
+ * script NULL it says whether it can draw at all: GD_OK, or an error whose message is the note
+ * ("gnuplot is not installed: ..."). The command line's drawer runs gnuplot (src/cli/gnuplot.c),
+ * the Python module's too (python/geardyn/_draw.py). */
+typedef gd_status (*gd_draw_fn)(void *user, const char *dir, const char *script, const char *const *names,
+                                int nnames, gd_error *err);
+/* What a note of a run is about: no pictures at all (pictures wanted, but no drawer or it cannot
+ * draw; the text says why), or some pictures not drawn (the text names them and says why). */
+enum { GD_NOTE_NO_PICTURES = 1, GD_NOTE_PICTURES_FAILED = 2 };
+/* A note of a run for its caller (gd_run_env.note): kind (above) and a line of text. */
+typedef void (*gd_note_fn)(void *user, int kind, const char *text);
+
 /* Summary of an event log file (geardyn events). */
 typedef struct gd_eventlog_filter {
     double t_from_s, t_to_s;  /* window (inclusive); +-inf for all */

@@ -390,3 +390,8 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     return gd_summary_write_optimize(out, c, &sm, err);
 }
 
+void gd_row_optimize_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
+}
