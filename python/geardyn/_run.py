@@ -6,7 +6,7 @@ import os
 import signal
 import threading
 
-from . import _lib
+from . import _draw, _lib
 from ._case import Case
 from ._errors import Error, raise_for
 from ._result import Result
@@ -53,6 +53,17 @@ class _Job:
         self.code = None
         self.err = _lib.Error_t()
         self.finished = threading.Event()
+        self.stopping = threading.Event()
+        if out is not None:  # pictures are files of a directory: a run in memory draws none
+            self.drawer = _draw.drawer(self.stopping.is_set)  # kept alive while the run goes on
+            _lib_.gd_job_set_draw(self.ptr, _lib.ctypes.cast(self.drawer, _lib.c_void_p), None)
+
+    def stop(self):
+        self.stopping.set()
+        _lib_.gd_job_stop(self.ptr)
+
+    def notes(self):
+        return [n for n in _lib.text(_lib_.gd_job_notes(self.ptr)).split('\n') if n]
 
     def body(self):
         # signals go to the waiting thread (Python's handlers run there), never interrupt a system
@@ -100,9 +111,11 @@ class _Job:
 
 def run(case, out=None, *, threads=None, progress=None):
     """Run the analysis of case ([scene] analysis; a Case or the path of a case file) and return its
-    Result: the files geardyn run writes (but the pictures), parsed, computed in memory; with out,
-    also written and published into the directory out exactly as geardyn run --out out does (a
-    failed or interrupted run leaves the previous result there, or nothing).
+    Result: the files geardyn run writes, parsed, computed in memory; with out, also written and
+    published into the directory out exactly as geardyn run --out out does, its pictures drawn by
+    gnuplot when output.plots is on and gnuplot is installed (a failed or interrupted run leaves
+    the previous result there, or nothing). Result.notes says why pictures are missing, in the
+    words of geardyn run's notes.
 
     threads: OpenMP threads of the run (default: set_threads, else the library's). progress: called
     as progress(done, total, unit) from this thread about every POLL_S s while the run goes on
@@ -130,9 +143,10 @@ def run(case, out=None, *, threads=None, progress=None):
         if job.code != 0:
             raise_for(job.code, job.err)
         files = job.files()
+        notes = job.notes()
     finally:
         job.free()
-    return Result(files, os.fspath(out) if out is not None else None)
+    return Result(files, os.fspath(out) if out is not None else None, notes)
 
 
 def _wait(job, progress):
@@ -145,7 +159,7 @@ def _wait(job, progress):
         if p != last:
             last = p
             if progress(*p):
-                _lib_.gd_job_stop(job.ptr)
+                job.stop()
                 progress = None
     if progress:
         p = job.progress()
@@ -156,7 +170,7 @@ def _wait(job, progress):
 def _stop_and_wait(job):
     """Ctrl-C (or an exception of the progress callback): the library's stop hook, and the run
     waited for, since it must end before it is freed, even through a second Ctrl-C."""
-    _lib_.gd_job_stop(job.ptr)
+    job.stop()
     while not job.finished.is_set():
         try:
             job.finished.wait()

@@ -17,6 +17,10 @@ struct gd_job {
     atomic_long done, total;
     _Atomic(const char *) unit;
     gd_run_dir *out;          /* after a successful run: its files */
+    gd_draw_fn draw;          /* the caller's drawer of the pictures (NULL: none) */
+    void *draw_user;
+    char *notes;              /* the run's notes, one a line */
+    size_t nnotes_len;
 };
 
 static void count(gd_job *j, const char *unit, long done, long total)
@@ -95,6 +99,36 @@ static void on_problem(void *user, const struct gd_compare_entry *q, const gd_op
     atomic_fetch_add(&j->done, 1);
 }
 
+static gd_status on_draw(void *user, const char *dir, const char *script, const char *const *names, int nnames,
+                         gd_error *err)
+{
+    gd_job *j = user;
+    return j->draw(j->draw_user, dir, script, names, nnames, err);
+}
+
+/* A note joins the run's notes (a note already there is not repeated: an analysis run inside
+ * another, optimize's optimum, may say the same). */
+static void on_note(void *user, int kind, const char *text)
+{
+    (void)kind;
+    gd_job *j = user;
+    size_t n = strlen(text);
+    for (const char *p = j->notes; p && *p;) {
+        const char *e = strchr(p, '\n');
+        if ((size_t)(e - p) == n && memcmp(p, text, n) == 0)
+            return;
+        p = e + 1;
+    }
+    char *q = realloc(j->notes, j->nnotes_len + n + 2);
+    if (!q)
+        return; /* a note lost for want of memory loses nothing of the run */
+    memcpy(q + j->nnotes_len, text, n);
+    j->nnotes_len += n;
+    q[j->nnotes_len++] = '\n';
+    q[j->nnotes_len] = '\0';
+    j->notes = q;
+}
+
 GD_API gd_status gd_job_new(const gd_case *c, const char *dir, int threads, gd_job **job, gd_error *err)
 {
     *job = NULL;
@@ -152,6 +186,8 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     env.continuation_branch = on_branch;
     env.compare_problem = on_problem;
     env.basins_progress = on_basins;
+    env.draw = j->draw ? on_draw : NULL;
+    env.note = on_note;
     st = gd_analysis_run_dir(a, &j->c, &env, out, err);
     if (st != GD_OK) {
         gd_run_dir_close(out);
@@ -160,6 +196,14 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     j->out = out;
     return GD_OK;
 }
+
+GD_API void gd_job_set_draw(gd_job *j, gd_draw_fn draw, void *user)
+{
+    j->draw = draw;
+    j->draw_user = user;
+}
+
+GD_API const char *gd_job_notes(const gd_job *j) { return j->notes ? j->notes : ""; }
 
 GD_API void gd_job_stop(gd_job *j) { atomic_store(&j->stop, 1); }
 
@@ -184,5 +228,6 @@ GD_API void gd_job_free(gd_job *j)
         return;
     gd_run_dir_close(j->out);
     gd_case_free(&j->c);
+    free(j->notes);
     free(j);
 }
