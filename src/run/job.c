@@ -112,7 +112,15 @@ static void on_note(void *user, int kind, const char *text)
 {
     (void)kind;
     gd_job *j = user;
-    size_t n = strlen(text);
+    char line[GD_ERROR_MSG_MAX + 256];
+    snprintf(line, sizeof line, "%s", text); /* one line: a newline of gnuplot's message as a space, none at the end */
+    size_t n = strlen(line);
+    while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == ' '))
+        line[--n] = '\0';
+    for (char *c = line; *c; c++)
+        if (*c == '\n')
+            *c = ' ';
+    text = line;
     for (const char *p = j->notes; p && *p;) {
         const char *e = strchr(p, '\n');
         if ((size_t)(e - p) == n && memcmp(p, text, n) == 0)
