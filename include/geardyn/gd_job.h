@@ -37,6 +37,11 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err);
  * gd_job_run; set before gd_job_run. Without one a run into a directory draws no pictures and its
  * notes say so; a run in memory only draws none and says nothing. */
 GD_API void gd_job_set_draw(gd_job *j, gd_draw_fn draw, void *user);
+/* A sweep: continue the journal an interrupted run into the same directory left (geardyn run
+ * --resume): the points it holds are not run again, and the files are those of an uninterrupted
+ * run. Set before gd_job_run; a run into a directory only. Every sweep into a directory keeps the
+ * journal DIR/.sweep.journal while it runs (gd_sweep_journal) and leaves it when stopped. */
+GD_API void gd_job_set_resume(gd_job *j, int resume);
 /* The notes of the run so far (gd_run_env.note: no pictures and why, pictures not drawn and why),
  * one a line, each once; "" when none. Valid until gd_job_free; not while gd_job_run runs. */
 GD_API const char *gd_job_notes(const gd_job *j);

@@ -142,6 +142,32 @@ GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t le
 GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
                                        size_t *text_len, int *loaded, int *ignored, gd_error *err);
 
+/* The journal of a sweep in its run directory, DIR/.sweep.journal, as geardyn run and gd_job keep
+ * it: a header naming the sweep, then one record per finished point, appended and synced as the
+ * point finishes; removed (close with remove) once the final files are published, kept when the
+ * run is interrupted or fails, so that a resumed run gives the files of an uninterrupted one.
+ * open: the directory made and locked (gd_run_dir_make), the temporary files of an earlier run
+ * killed while writing removed; with resume the journal read back into pts (gd_sweep_journal_load;
+ * the row then runs only the points it lacks) and written back without its damaged lines, without
+ * resume a new one. append and point may be called from any thread. */
+typedef struct gd_sweep_journal gd_sweep_journal;
+GD_API gd_status gd_sweep_journal_open(gd_run_dir *out, const gd_sweep_plan *p, gd_sweep_point *pts, int resume,
+                                       gd_sweep_journal **j, gd_error *err);
+/* One record (gd_sweep_record_format's line, e.g. from another MPI rank), synced to disk. */
+GD_API gd_status gd_sweep_journal_append(gd_sweep_journal *j, const char *line, size_t len, gd_error *err);
+/* The record of the finished point pt, appended. */
+GD_API gd_status gd_sweep_journal_point(gd_sweep_journal *j, const gd_sweep_plan *p, const gd_sweep_point *pt,
+                                        gd_error *err);
+/* The journal as read back or started (header and records; for the other MPI ranks). */
+GD_API const char *gd_sweep_journal_text(const gd_sweep_journal *j, size_t *len);
+/* What open found, as geardyn run says it after "geardyn: " ("" when nothing): "resuming: K of N
+ * points already done", "note: no journal in DIR: the sweep starts from the beginning", "note: DIR
+ * held an unfinished sweep; starting over (--resume continues one)". */
+GD_API const char *gd_sweep_journal_note(const gd_sweep_journal *j);
+GD_API const char *gd_sweep_journal_path(const gd_sweep_journal *j);
+/* Close; remove: the journal's file too. NULL allowed. */
+GD_API void gd_sweep_journal_close(gd_sweep_journal *j, int remove);
+
 #ifdef __cplusplus
 }
 #endif

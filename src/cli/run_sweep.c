@@ -1,19 +1,17 @@
 /* The `sweep` analysis on the command line: the journal and --resume, signals, the progress
  * line, MPI ranks and the final files (the pictures are the library's: src/plot/plot_sweep.c).
  *
- * The journal (DIR/.sweep.journal) is the only file written while the sweep runs: a header
- * naming the sweep, then one checksummed record per finished point, appended and synced
- * to disk as the point finishes. --resume reads it back (dropping a line torn by a kill),
- * rewrites it without the damaged lines and runs only the points it lacks. At the end the
- * final files are written atomically from all the points in slot order and the journal is
- * removed, so an interrupted and resumed sweep gives the same files as an uninterrupted
- * one, whatever the number of threads or ranks. */
+ * The journal (DIR/.sweep.journal) is the library's (gd_sweep_journal, src/output/sweep_journal.c):
+ * a header naming the sweep, then one checksummed record per finished point, appended and synced
+ * as the point finishes; --resume reads it back and runs only the points it lacks. Here rank 0
+ * appends the records of the other MPI ranks to it. At the end the final files are written
+ * atomically from all the points in slot order and the journal is removed, so an interrupted and
+ * resumed sweep gives the same files as an uninterrupted one, whatever the number of threads or
+ * ranks. */
 #include "cli.h"
 #include "sweep_mpi.h"
 
-#include <dirent.h>
 #include <errno.h>
-#include <fcntl.h>
 #include <math.h>
 #include <pthread.h>
 #include <signal.h>
@@ -21,12 +19,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/file.h>
 #include <time.h>
 #include <unistd.h>
 
 
-#define JOURNAL ".sweep.journal"
 
 
 typedef struct sweep_cli {
@@ -35,7 +31,7 @@ typedef struct sweep_cli {
     const gd_sweep_plan *p;
     gd_sweep_point *pts;
     int rank, size;
-    int fd;                  /* the journal, rank 0 */
+    gd_sweep_journal *jr;    /* the journal, rank 0 (the library's: gd_sweep_journal_open) */
     char journal[GD_PATH_MAX + 32];
     pthread_mutex_t io;      /* journal appends, the progress line and MPI calls */
     int progress;
@@ -90,23 +86,6 @@ static void progress_line(sweep_cli *s, int final)
     fflush(stderr);
 }
 
-static gd_status journal_append(sweep_cli *s, const char *line, size_t len, gd_error *err)
-{
-    size_t off = 0;
-    while (off < len) {
-        ssize_t w = write(s->fd, line + off, len - off);
-        if (w < 0) {
-            if (errno == EINTR)
-                continue;
-            return gd_error_set(err, GD_ERR_IO, "%s: cannot append: %s", s->journal, strerror(errno));
-        }
-        off += (size_t)w;
-    }
-    if (fdatasync(s->fd) != 0 && errno != EINVAL)
-        return gd_error_set(err, GD_ERR_IO, "%s: cannot sync: %s", s->journal, strerror(errno));
-    return GD_OK;
-}
-
 /* a point of another rank, on rank 0 (the io lock is held) */
 static int on_remote_record(void *user, int source, const char *line, size_t len)
 {
@@ -118,7 +97,7 @@ static int on_remote_record(void *user, int source, const char *line, size_t len
         atomic_store(&s->fatal, 1);
         return 1;
     }
-    if (journal_append(s, line, len, &e) != GD_OK) {
+    if (gd_sweep_journal_append(s->jr, line, len, &e) != GD_OK) {
         s->fatal_err = e;
         atomic_store(&s->fatal, 1);
         return 1;
@@ -150,7 +129,7 @@ static gd_status on_point(void *user, const gd_sweep_plan *p, const gd_sweep_poi
         return st;
     pthread_mutex_lock(&s->io);
     if (s->rank == 0) {
-        st = journal_append(s, line, len, err);
+        st = gd_sweep_journal_append(s->jr, line, len, err);
         if (st == GD_OK) {
             s->done++;
             progress_line(s, 0);
@@ -181,74 +160,23 @@ static int should_stop(void *user)
     return atomic_load(&s->fatal);
 }
 
-/* Temporary files of an earlier run killed while writing its final files. */
-static void remove_stale_temporaries(const char *dir)
-{
-    static const char *prefixes[] = {".sweep.csv.tmp-", ".bifurcation.csv.tmp-", ".summary.json.tmp-",
-                                     "." JOURNAL ".tmp-", ".bifurcation.png.tmp", ".bifurcation.svg.tmp",
-                                     ".regime_map.png.tmp", ".regime_map.svg.tmp"};
-    DIR *d = opendir(dir);
-    if (!d)
-        return;
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL)
-        for (size_t i = 0; i < sizeof prefixes / sizeof prefixes[0]; i++)
-            if (strncmp(e->d_name, prefixes[i], strlen(prefixes[i])) == 0) {
-                char path[GD_PATH_MAX + 300];
-                snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
-                unlink(path);
-                break;
-            }
-    closedir(d);
-}
-
-/* Rank 0: the output directory and the journal (read back with --resume, else new). */
+/* Rank 0: the output directory and the journal (read back with --resume, else new: the library's,
+ * gd_sweep_journal_open); *text a copy of it for the other ranks. */
 static gd_status prepare(sweep_cli *s, const cli_case_args *a, gd_run_dir *out, char **text, size_t *tlen,
                          gd_error *err)
 {
-    const char *dir = gd_run_dir_path(out);
-    gd_status st = gd_run_dir_make(out, err);
+    gd_status st = gd_sweep_journal_open(out, s->p, s->pts, a->resume, &s->jr, err);
     if (st != GD_OK)
         return st;
-    remove_stale_temporaries(dir);
-    snprintf(s->journal, sizeof s->journal, "%s/%s", dir, JOURNAL);
-    int exists = access(s->journal, F_OK) == 0;
-    if (a->resume) {
-        int loaded = 0, ignored = 0;
-        st = gd_sweep_journal_load(s->journal, s->p, s->pts, text, tlen, &loaded, &ignored, err);
-        if (st != GD_OK)
-            return st;
-        if (!a->quiet) {
-            if (!exists)
-                fprintf(stderr, "geardyn: note: no journal in %s: the sweep starts from the beginning\n", dir);
-            else
-                fprintf(stderr, "geardyn: resuming: %d of %d points already done%s\n", loaded, s->p->nslots,
-                        ignored ? " (a torn or unusable journal line was dropped)" : "");
-        }
-    } else {
-        char header[300];
-        gd_sweep_journal_header(s->p, header, sizeof header);
-        *tlen = strlen(header);
-        *text = malloc(*tlen + 1);
-        if (!*text)
-            return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
-        memcpy(*text, header, *tlen + 1);
-        if (exists && !a->quiet)
-            fprintf(stderr, "geardyn: note: %s held an unfinished sweep; starting over (--resume continues one)\n",
-                    dir);
-    }
-    FILE *fp;
-    if ((st = gd_run_dir_create(out, JOURNAL, &fp, err)) != GD_OK)
-        return st;
-    if (fwrite(*text, 1, *tlen, fp) != *tlen) {
-        gd_run_dir_discard(out, fp);
-        return gd_error_set(err, GD_ERR_IO, "%s: cannot write", s->journal);
-    }
-    if ((st = gd_run_dir_commit(out, fp, err)) != GD_OK)
-        return st;
-    s->fd = open(s->journal, O_WRONLY | O_APPEND | O_CLOEXEC);
-    if (s->fd < 0)
-        return gd_error_set(err, GD_ERR_IO, "%s: cannot open: %s", s->journal, strerror(errno));
+    snprintf(s->journal, sizeof s->journal, "%s", gd_sweep_journal_path(s->jr));
+    const char *note = gd_sweep_journal_note(s->jr);
+    if (note[0] && !a->quiet)
+        fprintf(stderr, "geardyn: %s\n", note);
+    const char *t = gd_sweep_journal_text(s->jr, tlen);
+    if (!(*text = malloc(*tlen + 1)))
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    memcpy(*text, t, *tlen);
+    (*text)[*tlen] = '\0';
     return GD_OK;
 }
 
@@ -477,9 +405,8 @@ static gd_status on_end(void *user, const gd_sweep_plan *p, const gd_sweep_point
     if (s->rank != 0)
         return GD_ERR_INTERRUPTED; /* rank 0 writes; the exit status comes from it */
     progress_line(s, 1);
-    if (s->fd >= 0)
-        close(s->fd);
-    s->fd = -1;
+    gd_sweep_journal_close(s->jr, 0); /* kept: removed once the files are published (on_done) */
+    s->jr = NULL;
     int pending = gd_sweep_pending(p, pts);
     if (pending) {
         s->rc = conclude(s, pending, st, err);
@@ -526,7 +453,6 @@ int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
     s.a = a;
     s.rank = cli_mpi_rank();
     s.size = cli_mpi_size();
-    s.fd = -1;
     pthread_mutex_init(&s.io, NULL);
     sweep_env(&s, a, &env);
     s.threads = cli_threads(env.threads);
@@ -535,8 +461,7 @@ int run_sweep(const cli_case_args *a, gd_case *c, const char *dir)
     int rc = s.decided ? s.rc : st == GD_OK ? 0 : cli_signal_caught() ? cli_interrupted(dir) : cli_fail(&err);
     if (s.size > 1)
         rc = cli_mpi_bcast_int(rc);
-    if (s.fd >= 0)
-        close(s.fd);
+    gd_sweep_journal_close(s.jr, 0);
     pthread_mutex_destroy(&s.io);
     free(s.text);
     return rc;

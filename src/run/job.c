@@ -20,6 +20,8 @@ struct gd_job {
     gd_draw_fn draw;          /* the caller's drawer of the pictures (NULL: none) */
     void *draw_user;
     char *notes;              /* the run's notes, one a line */
+    int resume;               /* a sweep: continue the journal of an interrupted one */
+    gd_sweep_journal *journal; /* a sweep's, in a directory on disk */
     size_t nnotes_len;
 };
 
@@ -42,20 +44,33 @@ static int on_progress(void *user, long done, long total)
     return should_stop(user);
 }
 
+static void on_note(void *user, int kind, const char *text);
+
+/* A sweep into a directory keeps the journal geardyn run keeps (resumed with j->resume); its note
+ * joins the run's notes ("note: " of geardyn run's line off). */
 static gd_status on_sweep_start(void *user, const gd_sweep_plan *p, gd_sweep_point *pts, gd_run_dir *out,
                                 gd_error *err)
 {
-    (void)pts;
-    count(user, "points", 0, p->nslots);
-    return gd_run_dir_make(out, err); /* as geardyn run does for its journal: locked from the start */
+    gd_job *j = user;
+    if (j->disk) {
+        gd_status st = gd_sweep_journal_open(out, p, pts, j->resume, &j->journal, err);
+        if (st != GD_OK)
+            return st;
+        const char *note = gd_sweep_journal_note(j->journal);
+        if (note[0])
+            on_note(j, 0, strncmp(note, "note: ", 6) == 0 ? note + 6 : note);
+    }
+    count(user, "points", p->nslots - gd_sweep_pending(p, pts), p->nslots);
+    return GD_OK;
 }
 
 static gd_status on_sweep_point(void *user, const gd_sweep_plan *p, const gd_sweep_point *pt, gd_error *err)
 {
-    (void)p, (void)pt, (void)err;
     gd_job *j = user;
-    atomic_fetch_add(&j->done, 1);
-    return GD_OK;
+    gd_status st = j->journal ? gd_sweep_journal_point(j->journal, p, pt, err) : GD_OK;
+    if (st == GD_OK)
+        atomic_fetch_add(&j->done, 1);
+    return st;
 }
 
 static int on_wp_start(void *user, const char *what, const char *label, int index, int total)
@@ -197,6 +212,8 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     env.draw = j->draw ? on_draw : NULL;
     env.note = on_note;
     st = gd_analysis_run_dir(a, &j->c, &env, out, err);
+    gd_sweep_journal_close(j->journal, st == GD_OK); /* kept for a resume unless the files are published */
+    j->journal = NULL;
     if (st != GD_OK) {
         gd_run_dir_close(out);
         return st;
@@ -210,6 +227,8 @@ GD_API void gd_job_set_draw(gd_job *j, gd_draw_fn draw, void *user)
     j->draw = draw;
     j->draw_user = user;
 }
+
+GD_API void gd_job_set_resume(gd_job *j, int resume) { j->resume = resume; }
 
 GD_API const char *gd_job_notes(const gd_job *j) { return j->notes ? j->notes : ""; }
 
