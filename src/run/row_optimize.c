@@ -268,6 +268,8 @@ static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const 
         quiet.user = env->user;
         quiet.threads = env->threads;
         quiet.pictures = env->pictures;
+        quiet.draw = env->draw;
+        quiet.note = env->note;
         quiet.should_stop = env->should_stop;
     }
     char name[64];
