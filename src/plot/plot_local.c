@@ -2,7 +2,7 @@
  * the chosen response variable's time history, phase portrait, amplitude spectrum and Poincare
  * section, drawn from the tables the response row wrote and from the samples in memory (the
  * curves through the samples). The time history and the phase portrait of time_history.png and
- * phase.png (run_response.c) are drawn with the same view. */
+ * phase.png (plot_response.c) are drawn with the same view. */
 #include "figure.h"
 
 #include <math.h>

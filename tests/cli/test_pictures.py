@@ -43,7 +43,7 @@ shape (a sweep's points are not bifurcations) and every row of bifurcations.csv 
 of its kind (branch points too); the optimiser comparison draws no overlapping
 translucent bands.
 
-The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its layout is the PNG's.
+The SVG is drawn with the PNG's font size in pixels (src/plot/figure.h), so its layout is the PNG's.
 
   test_pictures.py                 (GEARDYN names the executable, GEARDYN_SOURCE the source tree)
   test_pictures.py --keep DIR      runs and keeps the outputs in DIR
