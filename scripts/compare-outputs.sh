@@ -183,8 +183,8 @@ def journal_norm(b):
         t = line.split(' ')
         if t and t[0] == 'GDSWEEP' and len(t) > 2:
             t[2] = '<version>'
-        if t and t[0] == 'P' and len(t) > 21:
-            t[21] = '<wall_s>'
+        if t and t[0] == 'P' and len(t) > 23:
+            t[23] = '<wall_s>'   # gd_sweep_record_format: P slot chain pos branch status motion ... events transient wall_s
         if t and t[-1].startswith('*'):
             t[-1] = '<crc>'
         out.append(t)

@@ -34,7 +34,7 @@ import sys
 
 # The layers, lowest first; a folder under src/ is a layer.
 LAYERS = ['core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
-          'optimisation', 'analysis', 'output', 'run', 'cli']
+          'optimisation', 'analysis', 'output', 'plot', 'run', 'cli']
 
 # The allowed arrows: what each layer may include (itself and the layers below it).
 ALLOWED = {
@@ -52,11 +52,14 @@ ALLOWED = {
                      'optimisation', 'analysis'},
     'output':       {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
                      'optimisation', 'analysis', 'output'},
+    # the pictures: gnuplot scripts of an analysis's results, handed to the caller's drawer
+    'plot':         {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
+                     'optimisation', 'analysis', 'output', 'plot'},
     # the table of analyses: each row runs an analysis and writes its files through output
     'run':          {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
-                     'optimisation', 'analysis', 'output', 'run'},
+                     'optimisation', 'analysis', 'output', 'plot', 'run'},
     'cli':          {'core', 'case', 'geometry', 'contact', 'excitation', 'dynamics', 'scene',
-                     'optimisation', 'analysis', 'output', 'run', 'cli'},
+                     'optimisation', 'analysis', 'output', 'plot', 'run', 'cli'},
 }
 
 # The layer of each public header. ANY: includable from every layer (a generated constant header).

@@ -237,6 +237,106 @@ static char *slurp(const char *dir, const char *name, size_t *len)
 }
 
 /* The job's bytes of name are dir/name's. */
+/* The pictures through a drawer (gd_run_env.draw): what a C program gets with none, with one that
+ * draws and with one that fails. */
+typedef struct drawer_log {
+    int kinds[8], nnotes, calls, asked;
+    char notes[8][GD_ERROR_MSG_MAX + 256];
+    char names[8][64];
+    int nnames, script_ok;
+    int fail;
+} drawer_log;
+
+static void log_note(void *user, int kind, const char *text)
+{
+    drawer_log *l = user;
+    if (l->nnotes < 8) {
+        l->kinds[l->nnotes] = kind;
+        snprintf(l->notes[l->nnotes++], sizeof l->notes[0], "%s", text);
+    }
+}
+
+/* writes a whole PNG (signature .. IEND) and SVG (.. </svg>) for every name, as a drawer must */
+static gd_status fake_draw(void *user, const char *dir, const char *script, const char *const *names, int nnames,
+                           gd_error *err)
+{
+    drawer_log *l = user;
+    if (!script) {
+        l->asked++;
+        return GD_OK;
+    }
+    l->calls++;
+    if (l->fail)
+        return gd_error_set(err, GD_ERR_IO, "the drawer failed on purpose");
+    l->script_ok = strstr(script, "set terminal svg") && strstr(script, "set output '.gte.svg.tmp'") != NULL;
+    for (int i = 0; i < nnames && l->nnames < 8; i++) {
+        snprintf(l->names[l->nnames++], sizeof l->names[0], "%s", names[i]);
+        char path[2048];
+        snprintf(path, sizeof path, "%s/%s.png", dir, names[i]);
+        FILE *f = fopen(path, "wb");
+        if (f) {
+            fwrite("\x89PNG\r\n\x1a\n\0\0\0\0IEND\xae\x42\x60\x82", 1, 20, f);
+            fclose(f);
+        }
+        snprintf(path, sizeof path, "%s/%s.svg", dir, names[i]);
+        f = fopen(path, "w");
+        if (f) {
+            fputs("<svg></svg>\n", f);
+            fclose(f);
+        }
+    }
+    return GD_OK;
+}
+
+static void drawer(const char *tmp)
+{
+    gd_case c;
+    gd_error e = {0};
+    char path[2048];
+    const char *src = getenv("GEARDYN_SOURCE");
+    snprintf(path, sizeof path, "%s/cases/paper/tca-modified.ini", src ? src : ".");
+    CHECK(gd_case_init(&c, &e), &e);
+    CHECK(gd_case_load(&c, path, &e), &e);
+    CHECK(gd_case_set(&c, "output.plots=on", 0, &e), &e);
+    CHECK(gd_case_resolve(&c, &e), &e);
+    const gd_analysis_type *a = gd_analysis_find(GD_ANALYSIS_TCA);
+    char dir[1024];
+    for (int k = 0; k < 3; k++) { /* no drawer, one that draws, one that fails */
+        drawer_log l;
+        memset(&l, 0, sizeof l);
+        l.fail = k == 2;
+        gd_run_env env;
+        memset(&env, 0, sizeof env);
+        env.user = &l;
+        env.note = log_note;
+        env.draw = k ? fake_draw : NULL;
+        snprintf(dir, sizeof dir, "%s/drawer%d", tmp, k);
+        gd_status st = gd_analysis_run_in(a, &c, &env, dir, &e);
+        int pics = exists(dir, "gte.png") + exists(dir, "gte.svg") + exists(dir, "contact_pattern.png") +
+                   exists(dir, "contact_pattern.svg");
+        size_t len = 0;
+        char *sum = slurp(dir, "summary.json", &len);
+        int listed = sum && strstr(sum, "\"gte.svg\"") != NULL;
+        if (k == 0)
+            tap_ok(st == GD_OK && pics == 0 && !listed && l.nnotes == 1 && l.kinds[0] == GD_NOTE_NO_PICTURES &&
+                       strcmp(l.notes[0], "no drawer was given (gd_run_env.draw): no pictures") == 0,
+                   "drawer: without one, no pictures and the note says so (%d notes: %s)", l.nnotes, l.notes[0]);
+        else if (k == 1)
+            tap_ok(st == GD_OK && pics == 4 && listed && l.nnotes == 0 && l.calls == 1 && l.asked >= 1 &&
+                       l.script_ok && l.nnames == 2 && strcmp(l.names[0], "contact_pattern") == 0 &&
+                       strcmp(l.names[1], "gte") == 0,
+                   "drawer: asked first, then handed the script of contact_pattern and gte; the pictures drawn "
+                   "are published and listed (%d of 4)", pics);
+        else
+            tap_ok(st == GD_OK && pics == 0 && !listed && l.nnotes == 1 && l.kinds[0] == GD_NOTE_PICTURES_FAILED &&
+                       strcmp(l.notes[0], "pictures not drawn: the drawer failed on purpose") == 0,
+                   "drawer: one that fails gives the note 'pictures not drawn: ...' and the run its files (%s)",
+                   l.notes[0]);
+        free(sum);
+    }
+    gd_case_free(&c);
+}
+
 static int same_bytes(const gd_job *j, const char *dir, const char *name)
 {
     size_t n = 0, m = 0;
@@ -331,6 +431,7 @@ int main(void)
     response(tmp);
     tca(tmp);
     kept(tmp);
+    drawer(tmp);
     if (tap_failed == 0)
         nftw(tmp, remove_entry, 16, FTW_DEPTH | FTW_PHYS); /* kept for a look when a check failed */
     return tap_done();

@@ -10,6 +10,7 @@
  *     gd_run_dir_open("results/x", &out, &err);
  *     a->run(&c, &env, out, &res, &err);      streaming files (time_history.csv ...) as it runs
  *     a->write(&c, res, out, &err);           the tables (CSV)
+ *     a->pictures(&c, res, out, &env);        through env.draw, if any (gd_output.h: gd_draw_fn)
  *     ... pictures of one's own: gd_run_dir_add(out, "picture.png", &err)
  *     a->summary(&c, res, out, &err);         summary.json, listing every file of out
  *     gd_run_dir_publish(out, &err);          the set moved from the stage into results/x
@@ -81,6 +82,11 @@ typedef struct gd_run_env {
      * GD_OK to go on to the matching and the files; another rank sends its points and returns any other
      * status (its run ends without files). */
     gd_status (*basins_end)(void *user, gd_basins_result *res, gd_status st, gd_error *err);
+    /* every run with output.plots on, into a directory: the drawer that turns the analysis's gnuplot
+     * script into its pictures (gd_output.h: gd_draw_fn; NULL: no pictures, and a note says so) */
+    gd_draw_fn draw;
+    /* the run's notes (gd_output.h: gd_note_fn): no pictures and why, pictures not drawn and why */
+    gd_note_fn note;
 } gd_run_env;
 
 typedef struct gd_analysis_type {
@@ -98,6 +104,10 @@ typedef struct gd_analysis_type {
     /* summary.json: the case, the results and every file out holds, itself last. */
     gd_status (*summary)(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err);
     void (*free)(void *result);
+    /* The pictures of the result (when c->plots), drawn by env->draw into out's stage between write
+     * and summary and added to out's files; never fails the run: what is not drawn is a note
+     * (env->note). NULL: an analysis without pictures. */
+    void (*pictures)(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env);
 } gd_analysis_type;
 
 /* The results of the rows (what run gives as *result): response: gd_response_outcome
@@ -111,7 +121,8 @@ GD_API const gd_analysis_type *gd_analysis_types(size_t *n);
 /* The row of an analysis, or NULL when this build has none. */
 GD_API const gd_analysis_type *gd_analysis_find(int id);
 
-/* The whole of an analysis in the directory dir: run, write, the pictures (env->pictures), summary,
+/* The whole of an analysis in the directory dir: run, write, the pictures (the row's pictures through
+ * env->draw, then env->pictures), summary,
  * then env->done with the result, which is freed; env->ran after run. This is `geardyn run`
  * without its printing. */
 GD_API gd_status gd_analysis_run_in(const gd_analysis_type *a, const gd_case *c, const gd_run_env *env,

@@ -14,8 +14,9 @@
  * analysis's row of the table (gd_analysis_run_dir) in a run directory that keeps its files in
  * memory: without a directory nothing touches the disk; with one the files are also written and
  * published there as geardyn run publishes them (stage, lock, one-step exchange; a failed or
- * stopped run leaves the previous result or nothing), its pictures apart (the command line draws
- * them with gnuplot; the library spawns no process). */
+ * stopped run leaves the previous result or nothing), with its pictures when the caller gives a
+ * drawer (gd_job_set_draw: the library spawns no process; the Python module's runs gnuplot as the
+ * command line does). */
 #ifndef GD_JOB_H
 #define GD_JOB_H
 
@@ -32,6 +33,18 @@ typedef struct gd_job gd_job;
 GD_API gd_status gd_job_new(const gd_case *c, const char *dir, int threads, gd_job **job, gd_error *err);
 /* Prepare the case and run its analysis (once). GD_ERR_INTERRUPTED when stopped. */
 GD_API gd_status gd_job_run(gd_job *j, gd_error *err);
+/* The drawer of the run's pictures (gd_output.h: gd_draw_fn), called with user from the thread of
+ * gd_job_run; set before gd_job_run. Without one a run into a directory draws no pictures and its
+ * notes say so; a run in memory only draws none and says nothing. */
+GD_API void gd_job_set_draw(gd_job *j, gd_draw_fn draw, void *user);
+/* A sweep: continue the journal an interrupted run into the same directory left (geardyn run
+ * --resume): the points it holds are not run again, and the files are those of an uninterrupted
+ * run. Set before gd_job_run; a run into a directory only. Every sweep into a directory keeps the
+ * journal DIR/.sweep.journal while it runs (gd_sweep_journal) and leaves it when stopped. */
+GD_API void gd_job_set_resume(gd_job *j, int resume);
+/* The notes of the run so far (gd_run_env.note: no pictures and why, pictures not drawn and why),
+ * one a line, each once; "" when none. Valid until gd_job_free; not while gd_job_run runs. */
+GD_API const char *gd_job_notes(const gd_job *j);
 /* Ask the run to stop (any thread, any time, also before gd_job_run): it ends with
  * GD_ERR_INTERRUPTED at the next unit of work it asks (a mesh period, a sweep point, a contact
  * position, an objective evaluation) and publishes nothing. */

@@ -66,6 +66,25 @@ GD_API const char *gd_run_dir_fallback(const gd_run_dir *d);
 /* The files of the run so far, in order (valid until the next call on d). */
 GD_API const char *const *gd_run_dir_files(const gd_run_dir *d, int *n);
 
+/* The pictures of a run. The library writes the gnuplot script of an analysis's pictures and asks
+ * a drawer its caller gives (gd_run_env.draw) to turn it into pictures; it never spawns a process
+ * itself, so a run without a drawer has no pictures (its notes say so). The drawer is called with
+ * dir, the run's stage (the script reads the run's tables by their names there), the script, and
+ * the stems names[0..nnames-1] of the pictures it writes, each as .NAME.png.tmp and .NAME.svg.tmp
+ * in dir: it runs the script in dir and, when it succeeded and every picture is whole (a PNG to
+ * its IEND chunk, an SVG to its closing tag), moves them to NAME.png and NAME.svg, removing the
+ * temporary files either way; any other outcome is an error whose message says why. Called with
+ * script NULL it says whether it can draw at all: GD_OK, or an error whose message is the note
+ * ("gnuplot is not installed: ..."). The command line's drawer runs gnuplot (src/cli/gnuplot.c),
+ * the Python module's too (python/geardyn/_draw.py). */
+typedef gd_status (*gd_draw_fn)(void *user, const char *dir, const char *script, const char *const *names,
+                                int nnames, gd_error *err);
+/* What a note of a run is about: no pictures at all (pictures wanted, but no drawer or it cannot
+ * draw; the text says why), or some pictures not drawn (the text names them and says why). */
+enum { GD_NOTE_NO_PICTURES = 1, GD_NOTE_PICTURES_FAILED = 2 };
+/* A note of a run for its caller (gd_run_env.note): kind (above) and a line of text. */
+typedef void (*gd_note_fn)(void *user, int kind, const char *text);
+
 /* Summary of an event log file (geardyn events). */
 typedef struct gd_eventlog_filter {
     double t_from_s, t_to_s;  /* window (inclusive); +-inf for all */
@@ -122,6 +141,32 @@ GD_API void gd_sweep_journal_header(const gd_sweep_plan *p, char *buf, size_t le
  * gives no points; a journal of another sweep is GD_ERR_INPUT. */
 GD_API gd_status gd_sweep_journal_load(const char *path, const gd_sweep_plan *p, gd_sweep_point *pts, char **text,
                                        size_t *text_len, int *loaded, int *ignored, gd_error *err);
+
+/* The journal of a sweep in its run directory, DIR/.sweep.journal, as geardyn run and gd_job keep
+ * it: a header naming the sweep, then one record per finished point, appended and synced as the
+ * point finishes; removed (close with remove) once the final files are published, kept when the
+ * run is interrupted or fails, so that a resumed run gives the files of an uninterrupted one.
+ * open: the directory made and locked (gd_run_dir_make), the temporary files of an earlier run
+ * killed while writing removed; with resume the journal read back into pts (gd_sweep_journal_load;
+ * the row then runs only the points it lacks) and written back without its damaged lines, without
+ * resume a new one. append and point may be called from any thread. */
+typedef struct gd_sweep_journal gd_sweep_journal;
+GD_API gd_status gd_sweep_journal_open(gd_run_dir *out, const gd_sweep_plan *p, gd_sweep_point *pts, int resume,
+                                       gd_sweep_journal **j, gd_error *err);
+/* One record (gd_sweep_record_format's line, e.g. from another MPI rank), synced to disk. */
+GD_API gd_status gd_sweep_journal_append(gd_sweep_journal *j, const char *line, size_t len, gd_error *err);
+/* The record of the finished point pt, appended. */
+GD_API gd_status gd_sweep_journal_point(gd_sweep_journal *j, const gd_sweep_plan *p, const gd_sweep_point *pt,
+                                        gd_error *err);
+/* The journal as read back or started (header and records; for the other MPI ranks). */
+GD_API const char *gd_sweep_journal_text(const gd_sweep_journal *j, size_t *len);
+/* What open found, as geardyn run says it after "geardyn: " ("" when nothing): "resuming: K of N
+ * points already done", "note: no journal in DIR: the sweep starts from the beginning", "note: DIR
+ * held an unfinished sweep; starting over (--resume continues one)". */
+GD_API const char *gd_sweep_journal_note(const gd_sweep_journal *j);
+GD_API const char *gd_sweep_journal_path(const gd_sweep_journal *j);
+/* Close; remove: the journal's file too. NULL allowed. */
+GD_API void gd_sweep_journal_close(gd_sweep_journal *j, int remove);
 
 #ifdef __cplusplus
 }

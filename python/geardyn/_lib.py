@@ -96,6 +96,9 @@ _PROTOTYPES = [
     ('gd_job_progress', c_char_p, [c_void_p, POINTER(c_long), POINTER(c_long)]),
     ('gd_job_file', c_void_p, [c_void_p, c_char_p, POINTER(c_size_t)]),
     ('gd_job_free', None, [c_void_p]),
+    ('gd_job_set_draw', None, [c_void_p, c_void_p, c_void_p]),
+    ('gd_job_notes', c_char_p, [c_void_p]),
+    ('gd_job_set_resume', None, [c_void_p, c_int]),
     ('gd_eventlog_select', c_int, [c_char_p, POINTER(EventlogFilter), POINTER(c_void_p), POINTER(c_size_t),
                                    c_void_p, POINTER(Error_t)]),
 ]

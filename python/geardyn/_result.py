@@ -77,14 +77,17 @@ class Result:
     """A run's results. summary: summary.json as a dict; tables: {name: structured array} of every
     CSV file (name without .csv: 'time_history', 'sweep', 'branch', ...); json: the other JSON files;
     subruns: {name: Result} of the run's sub-directories (optimize: 'optimum', 'optimum-tca');
-    files: the files summary.json lists, in its order; pictures: those that are pictures (drawn by
-    the command line; a run from Python draws none; not read); other: files of any other kind;
+    files: the files summary.json lists, in its order; pictures: those that are pictures (drawn with
+    gnuplot into the directory of a run with out=, as geardyn run draws them; not read); other:
+    files of any other kind; notes: the run's notes (no pictures and why, pictures not drawn and
+    why: the lines geardyn run prints as "geardyn: note: ..."; [] for a directory read);
     raw: {name: bytes} of every file read (all but the pictures);
     directory: where it was read from or written to (None for a run in memory). result[name] is a
     table ('time_history' or 'time_history.csv'), a sub-run's table ('optimum/lte') or a sub-run."""
 
-    def __init__(self, files, directory=None):
+    def __init__(self, files, directory=None, notes=()):
         self.directory = directory
+        self.notes = list(notes)
         self.raw = dict(files)
         try:
             self.summary = json.loads(files['summary.json'].decode('utf-8'))

@@ -6,7 +6,7 @@ import os
 import signal
 import threading
 
-from . import _lib
+from . import _draw, _lib
 from ._case import Case
 from ._errors import Error, raise_for
 from ._result import Result
@@ -43,7 +43,7 @@ def openmp():
 
 
 class _Job:
-    def __init__(self, case, out, nthreads):
+    def __init__(self, case, out, nthreads, resume=False):
         err = _lib.Error_t()
         self.ptr = _lib.c_void_p()
         code = _lib_.gd_job_new(case._ptr, os.fsencode(out) if out is not None else None, nthreads,
@@ -53,6 +53,19 @@ class _Job:
         self.code = None
         self.err = _lib.Error_t()
         self.finished = threading.Event()
+        self.stopping = threading.Event()
+        if resume:
+            _lib_.gd_job_set_resume(self.ptr, 1)
+        if out is not None:  # pictures are files of a directory: a run in memory draws none
+            self.drawer = _draw.drawer(self.stopping.is_set)  # kept alive while the run goes on
+            _lib_.gd_job_set_draw(self.ptr, _lib.ctypes.cast(self.drawer, _lib.c_void_p), None)
+
+    def stop(self):
+        self.stopping.set()
+        _lib_.gd_job_stop(self.ptr)
+
+    def notes(self):
+        return [n for n in _lib.text(_lib_.gd_job_notes(self.ptr)).split('\n') if n]
 
     def body(self):
         # signals go to the waiting thread (Python's handlers run there), never interrupt a system
@@ -98,11 +111,19 @@ class _Job:
             self.ptr = None
 
 
-def run(case, out=None, *, threads=None, progress=None):
+def run(case, out=None, *, threads=None, progress=None, resume=False):
     """Run the analysis of case ([scene] analysis; a Case or the path of a case file) and return its
-    Result: the files geardyn run writes (but the pictures), parsed, computed in memory; with out,
-    also written and published into the directory out exactly as geardyn run --out out does (a
-    failed or interrupted run leaves the previous result there, or nothing).
+    Result: the files geardyn run writes, parsed, computed in memory; with out, also written and
+    published into the directory out exactly as geardyn run --out out does, its pictures drawn by
+    gnuplot when output.plots is on and gnuplot is installed (a failed or interrupted run leaves
+    the previous result there, or nothing). Result.notes says why pictures are missing, in the
+    words of geardyn run's notes.
+
+    A sweep into out keeps the journal out/.sweep.journal as geardyn run does (a record per point
+    as it finishes, synced); a stopped sweep leaves it there, and resume=True continues it as
+    geardyn run --resume does: the points it holds are not run again and the files are those of an
+    uninterrupted run (Result.notes: "resuming: K of N points already done", or "no journal in
+    out: the sweep starts from the beginning").
 
     threads: OpenMP threads of the run (default: set_threads, else the library's). progress: called
     as progress(done, total, unit) from this thread about every POLL_S s while the run goes on
@@ -117,7 +138,9 @@ def run(case, out=None, *, threads=None, progress=None):
     n = _threads if threads is None else int(threads)
     if n < 0:
         raise ValueError('threads: %d (valid: 0 for the default, or a positive number)' % n)
-    job = _Job(case, out, n)
+    if resume and out is None:
+        raise ValueError('resume: a sweep resumes in the directory it was interrupted in (give out)')
+    job = _Job(case, out, n, bool(resume))
     worker = threading.Thread(target=job.body, name='geardyn run', daemon=True)
     try:
         try:
@@ -130,9 +153,10 @@ def run(case, out=None, *, threads=None, progress=None):
         if job.code != 0:
             raise_for(job.code, job.err)
         files = job.files()
+        notes = job.notes()
     finally:
         job.free()
-    return Result(files, os.fspath(out) if out is not None else None)
+    return Result(files, os.fspath(out) if out is not None else None, notes)
 
 
 def _wait(job, progress):
@@ -145,7 +169,7 @@ def _wait(job, progress):
         if p != last:
             last = p
             if progress(*p):
-                _lib_.gd_job_stop(job.ptr)
+                job.stop()
                 progress = None
     if progress:
         p = job.progress()
@@ -156,7 +180,7 @@ def _wait(job, progress):
 def _stop_and_wait(job):
     """Ctrl-C (or an exception of the progress callback): the library's stop hook, and the run
     waited for, since it must end before it is freed, even through a second Ctrl-C."""
-    _lib_.gd_job_stop(job.ptr)
+    job.stop()
     while not job.finished.is_set():
         try:
             job.finished.wait()

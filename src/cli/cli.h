@@ -6,7 +6,6 @@
 
 #include "geardyn/geardyn.h"
 #include "gnuplot.h"
-#include "quantity.h"
 
 #define CLI_MAX_SETS 256
 
@@ -57,19 +56,16 @@ typedef struct cli_progress {
     int quiet, tty;
     long last_pct;
     const cli_case_args *args;
-    const char *note;        /* for the end of the run: why there are no pictures */
+    char note[GD_ERROR_MSG_MAX]; /* for the end of the run: why there are no pictures ("": none) */
 } cli_progress;
 
 /* The command line's part of an analysis of the library's table: what it prints before the run
- * and after it (the progress line's end), its pictures (drawn after the tables, added to the
- * run's files before summary.json), its lines on stdout. Any may be NULL. */
+ * and after it (the progress line's end), its lines on stdout. Any may be NULL. (The pictures are
+ * the library's, drawn by the command line's drawer, cli_gnuplot_drawer.) */
 typedef struct cli_row {
     int analysis;
     void (*announce)(const char *dir, const gd_case *c);
     void (*after_run)(const cli_progress *p, gd_status st);
-    /* *note: a note for the end of the run (gnuplot missing) */
-    void (*pictures)(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                     const char **note);
     void (*report)(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
     /* an analysis whose run needs more of the command line (the sweep), which then calls
      * gd_analysis_run_in itself */
@@ -77,89 +73,44 @@ typedef struct cli_row {
 } cli_row;
 
 /* The environment of a run: *p (its user) from the arguments, the command line's hooks of every
- * analysis (progress, pictures, the lines at the end). */
+ * analysis (progress, the drawer of the pictures and the notes, the lines at the end). */
 void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env);
+/* The notes of a run (gd_run_env.note, user a cli_progress): pictures not drawn at once on stderr,
+ * no pictures at all kept for the end of the run (printed unless --quiet). */
+void cli_note(void *user, int kind, const char *text);
 /* Unless quiet, the note that DIR received its files one by one, not in one step, and why
  * (gd_run_dir_fallback, docs/robustness.md). */
 void cli_publish_note(const cli_case_args *a, const gd_run_dir *out);
 
 int cli_response_progress(void *user, long done, long total);
 void cli_response_after_run(const cli_progress *p, gd_status st);
-void cli_response_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                           const char **note);
 void cli_response_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
-/* the four-panel figure of the local analysis (response.png, response.svg) */
-void cli_local_draw(const gd_case *c, const gd_response_outcome *r, gd_run_dir *out);
-/* How the local analysis's variable is drawn (local_analysis.c), for response.png and for
- * time_history.png and phase.png: its quantity and rate, the window of the time history (the last
- * periods, as many as a panel width_px wide shows readably), the ranges of the phase plane. */
-typedef struct cli_local_view {
-    cli_qty x, v;
-    char xlabel[256], vlabel[256];
-    size_t i0, p0;            /* first samples of the time window and of the phase portrait */
-    int shown;                /* mesh periods of the time window */
-    double t_from_ms, t_end_ms;
-    double xlo, xhi, vlo, vhi;
-} cli_local_view;
-void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double width_px, cli_local_view *v);
-/* the data blocks $TH (time window) and $PH (phase portrait): samples and the curve through them */
-void cli_local_blocks(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v);
-/* the time history panel ($TH) with key entry key (NULL: no key) and more plots after it (more:
- * ", ..." or NULL) */
-void cli_local_time_panel(gd_gnuplot_script *s, const cli_local_view *v, const char *title, const char *key,
-                          const char *more);
-/* the phase portrait panel ($PH), with the Poincare points when with_poincare (2: with a key) */
-void cli_local_phase_panel(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v,
-                           const char *title, int with_poincare);
-/* "period-1, single-sided impacts, largest Lyapunov exponent -0.213 per mesh period" */
-void cli_local_motion(const gd_response_result *r, char *buf, size_t len);
-
-void cli_tca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                      const char **note);
 void cli_tca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
-void cli_ltca_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                       const char **note);
 void cli_ltca_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 int cli_workprec_start(void *user, const char *what, const char *label, int index, int total);
 int cli_workprec_done(void *user, const char *what, const gd_wp_run *r, const gd_wp_result *res);
 void cli_workprec_announce(const char *dir, const gd_case *c);
 void cli_workprec_after_run(const cli_progress *p, gd_status st);
-void cli_workprec_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                           const char **note);
 void cli_workprec_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r);
-void cli_optimize_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                           const char **note);
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_compare_settings *s);
-void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                          const char **note);
 void cli_compare_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 /* The sweep: the journal and --resume, signals, the progress line and MPI ranks around the row's
  * run (src/cli/run_sweep.c); dir: the output directory. */
 int run_sweep(const cli_case_args *a, gd_case *c, const char *dir);
-void cli_sweep_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                        const char **note);
 
 int cmd_run(int argc, char **argv);
-/* The continuation: its picture (continuation_plot.c: continuation.png and .svg into dir) and its
- * lines on stdout (run_continuation.c). */
-gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
-gd_status cli_curves_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err);
-void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                               const char **note);
+/* The continuation: its lines on stdout (run_continuation.c). */
 void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cli_continuation_progress(void *user, int branches_done, int branches_planned);
-/* The basins: progress, signals and MPI ranks around the row's run (run_basins.c), its pictures
- * (basins_plot.c: basins.png and .svg, or fractions.png and .svg, into dir) and its lines on stdout. */
+/* The basins: progress, signals and MPI ranks around the row's run (run_basins.c) and its lines on
+ * stdout. */
 int run_basins(const cli_case_args *a, gd_case *c, const char *dir);
-gd_status cli_basins_draw(const char *dir, const gd_case *c, const gd_basins_result *res, gd_error *err);
 void cli_basins_after_run(const cli_progress *p, gd_status st);
-void cli_basins_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                         const char **note);
 void cli_basins_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 int cmd_check(int argc, char **argv);
 int cmd_events(int argc, char **argv);

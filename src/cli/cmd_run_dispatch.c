@@ -1,6 +1,7 @@
 /* geardyn run: load the case, find its analysis in the library's table (gd_analysis.h), run it,
  * write its tables, draw its pictures, write summary.json and print what it found. The command
- * line's part of each analysis (progress, pictures, the lines on stdout) is its row in rows[]. */
+ * line's part of each analysis (progress, the lines on stdout) is its row in rows[]; the pictures are
+ * the library's, drawn by gnuplot through the drawer the command line gives (cli_gnuplot_drawer). */
 #include "cli.h"
 
 #include <stdio.h>
@@ -8,16 +9,15 @@
 #include <unistd.h>
 
 static const cli_row rows[] = {
-    { GD_ANALYSIS_RESPONSE, NULL, cli_response_after_run, cli_response_pictures, cli_response_report, NULL },
-    { GD_ANALYSIS_SWEEP, NULL, NULL, cli_sweep_pictures, NULL, run_sweep },
-    { GD_ANALYSIS_TCA, NULL, NULL, cli_tca_pictures, cli_tca_report, NULL },
-    { GD_ANALYSIS_LTCA, NULL, NULL, cli_ltca_pictures, cli_ltca_report, NULL },
-    { GD_ANALYSIS_OPTIMIZE, NULL, NULL, cli_optimize_pictures, cli_optimize_report, NULL },
-    { GD_ANALYSIS_COMPARE_OPTIMIZERS, NULL, NULL, cli_compare_pictures, cli_compare_report, NULL },
-    { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_pictures,
-      cli_workprec_report, NULL },
-    { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_pictures, cli_continuation_report, NULL },
-    { GD_ANALYSIS_BASINS, NULL, cli_basins_after_run, cli_basins_pictures, cli_basins_report, run_basins },
+    { GD_ANALYSIS_RESPONSE, NULL, cli_response_after_run, cli_response_report, NULL },
+    { GD_ANALYSIS_SWEEP, NULL, NULL, NULL, run_sweep },
+    { GD_ANALYSIS_TCA, NULL, NULL, cli_tca_report, NULL },
+    { GD_ANALYSIS_LTCA, NULL, NULL, cli_ltca_report, NULL },
+    { GD_ANALYSIS_OPTIMIZE, NULL, NULL, cli_optimize_report, NULL },
+    { GD_ANALYSIS_COMPARE_OPTIMIZERS, NULL, NULL, cli_compare_report, NULL },
+    { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_report, NULL },
+    { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_report, NULL },
+    { GD_ANALYSIS_BASINS, NULL, cli_basins_after_run, cli_basins_report, run_basins },
 };
 
 static const cli_row *cli_row_for(int analysis)
@@ -37,19 +37,20 @@ static void on_ran(void *user, const gd_case *c, gd_status st)
         r->after_run(user, st);
 }
 
-static void on_pictures(void *user, const gd_case *c, const void *result, gd_run_dir *out)
+void cli_note(void *user, int kind, const char *text)
 {
     cli_progress *p = user;
-    const cli_row *r = cli_row_for(c->analysis);
-    if (r && r->pictures)
-        r->pictures(p->args, c, result, out, &p->note);
+    if (kind == GD_NOTE_NO_PICTURES)
+        snprintf(p->note, sizeof p->note, "%s", text);
+    else
+        fprintf(stderr, "geardyn: note: %s\n", text);
 }
 
 static void on_done(void *user, const gd_case *c, const void *result, gd_run_dir *out)
 {
     cli_progress *p = user;
     const cli_row *r = cli_row_for(c->analysis);
-    if (p->note && !p->args->quiet)
+    if (p->note[0] && !p->args->quiet)
         fprintf(stderr, "geardyn: note: %s\n", p->note);
     cli_publish_note(p->args, out);
     if (r && r->report)
@@ -66,7 +67,7 @@ void cli_publish_note(const cli_case_args *a, const gd_run_dir *out)
 
 void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
 {
-    *p = (cli_progress){a->quiet, !a->quiet && isatty(2), -1, a, NULL};
+    *p = (cli_progress){a->quiet, !a->quiet && isatty(2), -1, a, ""};
     memset(env, 0, sizeof *env);
     env->user = p;
     env->threads = a->threads;
@@ -77,7 +78,8 @@ void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
     env->optimize_run = cli_optimize_run;
     env->compare_problem = cli_compare_problem;
     env->continuation_branch = cli_continuation_progress;
-    env->pictures = on_pictures;
+    env->draw = cli_gnuplot_drawer;
+    env->note = cli_note;
     env->ran = on_ran;
     env->done = on_done;
 }

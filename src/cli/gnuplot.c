@@ -4,7 +4,6 @@
 #include <stdio.h>
 
 #include <errno.h>
-#include <stdarg.h>
 #include <fcntl.h>
 #include <pthread.h>
 #include <signal.h>
@@ -176,53 +175,13 @@ gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const
     return st;
 }
 
-int gd_gnuplot_wanted(int plots, const char **note)
+gd_status cli_gnuplot_drawer(void *user, const char *dir, const char *script, const char *const *names, int nnames,
+                             gd_error *err)
 {
-    if (!plots)
-        return 0;
-    if (!gd_gnuplot_available()) {
-        *note = "gnuplot is not installed: no pictures (apt-get install gnuplot-nox)";
-        return 0;
-    }
-    return 1;
-}
-
-void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, gd_run_dir *out)
-{
-    if (st != GD_OK) {
-        fprintf(stderr, "geardyn: note: pictures not drawn: %s\n", perr->msg);
-        return;
-    }
-    for (int i = 0; i < npics; i++)
-        gd_run_dir_add(out, pics[i], NULL);
-}
-
-void gd_gnuplot_printf(gd_gnuplot_script *b, const char *fmt, ...)
-{
-    if (b->bad)
-        return;
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) {
-            b->bad = 1;
-            return;
-        }
-        if (b->p && b->n + (size_t)k < b->cap) {
-            b->n += (size_t)k;
-            return;
-        }
-        size_t cap = b->cap ? 2 * b->cap : 65536;
-        while (cap < b->n + (size_t)k + 1)
-            cap *= 2;
-        char *q = realloc(b->p, cap);
-        if (!q) {
-            b->bad = 1;
-            return;
-        }
-        b->p = q;
-        b->cap = cap;
-    }
+    (void)user;
+    if (!script)
+        return gd_gnuplot_available() ? GD_OK
+                                      : gd_error_set(err, GD_ERR_IO, "gnuplot is not installed: no pictures "
+                                                                     "(apt-get install gnuplot-nox)");
+    return gd_gnuplot_draw(dir, script, names, nnames, err);
 }

@@ -22,21 +22,10 @@ void gd_gnuplot_end_running(void);
  * files are removed either way. */
 gd_status gd_gnuplot_draw(const char *dir, const char *script, const char *const *names, int nnames, gd_error *err);
 
-/* The pictures of an analysis: 1 when they are wanted (plots) and gnuplot is there to draw them;
- * 0 otherwise, with *note set (for the end of the run) when only gnuplot is missing. */
-int gd_gnuplot_wanted(int plots, const char **note);
-/* After drawing (status st, error perr): the npics pictures join the run's files, or a note on
- * stderr says why there are none. */
-void gd_gnuplot_drawn(gd_status st, const gd_error *perr, const char *const *pics, int npics, gd_run_dir *out);
-
-/* A gnuplot script growing in memory: gd_gnuplot_printf appends to p (n characters, NUL
- * terminated); when memory runs out bad is set and nothing more is appended. Start from {0};
- * free(p) when done. */
-typedef struct gd_gnuplot_script {
-    char *p;
-    size_t n, cap;
-    int bad;
-} gd_gnuplot_script;
-void gd_gnuplot_printf(gd_gnuplot_script *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* The command line's drawer of a run's pictures (gd_output.h: gd_draw_fn; user unused): with script
+ * NULL GD_OK when gnuplot is on the PATH, else an error whose message is the run's note; otherwise
+ * gd_gnuplot_draw. */
+gd_status cli_gnuplot_drawer(void *user, const char *dir, const char *script, const char *const *names, int nnames,
+                             gd_error *err);
 
 #endif

@@ -1,7 +1,7 @@
 /* The `basins` analysis on the command line: the progress line, signals, the parameter's values spread
  * over MPI ranks (each rank maps its values, rank 0 gathers their points as records, matches the
- * attractors over the values and writes the files: the same files as one process), the pictures
- * (basins_plot.c) and the lines on stdout. */
+ * attractors over the values and writes the files: the same files as one process) and the lines
+ * on stdout; the pictures are the library's (src/plot/plot_basins.c). */
 #include "cli.h"
 #include "sweep_mpi.h"
 
@@ -123,19 +123,7 @@ static gd_status on_end(void *user, gd_basins_result *res, gd_status st, gd_erro
     return GD_OK;
 }
 
-/* ---- pictures and lines ---- */
-
-void cli_basins_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out, const char **note)
-{
-    (void)a;
-    if (gd_gnuplot_wanted(c->plots, note)) {
-        gd_error perr = {0};
-        const gd_basins_result *res = result;
-        gd_status pst = cli_basins_draw(gd_run_dir_stage(out), c, res, &perr);
-        static const char *pics[2][2] = {{"basins.png", "basins.svg"}, {"fractions.png", "fractions.svg"}};
-        gd_gnuplot_drawn(pst, &perr, pics[res->parameter[0] ? 1 : 0], 2, out);
-    }
-}
+/* ---- lines ---- */
 
 void cli_basins_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)
 {

@@ -2,7 +2,6 @@
  * statistics of each problem as it finishes, the convergence and runtime-distribution pictures,
  * the summary line. */
 #include "cli.h"
-#include "figure.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -10,12 +9,6 @@
 #include <string.h>
 
 static const char *obj_name(const gd_compare_entry *q) { return gd_opt_objective_name(q->objective); }
-
-/* The objective as a picture names it. */
-static const char *obj_words(const gd_compare_entry *q)
-{
-    return q->gear ? "LTE of the gear pair" : obj_name(q);
-}
 
 /* The progress report of one problem: the statistics of each optimiser. */
 void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_compare_settings *s)
@@ -34,155 +27,6 @@ void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_com
                S->best, S->median, S->q3 - S->q1, S->worst, 100 * S->success_rate, S->ert, S->wall_mean_s);
     }
     fflush(stdout);
-}
-
-/* The panel of problem j (or the pooled panel) on a grid of cols columns: its frame in screen
- * fractions. */
-typedef struct grid {
-    int cols, rows, legend_slot; /* legend_slot: the grid cell of the shared key, -1: a column of its own */
-    int W, H;
-    double pw, ph;               /* a cell, pixels */
-} grid;
-
-static void panel_box(const grid *g, int cell, double *l, double *r, double *b, double *t)
-{
-    int c = cell % g->cols, row = cell / g->cols;
-    double pw = g->pw, ph = g->ph, left = 20;
-    *l = (left + c * pw + 80) / g->W;
-    *r = (left + (c + 1) * pw - 25) / g->W;
-    *t = 1 - (60 + row * ph + 40) / g->H;
-    *b = 1 - (60 + (row + 1) * ph - 55) / g->H;
-}
-
-static gd_status draw(const char *dir, const gd_compare_outcome *C, gd_error *err)
-{
-    const gd_opt_compare_result *r0 = &C->p[0].res;
-    gd_gnuplot_script s = {0};
-    int gear = C->p[0].gear != NULL;
-    for (int fi = 0; fi < 2; fi++) {
-        for (int pic = 0; pic < 2; pic++) {
-            int panels = pic == 0 ? C->n : C->n + (C->n > 1);
-            grid g;
-            g.cols = panels < 3 ? panels : 3;
-            g.rows = (panels + g.cols - 1) / g.cols;
-            g.legend_slot = g.cols * g.rows > panels ? panels : -1;
-            g.pw = panels == 1 ? 760 : 560;
-            g.ph = panels == 1 ? 560 : 430;
-            g.W = (int)(20 + g.cols * g.pw + (g.legend_slot < 0 ? 230 : 0));
-            g.H = (int)(60 + g.rows * g.ph);
-            cli_fig_begin(&s, fi, g.W, g.H, pic ? "ecdf" : "convergence");
-            if (pic == 0)
-                gd_gnuplot_printf(&s, "set multiplot title 'Convergence: the median over %d runs of the best value found "
-                                      "minus the reference value f_{ref}; bars: its quartiles at the budget of %ld "
-                                      "evaluations'\n", r0->runs, r0->budget);
-            else
-                gd_gnuplot_printf(&s, "set multiplot title 'Runtime distributions: the fraction of (run, target) pairs "
-                                      "reached, %d runs, %ld evaluations each'\n", r0->runs, r0->budget);
-            gd_gnuplot_printf(&s, "set logscale x\nset xlabel 'objective evaluations'\nset xrange [1:%.6g]\n",
-                              pic == 0 ? r0->budget * 1.8 : (double)r0->budget);
-            if (pic == 0)
-                gd_gnuplot_printf(&s, "set logscale y\nset format y '%%g'\nset ylabel 'best value minus the reference "
-                                      "f - f_{ref} (%s)'\n", gear ? "arcsec" : "-");
-            else
-                gd_gnuplot_printf(&s, "set ylabel 'fraction of (run, target) pairs reached (-)'\n"
-                                      "set yrange [-0.04:1.04]\nset ytics 0,0.2,1\n");
-            /* the key, shared: in the grid's empty cell or in a column of its own */
-            double kx, ky;
-            if (g.legend_slot >= 0) {
-                double l, rr, b, t;
-                panel_box(&g, g.legend_slot, &l, &rr, &b, &t);
-                kx = l;
-                ky = t;
-            } else {
-                kx = (20.0 + g.cols * g.pw + 10) / g.W;
-                ky = 1 - 100.0 / g.H;
-            }
-            for (int j = 0; j < panels; j++) {
-                int pooled = j == C->n;
-                const gd_compare_entry *q = pooled ? NULL : &C->p[j];
-                const gd_opt_compare_result *r = pooled ? r0 : &q->res;
-                double l, rr, b, t;
-                panel_box(&g, j, &l, &rr, &b, &t);
-                gd_gnuplot_printf(&s, "set lmargin at screen %.5f\nset rmargin at screen %.5f\nset bmargin at screen %.5f\n"
-                                      "set tmargin at screen %.5f\n", l, rr, b, t);
-                if (j == 0)
-                    gd_gnuplot_printf(&s, "set key at screen %.5f,%.5f left top vertical Left reverse samplen 3 "
-                                          "spacing 1.3 title 'optimiser'\n", kx, ky);
-                else
-                    gd_gnuplot_printf(&s, "unset key\n");
-                if (pooled)
-                    gd_gnuplot_printf(&s, "set title 'all %d problems pooled'\n", C->n);
-                else if (pic == 0)
-                    gd_gnuplot_printf(&s, "set title '%s, d = %d%s: f_{ref} = %.4g (%s)'\n", obj_words(q), q->dim,
-                                      q->shift > 0 ? ", shifted" : "", r->f_ref, r->f_ref_known ? "the minimum" : "best found");
-                else
-                    gd_gnuplot_printf(&s, "set title '%s, d = %d%s: %d targets from %.3g to %.3g'\n", obj_words(q), q->dim,
-                                      q->shift > 0 ? ", shifted" : "", r->ntargets, r->targets[0],
-                                      r->targets[r->ntargets - 1]);
-                if (pic == 0) {
-                    /* the quartiles at the budget, each optimiser's bar a little to the right of the last */
-                    gd_gnuplot_printf(&s, "$IQR%d << EOD\nx,y,lo,hi\n", j);
-                    for (int a = 0; a < r->nalgs; a++) {
-                        const gd_opt_alg_stats *S = &r->stats[a];
-                        double m = S->median - r->f_ref, lo = S->q1 - r->f_ref, hi = S->q3 - r->f_ref;
-                        if (m > 0 && lo > 0 && hi > 0)
-                            gd_gnuplot_printf(&s, "%.6g,%.10g,%.10g,%.10g\n", r->budget * pow(1.05, a + 1), m, lo, hi);
-                        else
-                            gd_gnuplot_printf(&s, "NaN,NaN,NaN,NaN\n");
-                    }
-                    gd_gnuplot_printf(&s, "EOD\n");
-                }
-                gd_gnuplot_printf(&s, "plot ");
-                for (int a = 0; a < r->nalgs; a++) {
-                    const char *an = gd_opt_algorithm_name(r->stats[a].alg);
-                    const char *colour;
-                    int dash;
-                    cli_series_style(a, &colour, &dash);
-                    /* later curves thinner: where two coincide both show */
-                    double lw = 3.2 - 1.8 * a / (r->nalgs > 1 ? r->nalgs - 1 : 1);
-                    char sel[256], title[96];
-                    snprintf(sel, sizeof sel, "strcol('objective') eq '%s' && column('dimension') == %d && "
-                                              "strcol('optimizer') eq '%s'",
-                             pooled ? "all" : obj_name(q), pooled ? 0 : q->dim, an);
-                    if (j == 0)
-                        snprintf(title, sizeof title, "title '%s'", cli_optimizer_words(r->stats[a].alg));
-                    else
-                        snprintf(title, sizeof title, "notitle");
-                    if (pic == 0)
-                        gd_gnuplot_printf(&s, "%s'convergence.csv' using (%s ? column('evaluations') : 1/0):"
-                                              "(column('median_delta_f') > 0 ? column('median_delta_f') : 1/0) with lines "
-                                              "lw %.2f dt %d lc rgb '%s' %s, $IQR%d every ::%d::%d using 1:2:3:4 with "
-                                              "yerrorbars pt 7 ps 0.6 lw 1.5 lc rgb '%s' notitle",
-                                          a ? ", " : "", sel, lw, dash, colour, title, j, a, a, colour);
-                    else
-                        gd_gnuplot_printf(&s, "%s'ecdf.csv' using (%s ? column('evaluations') : 1/0):'fraction' with "
-                                              "steps lw %.2f dt %d lc rgb '%s' %s",
-                                          a ? ", " : "", sel, lw, dash, colour, title);
-                }
-                gd_gnuplot_printf(&s, "\n");
-            }
-            cli_fig_end(&s, 1);
-        }
-    }
-    if (s.bad) {
-        free(s.p);
-        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the gnuplot script");
-    }
-    static const char *names[2] = {"convergence", "ecdf"};
-    gd_status st = gd_gnuplot_draw(dir, s.p, names, 2, err);
-    free(s.p);
-    return st;
-}
-
-void cli_compare_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                          const char **note)
-{
-    if (gd_gnuplot_wanted(c->plots, note)) {
-        gd_error perr = {0};
-        gd_status pst = draw(gd_run_dir_stage(out), result, &perr);
-        static const char *pics[] = {"convergence.png", "convergence.svg", "ecdf.png", "ecdf.svg"};
-        gd_gnuplot_drawn(pst, &perr, pics, 4, out);
-    }
 }
 
 void cli_compare_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)

@@ -1,6 +1,5 @@
-/* The `continuation` analysis on the command line: progress per branch, the pictures
- * (continuation_plot.c; curves_plot.c with continuation.parameter2) and the branches, bifurcations
- * and curves found, on stdout. */
+/* The `continuation` analysis on the command line: progress per branch and the branches,
+ * bifurcations and curves found, on stdout (the pictures are the library's: src/plot/). */
 #include "cli.h"
 
 #include <stdio.h>
@@ -11,25 +10,6 @@ int cli_continuation_progress(void *user, int done, int planned)
     if (!p->quiet)
         fprintf(stderr, "geardyn: continuation: %d of %d branches\n", done, planned);
     return 0;
-}
-
-void cli_continuation_pictures(const cli_case_args *a, const gd_case *c, const void *result, gd_run_dir *out,
-                               const char **note)
-{
-    (void)a;
-    if (gd_gnuplot_wanted(c->plots, note)) {
-        gd_error perr = {0};
-        gd_status pst = cli_continuation_draw(gd_run_dir_stage(out), c, result, &perr);
-        static const char *pics[] = {"continuation.png", "continuation.svg"};
-        gd_gnuplot_drawn(pst, &perr, pics, 2, out);
-        const gd_contin_result *res = result;
-        if (res->ncurves > 0) {
-            gd_error cerr = {0};
-            gd_status cst = cli_curves_draw(gd_run_dir_stage(out), c, res, &cerr);
-            static const char *cpics[] = {"curves.png", "curves.svg"};
-            gd_gnuplot_drawn(cst, &cerr, cpics, 2, out);
-        }
-    }
 }
 
 void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result)

@@ -43,27 +43,36 @@ static gd_status optimize_check_case(gd_case *c, gd_error *err)
 
 static const gd_analysis_type analyses[] = {
     { GD_ANALYSIS_RESPONSE, "response", "the event-exact response of one operating point", NULL,
-      gd_row_response_run, gd_row_response_write, gd_row_response_summary, gd_row_response_free },
+      gd_row_response_run, gd_row_response_write, gd_row_response_summary, gd_row_response_free,
+      gd_row_response_pictures },
     { GD_ANALYSIS_SWEEP, "sweep", "the response over a grid of one or two keys, continued up and down",
-      sweep_check_case, gd_row_sweep_run, gd_row_sweep_write, gd_row_sweep_summary, gd_row_sweep_free },
+      sweep_check_case, gd_row_sweep_run, gd_row_sweep_write, gd_row_sweep_summary, gd_row_sweep_free,
+      gd_row_sweep_pictures },
     { GD_ANALYSIS_TCA, "tca", "geometric tooth contact analysis", NULL,
-      gd_row_tca_run, gd_row_tca_write, gd_row_tca_summary, gd_row_tca_free },
+      gd_row_tca_run, gd_row_tca_write, gd_row_tca_summary, gd_row_tca_free,
+      gd_row_tca_pictures },
     { GD_ANALYSIS_LTCA, "ltca", "loaded tooth contact analysis", ltca_check_case,
-      gd_row_ltca_run, gd_row_ltca_write, gd_row_ltca_summary, gd_row_ltca_free },
+      gd_row_ltca_run, gd_row_ltca_write, gd_row_ltca_summary, gd_row_ltca_free,
+      gd_row_ltca_pictures },
     { GD_ANALYSIS_OPTIMIZE, "optimize", "the modification of minimum LTE amplitude", optimize_check_case,
-      gd_row_optimize_run, gd_row_optimize_write, gd_row_optimize_summary, gd_row_optimize_free },
+      gd_row_optimize_run, gd_row_optimize_write, gd_row_optimize_summary, gd_row_optimize_free,
+      gd_row_optimize_pictures },
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, "compare-optimizers", "ALO against NLopt's methods on one budget",
       optimize_check_case, gd_row_compare_run, gd_row_compare_write, gd_row_compare_summary,
-      gd_row_compare_free },
+      gd_row_compare_free,
+      gd_row_compare_pictures },
     { GD_ANALYSIS_WORK_PRECISION, "work-precision", "error against cost over methods and tolerances",
       workprec_check_case, gd_row_workprec_run, gd_row_workprec_write, gd_row_workprec_summary,
-      gd_row_workprec_free },
+      gd_row_workprec_free,
+      gd_row_workprec_pictures },
     { GD_ANALYSIS_CONTINUATION, "continuation",
       "periodic orbits followed in one key, stable and unstable, with their bifurcations", gd_row_continuation_check,
-      gd_row_continuation_run, gd_row_continuation_write, gd_row_continuation_summary, gd_row_continuation_free },
+      gd_row_continuation_run, gd_row_continuation_write, gd_row_continuation_summary, gd_row_continuation_free,
+      gd_row_continuation_pictures },
     { GD_ANALYSIS_BASINS, "basins",
       "the attractors of the stroboscopic map, their basins and fractions, over a parameter", gd_row_basins_check,
-      gd_row_basins_run, gd_row_basins_write, gd_row_basins_summary, gd_row_basins_free },
+      gd_row_basins_run, gd_row_basins_write, gd_row_basins_summary, gd_row_basins_free,
+      gd_row_basins_pictures },
 };
 
 GD_API const gd_analysis_type *gd_analysis_types(size_t *n)
@@ -115,6 +124,8 @@ GD_API gd_status gd_analysis_run_dir(const gd_analysis_type *a, const gd_case *c
         env->ran(env->user, c, st);
     if (st == GD_OK)
         st = a->write(c, res, out, err);
+    if (st == GD_OK && a->pictures)
+        a->pictures(c, res, out, env);
     if (st == GD_OK && env && env->pictures)
         env->pictures(env->user, c, res, out);
     if (st == GD_OK)

@@ -17,6 +17,12 @@ struct gd_job {
     atomic_long done, total;
     _Atomic(const char *) unit;
     gd_run_dir *out;          /* after a successful run: its files */
+    gd_draw_fn draw;          /* the caller's drawer of the pictures (NULL: none) */
+    void *draw_user;
+    char *notes;              /* the run's notes, one a line */
+    int resume;               /* a sweep: continue the journal of an interrupted one */
+    gd_sweep_journal *journal; /* a sweep's, in a directory on disk */
+    size_t nnotes_len;
 };
 
 static void count(gd_job *j, const char *unit, long done, long total)
@@ -38,20 +44,33 @@ static int on_progress(void *user, long done, long total)
     return should_stop(user);
 }
 
+static void on_note(void *user, int kind, const char *text);
+
+/* A sweep into a directory keeps the journal geardyn run keeps (resumed with j->resume); its note
+ * joins the run's notes ("note: " of geardyn run's line off). */
 static gd_status on_sweep_start(void *user, const gd_sweep_plan *p, gd_sweep_point *pts, gd_run_dir *out,
                                 gd_error *err)
 {
-    (void)pts;
-    count(user, "points", 0, p->nslots);
-    return gd_run_dir_make(out, err); /* as geardyn run does for its journal: locked from the start */
+    gd_job *j = user;
+    if (j->disk) {
+        gd_status st = gd_sweep_journal_open(out, p, pts, j->resume, &j->journal, err);
+        if (st != GD_OK)
+            return st;
+        const char *note = gd_sweep_journal_note(j->journal);
+        if (note[0])
+            on_note(j, 0, strncmp(note, "note: ", 6) == 0 ? note + 6 : note);
+    }
+    count(user, "points", p->nslots - gd_sweep_pending(p, pts), p->nslots);
+    return GD_OK;
 }
 
 static gd_status on_sweep_point(void *user, const gd_sweep_plan *p, const gd_sweep_point *pt, gd_error *err)
 {
-    (void)p, (void)pt, (void)err;
     gd_job *j = user;
-    atomic_fetch_add(&j->done, 1);
-    return GD_OK;
+    gd_status st = j->journal ? gd_sweep_journal_point(j->journal, p, pt, err) : GD_OK;
+    if (st == GD_OK)
+        atomic_fetch_add(&j->done, 1);
+    return st;
 }
 
 static int on_wp_start(void *user, const char *what, const char *label, int index, int total)
@@ -93,6 +112,44 @@ static void on_problem(void *user, const struct gd_compare_entry *q, const gd_op
     gd_job *j = user;
     atomic_store(&j->unit, "problems");
     atomic_fetch_add(&j->done, 1);
+}
+
+static gd_status on_draw(void *user, const char *dir, const char *script, const char *const *names, int nnames,
+                         gd_error *err)
+{
+    gd_job *j = user;
+    return j->draw(j->draw_user, dir, script, names, nnames, err);
+}
+
+/* A note joins the run's notes (a note already there is not repeated: an analysis run inside
+ * another, optimize's optimum, may say the same). */
+static void on_note(void *user, int kind, const char *text)
+{
+    (void)kind;
+    gd_job *j = user;
+    char line[GD_ERROR_MSG_MAX + 256];
+    snprintf(line, sizeof line, "%s", text); /* one line: a newline of gnuplot's message as a space, none at the end */
+    size_t n = strlen(line);
+    while (n > 0 && (line[n - 1] == '\n' || line[n - 1] == ' '))
+        line[--n] = '\0';
+    for (char *c = line; *c; c++)
+        if (*c == '\n')
+            *c = ' ';
+    text = line;
+    for (const char *p = j->notes; p && *p;) {
+        const char *e = strchr(p, '\n');
+        if ((size_t)(e - p) == n && memcmp(p, text, n) == 0)
+            return;
+        p = e + 1;
+    }
+    char *q = realloc(j->notes, j->nnotes_len + n + 2);
+    if (!q)
+        return; /* a note lost for want of memory loses nothing of the run */
+    memcpy(q + j->nnotes_len, text, n);
+    j->nnotes_len += n;
+    q[j->nnotes_len++] = '\n';
+    q[j->nnotes_len] = '\0';
+    j->notes = q;
 }
 
 GD_API gd_status gd_job_new(const gd_case *c, const char *dir, int threads, gd_job **job, gd_error *err)
@@ -152,7 +209,11 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     env.continuation_branch = on_branch;
     env.compare_problem = on_problem;
     env.basins_progress = on_basins;
+    env.draw = j->draw ? on_draw : NULL;
+    env.note = on_note;
     st = gd_analysis_run_dir(a, &j->c, &env, out, err);
+    gd_sweep_journal_close(j->journal, st == GD_OK); /* kept for a resume unless the files are published */
+    j->journal = NULL;
     if (st != GD_OK) {
         gd_run_dir_close(out);
         return st;
@@ -160,6 +221,16 @@ GD_API gd_status gd_job_run(gd_job *j, gd_error *err)
     j->out = out;
     return GD_OK;
 }
+
+GD_API void gd_job_set_draw(gd_job *j, gd_draw_fn draw, void *user)
+{
+    j->draw = draw;
+    j->draw_user = user;
+}
+
+GD_API void gd_job_set_resume(gd_job *j, int resume) { j->resume = resume; }
+
+GD_API const char *gd_job_notes(const gd_job *j) { return j->notes ? j->notes : ""; }
 
 GD_API void gd_job_stop(gd_job *j) { atomic_store(&j->stop, 1); }
 
@@ -184,5 +255,6 @@ GD_API void gd_job_free(gd_job *j)
         return;
     gd_run_dir_close(j->out);
     gd_case_free(&j->c);
+    free(j->notes);
     free(j);
 }

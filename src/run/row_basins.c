@@ -88,3 +88,9 @@ void gd_row_basins_free(void *result)
     gd_basins_known_free(&r->known);
     free(r);
 }
+
+void gd_row_basins_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_basins(&p, c, (const gd_basins_result *)result);
+}

@@ -194,3 +194,9 @@ gd_status gd_row_compare_summary(const gd_case *c, const void *result, gd_run_di
     }
     return gd_summary_write_compare(out, c, pb, C->n, C->threads, err);
 }
+
+void gd_row_compare_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_compare(&p, c, (const gd_compare_outcome *)result);
+}

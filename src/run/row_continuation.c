@@ -76,3 +76,9 @@ void gd_row_continuation_free(void *result)
     gd_contin_result_free(&((contin_outcome *)result)->res);
     free(result);
 }
+
+void gd_row_continuation_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_continuation(&p, c, (const gd_contin_result *)result);
+}

@@ -45,3 +45,9 @@ void gd_row_ltca_free(void *result)
     gd_ltca_result_free(result);
     free(result);
 }
+
+void gd_row_ltca_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_ltca(&p, c, (const gd_ltca_result *)result);
+}

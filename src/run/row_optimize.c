@@ -268,6 +268,8 @@ static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const 
         quiet.user = env->user;
         quiet.threads = env->threads;
         quiet.pictures = env->pictures;
+        quiet.draw = env->draw;
+        quiet.note = env->note;
         quiet.should_stop = env->should_stop;
     }
     char name[64];
@@ -390,3 +392,8 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     return gd_summary_write_optimize(out, c, &sm, err);
 }
 
+void gd_row_optimize_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
+}

@@ -142,3 +142,9 @@ gd_status gd_row_response_summary(const gd_case *c, const void *result, gd_run_d
     const gd_response_outcome *r = result;
     return gd_summary_write_response(out, c, &r->model, &r->modes, &r->res, err);
 }
+
+void gd_row_response_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_response(&p, c, (const gd_response_outcome *)result);
+}

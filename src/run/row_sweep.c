@@ -80,3 +80,9 @@ gd_status gd_row_sweep_summary(const gd_case *c, const void *result, gd_run_dir 
     const gd_sweep_outcome *o = result;
     return gd_sweep_write_summary(out, c, &o->modes, &o->plan, o->pts, err);
 }
+
+void gd_row_sweep_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_sweep(&p, c, (const gd_sweep_outcome *)result);
+}

@@ -50,3 +50,9 @@ void gd_row_tca_free(void *result)
     gd_tca_result_free(result);
     free(result);
 }
+
+void gd_row_tca_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_tca(&p, c, (const gd_tca_result *)result);
+}

@@ -53,3 +53,9 @@ void gd_row_workprec_free(void *result)
     gd_workprec_free(&r->res);
     free(r);
 }
+
+void gd_row_workprec_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
+{
+    const gd_plotter p = gd_row_plotter(env, out);
+    gd_plot_workprec(&p, c, (const gd_workprec_outcome *)result);
+}

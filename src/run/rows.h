@@ -5,6 +5,7 @@
 
 #include "geardyn/gd_analysis.h"
 #include "geardyn/gd_scene.h"
+#include "../plot/plot.h"
 
 #include <stdio.h>
 
@@ -13,7 +14,8 @@
                                   gd_error *err);                                                              \
     gd_status gd_row_##NAME##_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err);       \
     gd_status gd_row_##NAME##_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err);     \
-    void gd_row_##NAME##_free(void *result);
+    void gd_row_##NAME##_free(void *result);                                                                     \
+    void gd_row_##NAME##_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env);
 
 GD_ROW_DECLARE(response)
 GD_ROW_DECLARE(sweep)
@@ -29,6 +31,12 @@ gd_status gd_row_continuation_check(gd_case *c, gd_error *err);
 GD_ROW_DECLARE(basins)
 /* basins' check_case: gd_basins_check_case, and the continuation's directory read */
 gd_status gd_row_basins_check(gd_case *c, gd_error *err);
+
+/* Where the pictures of a run go: env's drawer and notes, out's stage. */
+static inline gd_plotter gd_row_plotter(const gd_run_env *env, gd_run_dir *out)
+{
+    return env ? (gd_plotter){env->draw, env->note, env->user, out} : (gd_plotter){NULL, NULL, NULL, out};
+}
 
 /* The environment's should_stop (the command line's signals) as the stop hook of a computation
  * that has no hook of its own in gd_run_env (TCA, LTCA, the optimisers); none without env. */

@@ -44,7 +44,7 @@ of its kind (branch points too), a marker of lines or an outline drawn over one 
 (a branch point on its fold) 1.4 times its size so that both show; the optimiser comparison draws no overlapping
 translucent bands.
 
-The SVG is drawn with the PNG's font size in pixels (src/cli/figure.h), so its layout is the PNG's.
+The SVG is drawn with the PNG's font size in pixels (src/plot/figure.h), so its layout is the PNG's.
 
   test_pictures.py                 (GEARDYN names the executable, GEARDYN_SOURCE the source tree)
   test_pictures.py --keep DIR      runs and keeps the outputs in DIR

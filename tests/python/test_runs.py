@@ -9,7 +9,7 @@ shortens it, against the command line on the same case:
 * geardyn.read of the command line's directory equals that result but the times.
 
 The shipped case of an analysis is the one whose estimated cost (case.check()) is least, ties by
-name; the pictures are off on both sides (the module draws none)."""
+name; the pictures are off on both sides (test_pictures.py compares them)."""
 import os
 
 import pytest

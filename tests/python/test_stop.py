@@ -1,9 +1,9 @@
 """Stopping a run from Python (docs/python.md section 4): Ctrl-C (SIGINT, KeyboardInterrupt) during a
 sweep reaches the library's stop hook through gd_job_stop; the run stops within a second of the
-signal and KeyboardInterrupt is raised; the output directory keeps the previous result, as the
-command line leaves it after the same signal (which also keeps its journal for --resume: the
-module keeps none), and a new directory is not made. A progress callback that returns true stops
-a run the same way (Interrupted)."""
+signal and KeyboardInterrupt is raised; the output directory keeps the previous result and the
+sweep's journal (.sweep.journal, for resume=True), as the command line leaves it after the same
+signal; a new directory holds the journal only, as the command line leaves it (test_resume.py
+resumes them). A progress callback that returns true stops a run the same way (Interrupted)."""
 import os
 import shutil
 import signal
@@ -55,9 +55,10 @@ def test_ctrl_c_stops_a_sweep_and_keeps_the_previous_result(work, progress):
     latency = _ctrl_c_sweep('d', progress)
     print('stopped %.3f s after SIGINT' % latency)
     assert latency < 1.0
-    assert state('d') == before and beside('d') == []
+    assert state('d') == (before[0], ['.sweep.journal']) and beside('d') == []
     # the command line, interrupted in its sweep into a copy of the same previous result
     shutil.copytree('d', 'c')
+    os.unlink(os.path.join('c', '.sweep.journal'))   # the previous result, not the stopped sweep's journal
     args = [GEARDYN, 'run', KS, '--out', 'c', '--quiet', '--threads', '1']
     for k, v in LONG:
         args += ['--set', '%s=%s' % (k, v)]
@@ -72,9 +73,9 @@ def test_ctrl_c_stops_a_sweep_and_keeps_the_previous_result(work, progress):
     assert files == before[0] and dots == ['.sweep.journal'] and beside('c') == []
 
 
-def test_ctrl_c_leaves_no_new_directory(work):
+def test_ctrl_c_leaves_a_new_directory_with_the_journal_only(work):
     _ctrl_c_sweep('new')
-    assert not os.path.exists('new') and beside('new') == []
+    assert state('new') == ({}, ['.sweep.journal']) and beside('new') == []
 
 
 def test_progress_callback_stops_a_run(work):
@@ -87,7 +88,7 @@ def test_progress_callback_stops_a_run(work):
         return done >= 2
     with pytest.raises(geardyn.Interrupted):
         geardyn.run(load(KS, LONG), out='d', threads=1, progress=progress)
-    assert state('d') == before and beside('d') == []
+    assert state('d') == (before[0], ['.sweep.journal']) and beside('d') == []
     assert seen and all(u == 'points' and t == 160 for d, t, u in seen)
 
 

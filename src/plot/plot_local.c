@@ -2,8 +2,7 @@
  * the chosen response variable's time history, phase portrait, amplitude spectrum and Poincare
  * section, drawn from the tables the response row wrote and from the samples in memory (the
  * curves through the samples). The time history and the phase portrait of time_history.png and
- * phase.png (run_response.c) are drawn with the same view. */
-#include "cli.h"
+ * phase.png (plot_response.c) are drawn with the same view. */
 #include "figure.h"
 
 #include <math.h>
@@ -12,19 +11,19 @@
 #include <string.h>
 
 /* The variable's quantity, the window of the time history and the axes of the phase plane. */
-void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double width_px, cli_local_view *v)
+void gd_plot_local_view_of(const gd_case *c, const gd_response_outcome *ro, double width_px, gd_local_view *v)
 {
     const gd_model *m = &ro->model;
     const gd_local *L = &ro->local;
     memset(v, 0, sizeof *v);
     int halves = m->nmesh;
-    cli_qty_column(L->name, halves, &v->x);
+    gd_qty_column(L->name, halves, &v->x);
     snprintf(v->x.unit, sizeof v->x.unit, "µm"); /* the samples are in um whatever the variable */
     char rate[64];
     snprintf(rate, sizeof rate, "%s_rate_mps", L->name);
-    cli_qty_column(rate, halves, &v->v);
-    cli_qty_label(&v->x, v->xlabel, sizeof v->xlabel);
-    cli_qty_label(&v->v, v->vlabel, sizeof v->vlabel);
+    gd_qty_column(rate, halves, &v->v);
+    gd_qty_label(&v->x, v->xlabel, sizeof v->xlabel);
+    gd_qty_label(&v->v, v->vlabel, sizeof v->vlabel);
     /* the periods of the time history: enough for the motion's period (two of them), few enough
      * that the highest component of the spectrum within a third of the largest turns at most
      * every 16 pixels */
@@ -70,8 +69,8 @@ void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double w
     }
     if (!(xhi >= xlo))
         xlo = xhi = vlo = vhi = 0;
-    cli_pad(xlo, xhi, 0.07, 0, &v->xlo, &v->xhi);
-    cli_pad(vlo, vhi, 0.07, 0, &v->vlo, &v->vhi);
+    gd_pad(xlo, xhi, 0.07, 0, &v->xlo, &v->xhi);
+    gd_pad(vlo, vhi, 0.07, 0, &v->vlo, &v->vhi);
     v->t_from_ms = 1e3 * L->t[v->i0];
     v->t_end_ms = 1e3 * t_end;
     if (!(v->t_end_ms > v->t_from_ms))
@@ -80,7 +79,7 @@ void cli_local_view_of(const gd_case *c, const gd_response_outcome *ro, double w
 
 /* The data blocks of the view: $TH the time history's window, $PH the phase portrait's periods,
  * each the samples and the curve through them. */
-void cli_local_blocks(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v)
+void gd_plot_local_blocks(gd_plot_script *s, const gd_response_outcome *ro, const gd_local_view *v)
 {
     const gd_local *L = &ro->local;
     /* t in ms, x in um, v in m/s: dx/dt in um/ms = 1e3 * v (m/s) */
@@ -92,44 +91,44 @@ void cli_local_blocks(gd_gnuplot_script *s, const gd_response_outcome *ro, const
     }
     for (size_t i = 0; i < n; i++)
         t[i] = 1e3 * L->t[i];
-    cli_hermite_block(s, "TH", t, L->x, L->xd, v->i0, n, 1e3);
-    cli_hermite_block(s, "PH", t, L->x, L->xd, v->p0, n, 1e3);
+    gd_hermite_block(s, "TH", t, L->x, L->xd, v->i0, n, 1e3);
+    gd_hermite_block(s, "PH", t, L->x, L->xd, v->p0, n, 1e3);
     free(t);
 }
 
 /* The time history panel: the window of the last periods, over exactly that window. */
-void cli_local_time_panel(gd_gnuplot_script *s, const cli_local_view *v, const char *title, const char *key,
+void gd_plot_local_time_panel(gd_plot_script *s, const gd_local_view *v, const char *title, const char *key,
                           const char *more)
 {
-    gd_gnuplot_printf(s, "set title '%s'\nset xlabel 'time t (ms)'\nset ylabel '%s'\n", title, v->xlabel);
-    gd_gnuplot_printf(s, "set xrange [%.12g:%.12g]\nset yrange [*:*]\n", v->t_from_ms, v->t_end_ms);
-    gd_gnuplot_printf(s, "plot $TH using 1:2 with lines lw 1.3 lc rgb '%s' ", cli_colour[4]);
+    gd_plot_printf(s, "set title '%s'\nset xlabel 'time t (ms)'\nset ylabel '%s'\n", title, v->xlabel);
+    gd_plot_printf(s, "set xrange [%.12g:%.12g]\nset yrange [*:*]\n", v->t_from_ms, v->t_end_ms);
+    gd_plot_printf(s, "plot $TH using 1:2 with lines lw 1.3 lc rgb '%s' ", gd_colour[4]);
     if (key)
-        gd_gnuplot_printf(s, "title '%s'", key);
+        gd_plot_printf(s, "title '%s'", key);
     else
-        gd_gnuplot_printf(s, "notitle");
-    gd_gnuplot_printf(s, "%s\n", more ? more : "");
-    gd_gnuplot_printf(s, "set xrange [*:*]\nset yrange [*:*]\n");
+        gd_plot_printf(s, "notitle");
+    gd_plot_printf(s, "%s\n", more ? more : "");
+    gd_plot_printf(s, "set xrange [*:*]\nset yrange [*:*]\n");
 }
 
 /* The phase portrait panel: the curve through the samples of the last periods and, when wanted,
  * the Poincare points over it. */
-void cli_local_phase_panel(gd_gnuplot_script *s, const gd_response_outcome *ro, const cli_local_view *v,
+void gd_plot_local_phase_panel(gd_plot_script *s, const gd_response_outcome *ro, const gd_local_view *v,
                            const char *title, int with_poincare)
 {
     (void)ro;
-    gd_gnuplot_printf(s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", title, v->xlabel, v->vlabel);
-    gd_gnuplot_printf(s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v->xlo, v->xhi, v->vlo, v->vhi);
-    gd_gnuplot_printf(s, "plot $PH using 2:3 with lines lw 0.8 lc rgb '%s' %s", cli_colour[4],
+    gd_plot_printf(s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", title, v->xlabel, v->vlabel);
+    gd_plot_printf(s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v->xlo, v->xhi, v->vlo, v->vhi);
+    gd_plot_printf(s, "plot $PH using 2:3 with lines lw 0.8 lc rgb '%s' %s", gd_colour[4],
                       with_poincare > 1 ? "title 'trajectory (the last periods)'" : "notitle");
     if (with_poincare)
-        gd_gnuplot_printf(s, ", 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.7 lc rgb '%s' %s",
-                          cli_colour[5], with_poincare > 1 ? "title 'Poincaré points'" : "notitle");
-    gd_gnuplot_printf(s, "\nset xrange [*:*]\nset yrange [*:*]\n");
+        gd_plot_printf(s, ", 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.7 lc rgb '%s' %s",
+                          gd_colour[5], with_poincare > 1 ? "title 'Poincaré points'" : "notitle");
+    gd_plot_printf(s, "\nset xrange [*:*]\nset yrange [*:*]\n");
 }
 
 /* "period-1, single-sided impacts, largest Lyapunov exponent -0.213 per mesh period" */
-void cli_local_motion(const gd_response_result *r, char *buf, size_t len)
+void gd_plot_local_motion(const gd_response_result *r, char *buf, size_t len)
 {
     static const char *impacts[] = {"no impacts", "single-sided impacts", "double-sided impacts"};
     int reg = r->impact_regime[2];
@@ -140,8 +139,8 @@ void cli_local_motion(const gd_response_result *r, char *buf, size_t len)
 
 /* The spectrum panel: impulses up to the order that holds the largest component and those near
  * it, a frequency axis of round values on top. */
-static void spectrum_panel(gd_gnuplot_script *s, const gd_case *c, const gd_response_outcome *ro,
-                           const cli_local_view *v)
+static void spectrum_panel(gd_plot_script *s, const gd_case *c, const gd_response_outcome *ro,
+                           const gd_local_view *v)
 {
     const gd_local *L = &ro->local;
     double fm = ro->model.mesh_freq_hz, amax = 0, kmax = 0, klast = 0;
@@ -157,7 +156,7 @@ static void spectrum_panel(gd_gnuplot_script *s, const gd_case *c, const gd_resp
     double top = fmax(kmax + 2, klast + 1);
     if (top < 5)
         top = 5;
-    double step = cli_nice_step(top, 8);
+    double step = gd_nice_step(top, 8);
     top = ceil(top / step) * step;
     if (top > nyq)
         top = nyq;
@@ -169,41 +168,40 @@ static void spectrum_panel(gd_gnuplot_script *s, const gd_case *c, const gd_resp
             amin = L->amp_um[k];
     double floor_amp = amin / 3;
     char name[200];
-    cli_gp_text(v->x.name, name, sizeof name);
-    gd_gnuplot_printf(s, "set title 'Amplitude spectrum of the %d recorded mesh periods (Hann window)'\n",
+    gd_gp_text(v->x.name, name, sizeof name);
+    gd_plot_printf(s, "set title 'Amplitude spectrum of the %d recorded mesh periods (Hann window)'\n",
                       c->record_periods);
-    gd_gnuplot_printf(s, "set xlabel 'order of the mesh frequency f_m = %.4g Hz (-)'\n", fm);
+    gd_plot_printf(s, "set xlabel 'order of the mesh frequency f_m = %.4g Hz (-)'\n", fm);
     if (v->x.sym[0])
-        gd_gnuplot_printf(s, "set ylabel 'amplitude of %s (µm)'\n", v->x.sym);
+        gd_plot_printf(s, "set ylabel 'amplitude of %s (µm)'\n", v->x.sym);
     else
-        gd_gnuplot_printf(s, "set ylabel 'amplitude of the %s (µm)'\n", name);
-    gd_gnuplot_printf(s, "set xrange [%.6g:%.6g]\nset logscale y\nset format y '%s'\nset yrange [%.6g:%.6g]\n",
+        gd_plot_printf(s, "set ylabel 'amplitude of the %s (µm)'\n", name);
+    gd_plot_printf(s, "set xrange [%.6g:%.6g]\nset logscale y\nset format y '%s'\nset yrange [%.6g:%.6g]\n",
                       -0.5, top + 0.5, ytop / floor_amp >= 100 ? "10^{%L}" : "%g", floor_amp, ytop);
-    double fstep = cli_nice_step(top * fm, 6);
-    gd_gnuplot_printf(s, "set link x2\nset x2tics out nomirror (");
+    double fstep = gd_nice_step(top * fm, 6);
+    gd_plot_printf(s, "set link x2\nset x2tics out nomirror (");
     int first = 1;
     for (double f = 0; f <= top * fm * (1 + 1e-9); f += fstep) {
-        gd_gnuplot_printf(s, "%s'%.6g' %.12g", first ? "" : ", ", f, f / fm);
+        gd_plot_printf(s, "%s'%.6g' %.12g", first ? "" : ", ", f, f / fm);
         first = 0;
     }
-    gd_gnuplot_printf(s, ")\nset xtics nomirror\nset x2label 'frequency f (Hz)'\n");
-    gd_gnuplot_printf(s, "plot 'spectrum.csv' using 'order':(column('amplitude_um') >= %.9g && column('order') <= %.6g ? "
+    gd_plot_printf(s, ")\nset xtics nomirror\nset x2label 'frequency f (Hz)'\n");
+    gd_plot_printf(s, "plot 'spectrum.csv' using 'order':(column('amplitude_um') >= %.9g && column('order') <= %.6g ? "
                          "column('amplitude_um') : 1/0) with impulses lw 1.5 lc rgb '%s' notitle\n", cut,
-                      top + 0.25, cli_colour[4]);
-    gd_gnuplot_printf(s, "unset logscale y\nset format y '%% h'\nset yrange [*:*]\nset xrange [*:*]\nunset x2tics\n"
+                      top + 0.25, gd_colour[4]);
+    gd_plot_printf(s, "unset logscale y\nset format y '%% h'\nset yrange [*:*]\nset xrange [*:*]\nunset x2tics\n"
                          "unset x2label\nunset link x2\nset xtics mirror\n");
 }
 
-void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir *out)
+void gd_plot_local_draw(const gd_plotter *pl, const gd_case *c, const gd_response_outcome *ro)
 {
-    const char *dir = gd_run_dir_stage(out);
     const gd_response_result *r = &ro->res;
     const gd_local *L = &ro->local;
-    cli_local_view v;
-    cli_local_view_of(c, ro, 600, &v);
+    gd_local_view v;
+    gd_plot_local_view_of(c, ro, 600, &v);
     char motion[200], name[200], title[400];
-    cli_local_motion(r, motion, sizeof motion);
-    cli_qty_label(&v.x, name, sizeof name);
+    gd_plot_local_motion(r, motion, sizeof motion);
+    gd_qty_label(&v.x, name, sizeof name);
     /* the variable's name, its unit off, its first letter up */
     char *paren = strrchr(name, '(');
     if (paren && paren > name)
@@ -211,8 +209,8 @@ void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir 
     if (name[0] >= 'a' && name[0] <= 'z')
         name[0] = (char)(name[0] - 'a' + 'A');
     snprintf(title, sizeof title, "%s: %s", name, motion);
-    gd_gnuplot_script s = {0};
-    cli_local_blocks(&s, ro, &v);
+    gd_plot_script s = {0};
+    gd_plot_local_blocks(&s, ro, &v);
     char section[160];
     if (r->poincare_distinct == 1)
         snprintf(section, sizeof section, "Poincaré section at mesh phase 0: %zu returns to one point", L->np);
@@ -227,38 +225,29 @@ void cli_local_draw(const gd_case *c, const gd_response_outcome *ro, gd_run_dir 
         pvh = fmax(pvh, L->pxd[i]);
     }
     if (pxh > pxl && pvh > pvl) {
-        cli_pad(pxl, pxh, 0.1, 0, &pxl, &pxh);
-        cli_pad(pvl, pvh, 0.1, 0, &pvl, &pvh);
+        gd_pad(pxl, pxh, 0.1, 0, &pxl, &pxh);
+        gd_pad(pvl, pvh, 0.1, 0, &pvl, &pvh);
     }
     char thtitle[120];
     snprintf(thtitle, sizeof thtitle, "Time history, the last %d mesh period%s", v.shown, v.shown == 1 ? "" : "s");
     for (int k = 0; k < 2; k++) {
-        cli_fig_begin(&s, k, 1400, 1000, "response");
-        gd_gnuplot_printf(&s, "set multiplot layout 2,2 title '%s'\n", title);
-        cli_local_time_panel(&s, &v, thtitle, NULL, NULL);
-        cli_local_phase_panel(&s, ro, &v, "Phase portrait, the last periods, and the Poincaré points", 1);
+        gd_fig_begin(&s, k, 1400, 1000, "response");
+        gd_plot_printf(&s, "set multiplot layout 2,2 title '%s'\n", title);
+        gd_plot_local_time_panel(&s, &v, thtitle, NULL, NULL);
+        gd_plot_local_phase_panel(&s, ro, &v, "Phase portrait, the last periods, and the Poincaré points", 1);
         spectrum_panel(&s, c, ro, &v);
-        gd_gnuplot_printf(&s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", section, v.xlabel, v.vlabel);
+        gd_plot_printf(&s, "set title '%s'\nset xlabel '%s'\nset ylabel '%s'\n", section, v.xlabel, v.vlabel);
         /* a cloud of points that spreads over a twentieth of the phase portrait at least: its own
          * extent; a few, or a tight cloud (a periodic orbit's, whose scatter is the integration's
          * noise, or a slowly converging one's): the axes of the phase portrait */
         if (r->poincare_distinct > 8 && pxh - pxl > 0.05 * (v.xhi - v.xlo) && pvh - pvl > 0.05 * (v.vhi - v.vlo))
-            gd_gnuplot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", pxl, pxh, pvl, pvh);
+            gd_plot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", pxl, pxh, pvl, pvh);
         else
-            gd_gnuplot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v.xlo, v.xhi, v.vlo, v.vhi);
-        gd_gnuplot_printf(&s, "plot 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.9 lc rgb '%s' notitle\n",
-                          cli_colour[5]);
-        cli_fig_end(&s, 1);
+            gd_plot_printf(&s, "set xrange [%.9g:%.9g]\nset yrange [%.9g:%.9g]\n", v.xlo, v.xhi, v.vlo, v.vhi);
+        gd_plot_printf(&s, "plot 'variable_poincare.csv' using 1:2 with points pt 7 ps 0.9 lc rgb '%s' notitle\n",
+                          gd_colour[5]);
+        gd_fig_end(&s, 1);
     }
-    gd_error perr = {0};
     static const char *names[] = {"response"};
-    gd_status st = s.bad ? gd_error_set(&perr, GD_ERR_NOMEM, "out of memory for the gnuplot script")
-                         : gd_gnuplot_draw(dir, s.p, names, 1, &perr);
-    free(s.p);
-    if (st == GD_OK) {
-        gd_run_dir_add(out, "response.png", NULL);
-        gd_run_dir_add(out, "response.svg", NULL);
-    } else {
-        fprintf(stderr, "geardyn: note: the four-panel picture was not drawn: %s\n", perr.msg);
-    }
+    gd_plot_draw(pl, &s, names, 1, "the four-panel picture was not drawn");
 }

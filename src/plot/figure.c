@@ -5,32 +5,32 @@
 #include <stdio.h>
 #include <string.h>
 
-const char *const cli_colour[CLI_NCOLOURS] = {"#000000", "#E69F00", "#56B4E9", "#009E73",
+const char *const gd_colour[GD_NCOLOURS] = {"#000000", "#E69F00", "#56B4E9", "#009E73",
                                               "#0072B2", "#D55E00", "#CC79A7"};
 
-void cli_fig_begin(gd_gnuplot_script *s, int svg, int w, int h, const char *name)
+void gd_fig_begin(gd_plot_script *s, int svg, int w, int h, const char *name)
 {
-    gd_gnuplot_printf(s, "reset\n");
+    gd_plot_printf(s, "reset\n");
     if (svg)
-        gd_gnuplot_printf(s, "set terminal svg size %d,%d dynamic enhanced font 'sans,%g'\n", w, h, CLI_FIG_PX);
+        gd_plot_printf(s, "set terminal svg size %d,%d dynamic enhanced font 'sans,%g'\n", w, h, GD_FIG_PX);
     else
-        gd_gnuplot_printf(s, "set terminal pngcairo size %d,%d enhanced font ',%g'\n", w, h, CLI_FIG_PT);
-    gd_gnuplot_printf(s, "set encoding utf8\nset output '.%s.%s.tmp'\n", name, svg ? "svg" : "png");
-    gd_gnuplot_printf(s, "set datafile separator ','\nset datafile columnheaders\n"
+        gd_plot_printf(s, "set terminal pngcairo size %d,%d enhanced font ',%g'\n", w, h, GD_FIG_PT);
+    gd_plot_printf(s, "set encoding utf8\nset output '.%s.%s.tmp'\n", name, svg ? "svg" : "png");
+    gd_plot_printf(s, "set datafile separator ','\nset datafile columnheaders\n"
                          "set datafile missing 'NaN'\nset grid lc rgb '#cccccc' lw 0.8 dt 1\n"
                          "set border lw 1\nset key noopaque nobox\nset autoscale fix\n"
                          "set offsets graph 0.04, graph 0.04, graph 0.07, graph 0.07\n");
 }
 
-void cli_fig_end(gd_gnuplot_script *s, int multiplot)
+void gd_fig_end(gd_plot_script *s, int multiplot)
 {
-    gd_gnuplot_printf(s, "%sunset output\n", multiplot ? "unset multiplot\n" : "");
+    gd_plot_printf(s, "%sunset output\n", multiplot ? "unset multiplot\n" : "");
 }
 
-void cli_series_style(int i, const char **colour, int *dash)
+void gd_series_style(int i, const char **colour, int *dash)
 {
-    *colour = cli_colour[i % CLI_NCOLOURS];
-    *dash = 1 + (i / CLI_NCOLOURS) % 4;
+    *colour = gd_colour[i % GD_NCOLOURS];
+    *dash = 1 + (i / GD_NCOLOURS) % 4;
 }
 
 /* viridis (matplotlib), every tenth */
@@ -38,7 +38,7 @@ static const unsigned char viridis[11][3] = {
     {0x44, 0x01, 0x54}, {0x48, 0x24, 0x75}, {0x41, 0x44, 0x87}, {0x35, 0x5f, 0x8d}, {0x2a, 0x78, 0x8e}, {0x21, 0x91, 0x8c},
     {0x22, 0xa8, 0x84}, {0x44, 0xbf, 0x70}, {0x7a, 0xd1, 0x51}, {0xbd, 0xdf, 0x26}, {0xfd, 0xe7, 0x25}};
 
-void cli_viridis(double t, char out[8])
+void gd_viridis(double t, char out[8])
 {
     t = t < 0 ? 0 : t > 1 ? 1 : t;
     int i = (int)floor(t * 10);
@@ -51,18 +51,18 @@ void cli_viridis(double t, char out[8])
     snprintf(out, 8, "#%02x%02x%02x", c[0], c[1], c[2]);
 }
 
-void cli_palette_viridis(gd_gnuplot_script *s, double t0, double t1)
+void gd_palette_viridis(gd_plot_script *s, double t0, double t1)
 {
-    gd_gnuplot_printf(s, "set palette defined (");
+    gd_plot_printf(s, "set palette defined (");
     for (int k = 0; k <= 8; k++) {
         char c[8];
-        cli_viridis(t0 + (t1 - t0) * k / 8.0, c);
-        gd_gnuplot_printf(s, "%s%d '%s'", k ? ", " : "", k, c);
+        gd_viridis(t0 + (t1 - t0) * k / 8.0, c);
+        gd_plot_printf(s, "%s%d '%s'", k ? ", " : "", k, c);
     }
-    gd_gnuplot_printf(s, ")\n");
+    gd_plot_printf(s, ")\n");
 }
 
-double cli_nice_step(double span, int n)
+double gd_nice_step(double span, int n)
 {
     if (!(span > 0) || n < 1)
         return 1;
@@ -71,7 +71,7 @@ double cli_nice_step(double span, int n)
     return nice * p;
 }
 
-void cli_pad(double lo, double hi, double frac, int logscale, double *a, double *b)
+void gd_pad(double lo, double hi, double frac, int logscale, double *a, double *b)
 {
     if (logscale && lo > 0 && hi > 0) {
         double l0 = log10(lo), l1 = log10(hi), d = l1 - l0 > 0 ? l1 - l0 : 1;
@@ -95,7 +95,7 @@ void cli_pad(double lo, double hi, double frac, int logscale, double *a, double 
     *b = hi + frac * d;
 }
 
-double cli_text_width(const char *s, double px)
+double gd_text_width(const char *s, double px)
 {
     double w = 0;
     for (const unsigned char *p = (const unsigned char *)s; *p; p++) {
@@ -122,7 +122,7 @@ static int box_hits(double ax0, double ay0, double ax1, double ay1, double bx0, 
     return ax0 < bx1 && bx0 < ax1 && ay0 < by1 && by0 < ay1;
 }
 
-void cli_place_labels(cli_label *l, int n, double fx0, double fy0, double fx1, double fy1, const double *pts,
+void gd_place_labels(gd_fig_label *l, int n, double fx0, double fy0, double fx1, double fy1, const double *pts,
                       int npts)
 {
     /* the places tried, nearest first: above, above right, above left, right, left, below ... */
@@ -160,12 +160,12 @@ static double hermite(double p0, double p1, double m0, double m1, double s)
     return (2 * s3 - 3 * s2 + 1) * p0 + (s3 - 2 * s2 + s) * m0 + (-2 * s3 + 3 * s2) * p1 + (s3 - s2) * m1;
 }
 
-size_t cli_hermite_block(gd_gnuplot_script *s, const char *name, const double *t, const double *x, const double *v,
+size_t gd_hermite_block(gd_plot_script *s, const char *name, const double *t, const double *x, const double *v,
                          size_t i0, size_t i1, double dxdt_per_v)
 {
-    gd_gnuplot_printf(s, "$%s << EOD\nt,x,v\n", name);
+    gd_plot_printf(s, "$%s << EOD\nt,x,v\n", name);
     if (i1 <= i0) {
-        gd_gnuplot_printf(s, "EOD\n");
+        gd_plot_printf(s, "EOD\n");
         return 0;
     }
     double xl = x[i0], xh = x[i0], vl = v[i0], vh = v[i0];
@@ -178,7 +178,7 @@ size_t cli_hermite_block(gd_gnuplot_script *s, const char *name, const double *t
     double sx = xh > xl ? 1 / (xh - xl) : 1, sv = vh > vl ? 1 / (vh - vl) : 1;
     size_t npts = 0;
     for (size_t i = i0; i < i1; i++) {
-        gd_gnuplot_printf(s, "%.10g,%.10g,%.10g\n", t[i], x[i], v[i]);
+        gd_plot_printf(s, "%.10g,%.10g,%.10g\n", t[i], x[i], v[i]);
         npts++;
         if (i + 1 >= i1)
             break;
@@ -198,22 +198,22 @@ size_t cli_hermite_block(gd_gnuplot_script *s, const char *name, const double *t
             double u = (double)j / k;
             double xi = hermite(x[i], x[i + 1], v[i] * dxdt_per_v * h, v[i + 1] * dxdt_per_v * h, u);
             double vi = hermite(v[i], v[i + 1], a0 * h, a1 * h, u);
-            gd_gnuplot_printf(s, "%.10g,%.10g,%.10g\n", t[i] + u * h, xi, vi);
+            gd_plot_printf(s, "%.10g,%.10g,%.10g\n", t[i] + u * h, xi, vi);
             npts++;
         }
     }
-    gd_gnuplot_printf(s, "EOD\n");
+    gd_plot_printf(s, "EOD\n");
     return npts;
 }
 
-void cli_log_tics(gd_gnuplot_script *s, const char *axis, double lo, double hi)
+void gd_log_tics(gd_plot_script *s, const char *axis, double lo, double hi)
 {
     if (!(lo > 0) || !(hi > lo))
         return;
     /* 1, 2 and 5 times the powers of ten over less than two decades, the powers alone beyond */
     static const double m125[] = {1, 2, 5};
     int few = hi / lo < 100;
-    gd_gnuplot_printf(s, "set %stics (", axis);
+    gd_plot_printf(s, "set %stics (", axis);
     int first = 1;
     for (int e = (int)floor(log10(lo)) - 1; e <= (int)ceil(log10(hi)); e++)
         for (int k = 0; k < (few ? 3 : 1); k++) {
@@ -221,21 +221,21 @@ void cli_log_tics(gd_gnuplot_script *s, const char *axis, double lo, double hi)
             if (v < lo * (1 - 1e-9) || v > hi * (1 + 1e-9))
                 continue;
             if (few)
-                gd_gnuplot_printf(s, "%s'%g' %.12g", first ? "" : ", ", v, v);
+                gd_plot_printf(s, "%s'%g' %.12g", first ? "" : ", ", v, v);
             else
-                gd_gnuplot_printf(s, "%s'10^{%d}' %.12g", first ? "" : ", ", e, v);
+                gd_plot_printf(s, "%s'10^{%d}' %.12g", first ? "" : ", ", e, v);
             first = 0;
         }
-    gd_gnuplot_printf(s, ")\n");
+    gd_plot_printf(s, ")\n");
 }
 
-void cli_flank_panel(gd_gnuplot_script *s, int h, int halves)
+void gd_flank_panel(gd_plot_script *s, int h, int halves)
 {
     double l = halves > 1 ? (h ? 0.525 : 0.06) : 0.11, r = halves > 1 ? (h ? 0.875 : 0.41) : 0.80;
-    gd_gnuplot_printf(s, "set lmargin at screen %.4f\nset rmargin at screen %.4f\nset tmargin at screen 0.86\n"
+    gd_plot_printf(s, "set lmargin at screen %.4f\nset rmargin at screen %.4f\nset tmargin at screen 0.86\n"
                          "set bmargin at screen 0.12\n", l, r);
     if (h + 1 < halves)
-        gd_gnuplot_printf(s, "unset colorbox\n");
+        gd_plot_printf(s, "unset colorbox\n");
     else
-        gd_gnuplot_printf(s, "set colorbox user origin screen %.4f,0.12 size screen 0.018,0.74\n", r + 0.015);
+        gd_plot_printf(s, "set colorbox user origin screen %.4f,0.12 size screen 0.018,0.74\n", r + 0.015);
 }

@@ -5,7 +5,6 @@
  * finished sweep's points over the branches when the case names one
  * (continuation.overlay_sweep). Drawn from the result in memory, the numbers of branch.csv and
  * bifurcations.csv. */
-#include "cli.h"
 #include "figure.h"
 
 #include <errno.h>
@@ -26,7 +25,7 @@
 typedef struct resp {
     int kind, nmesh;
     double scale;
-    cli_qty q;
+    gd_qty q;
     char label[300];
     const char *sweep_file, *sweep_col;
 } resp;
@@ -50,12 +49,12 @@ static void resp_of(const gd_case *c, const gd_contin_result *res, resp *r)
     r->kind = c->cont_response >= 0 && c->cont_response <= 4 ? c->cont_response : 0;
     r->nmesh = res->nmesh;
     r->scale = r->kind == GD_CONT_RESP_POINCARE ? c->characteristic_length_um : 1;
-    cli_qty_column(col[r->kind], res->nmesh, &r->q);
+    gd_qty_column(col[r->kind], res->nmesh, &r->q);
     if (r->kind == GD_CONT_RESP_POINCARE) {
         size_t l = strlen(r->q.name);
         snprintf(r->q.name + l, sizeof r->q.name - l, " at mesh phase 0");
     }
-    cli_qty_label(&r->q, r->label, sizeof r->label);
+    gd_qty_label(&r->q, r->label, sizeof r->label);
     r->sweep_file = r->kind == GD_CONT_RESP_POINCARE ? "bifurcation.csv" : "sweep.csv";
     r->sweep_col = r->kind == GD_CONT_RESP_POINCARE                ? "lambda_L"
                    : r->kind == GD_CONT_RESP_DYNAMIC_LOAD_FACTOR ? "dynamic_load_factor"
@@ -206,28 +205,28 @@ static int period_visible(const gd_contin_result *res, const resp *r, const fram
     return seen >= 20;
 }
 
-static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c, const gd_contin_result *res,
+static void plot_one(gd_plot_script *s, const char *overlay, const gd_case *c, const gd_contin_result *res,
                      const resp *r, const frame *f, const sweep_pts *sp, int svg)
 {
-    cli_fig_begin(s, svg, W, H, "continuation");
-    cli_qty par;
-    cli_qty_key(res->parameter, &par);
+    gd_fig_begin(s, svg, W, H, "continuation");
+    gd_qty par;
+    gd_qty_key(res->parameter, &par);
     char xl[256], title[900];
-    cli_qty_label(&par, xl, sizeof xl);
+    gd_qty_label(&par, xl, sizeof xl);
     /* the case's title above what the picture shows */
     char pname[200];
-    cli_gp_title(c->title, title, sizeof title);
-    cli_gp_text(par.name, pname, sizeof pname);
+    gd_gp_title(c->title, title, sizeof title);
+    gd_gp_text(par.name, pname, sizeof pname);
     if (c->title[0])
-        gd_gnuplot_printf(s, "set title '%s'.\"\\n\".'", title);
+        gd_plot_printf(s, "set title '%s'.\"\\n\".'", title);
     else
-        gd_gnuplot_printf(s, "set title '");
-    gd_gnuplot_printf(s, "Periodic orbits continued in the %s: solid stable, dashed unstable'\n", pname);
-    gd_gnuplot_printf(s, "set xlabel '%s'\nset ylabel '%s'\n", xl, r->label);
-    gd_gnuplot_printf(s, "set lmargin at screen %g\nset rmargin at screen %g\nset bmargin at screen %g\n"
+        gd_plot_printf(s, "set title '");
+    gd_plot_printf(s, "Periodic orbits continued in the %s: solid stable, dashed unstable'\n", pname);
+    gd_plot_printf(s, "set xlabel '%s'\nset ylabel '%s'\n", xl, r->label);
+    gd_plot_printf(s, "set lmargin at screen %g\nset rmargin at screen %g\nset bmargin at screen %g\n"
                          "set tmargin at screen %g\n", FX0, FX1, FY0, FY1);
-    gd_gnuplot_printf(s, "set xrange [%.12g:%.12g]\nset yrange [%.12g:%.12g]\n", f->x0, f->x1, f->y0, f->y1);
-    gd_gnuplot_printf(s, "set key at screen %g,%g left top vertical Left reverse samplen 2.5 spacing 1.25\n",
+    gd_plot_printf(s, "set xrange [%.12g:%.12g]\nset yrange [%.12g:%.12g]\n", f->x0, f->x1, f->y0, f->y1);
+    gd_plot_printf(s, "set key at screen %g,%g left top vertical Left reverse samplen 2.5 spacing 1.25\n",
                       FX1 + 0.025, FY1);
     /* the segments of each period, stable and not, as data blocks: x0, y0, dx, dy */
     int periods[64], np = 0;
@@ -246,7 +245,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
         }
     for (int k = 0; k < np; k++)
         for (int st = 0; st < 2; st++) {
-            gd_gnuplot_printf(s, "$SEG%d_%d << EOD\nx,y,dx,dy\n", periods[k], st);
+            gd_plot_printf(s, "$SEG%d_%d << EOD\nx,y,dx,dy\n", periods[k], st);
             for (int b = 0; b < res->nbranches; b++) {
                 const gd_contin_branch *cb = &res->branch[b];
                 if (cb->nper != periods[k])
@@ -257,10 +256,10 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                         continue;
                     double x0 = gd_contin_value(res, cb->br.pt[i].orbit.p), y0 = resp_value(r, &cb->meas[i]);
                     double x1 = gd_contin_value(res, cb->br.pt[i + 1].orbit.p), y1 = resp_value(r, &cb->meas[i + 1]);
-                    gd_gnuplot_printf(s, "%.12g,%.12g,%.12g,%.12g\n", x0, y0, x1 - x0, y1 - y0);
+                    gd_plot_printf(s, "%.12g,%.12g,%.12g,%.12g\n", x0, y0, x1 - x0, y1 - y0);
                 }
             }
-            gd_gnuplot_printf(s, "EOD\n");
+            gd_plot_printf(s, "EOD\n");
         }
     /* the bifurcations: a block per kind; their labels, close points of one kind sharing one */
     int nb = 0;
@@ -283,11 +282,11 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                 }
         }
     for (int k = 0; k < NKINDS; k++) {
-        gd_gnuplot_printf(s, "$BIF%d << EOD\nx,y\n", k);
+        gd_plot_printf(s, "$BIF%d << EOD\nx,y\n", k);
         for (int i = 0; i < nb; i++)
             if (bk[i] == k)
-                gd_gnuplot_printf(s, "%.12g,%.12g\n", bx[i], by[i]);
-        gd_gnuplot_printf(s, "EOD\n");
+                gd_plot_printf(s, "%.12g,%.12g\n", bx[i], by[i]);
+        gd_plot_printf(s, "EOD\n");
     }
     /* obstacles of the labels: the markers, the branches (a point every 4 pixels along them), the
      * sweep's points */
@@ -303,7 +302,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
         nobst += 1;
     }
     double *obst = malloc(sizeof(double) * 2 * (size_t)(nobst + 1));
-    cli_label *lab = malloc(sizeof(cli_label) * (size_t)(nb + 1));
+    gd_fig_label *lab = malloc(sizeof(gd_fig_label) * (size_t)(nb + 1));
     char (*text)[24] = malloc(sizeof *text * (size_t)(nb + 1));
     int nl = 0;
     if (obst && lab && text && bx && bloc) {
@@ -375,8 +374,8 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                 snprintf(text[nl], sizeof text[nl], "%s%s", kinds[bk[i]].mark, bloc[i] ? "" : "?");
             lab[nl].x = sx / cnt;
             lab[nl].y = sy / cnt;
-            lab[nl].w = cli_text_width(text[nl], CLI_FIG_PX);
-            lab[nl].h = CLI_FIG_PX;
+            lab[nl].w = gd_text_width(text[nl], GD_FIG_PX);
+            lab[nl].h = GD_FIG_PX;
             nl++;
         }
         free(order);
@@ -388,7 +387,7 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                     strlen(text[i]) + strlen(text[j]) + 3 <= sizeof text[i]) {
                     strcat(text[i], ", ");
                     strcat(text[i], text[j]);
-                    lab[i].w = cli_text_width(text[i], CLI_FIG_PX);
+                    lab[i].w = gd_text_width(text[i], GD_FIG_PX);
                     for (int k = j; k + 1 < nl; k++) {
                         lab[k] = lab[k + 1];
                         memcpy(text[k], text[k + 1], sizeof text[k]);
@@ -396,61 +395,65 @@ static void plot_one(gd_gnuplot_script *s, const char *overlay, const gd_case *c
                     nl--;
                     j--;
                 }
-        cli_place_labels(lab, nl, W * FX0, H * (1 - FY1), W * FX1, H * (1 - FY0), obst, o);
+        gd_place_labels(lab, nl, W * FX0, H * (1 - FY1), W * FX1, H * (1 - FY0), obst, o);
         for (int i = 0; i < nl; i++)
             if (lab[i].keep) {
                 /* back to data: centre of the label, baseline a third of the height below it */
                 double x = f->x0 + (lab[i].lx / W - FX0) / (FX1 - FX0) * (f->x1 - f->x0);
                 double y = f->y0 + ((1 - lab[i].ly / H) - FY0) / (FY1 - FY0) * (f->y1 - f->y0);
-                gd_gnuplot_printf(s, "set label %d '%s' at %.12g,%.12g center front\n", i + 1, text[i], x, y);
+                gd_plot_printf(s, "set label %d '%s' at %.12g,%.12g center front\n", i + 1, text[i], x, y);
             }
     }
     free(obst);
     free(lab);
     free(text);
     /* the plot: segments, key entries of the visible periods, markers, the sweep */
-    gd_gnuplot_printf(s, "plot ");
+    gd_plot_printf(s, "plot ");
     const char *sep = "";
     for (int k = 0; k < np; k++) {
-        const char *col = cli_colour[(k + 4) % CLI_NCOLOURS];
+        const char *col = gd_colour[(k + 4) % GD_NCOLOURS];
         for (int st = 1; st >= 0; st--) {
-            gd_gnuplot_printf(s, "%s$SEG%d_%d using 1:2:3:4 with vectors nohead lw 2 dt %d lc rgb '%s' notitle", sep,
+            gd_plot_printf(s, "%s$SEG%d_%d using 1:2:3:4 with vectors nohead lw 2 dt %d lc rgb '%s' notitle", sep,
                               periods[k], st, st ? 1 : 2, col);
             sep = ", \\\n  ";
         }
         if (period_visible(res, r, f, periods[k]) || np == 1)
-            gd_gnuplot_printf(s, "%s1/0 with lines lw 2 lc rgb '%s' title 'period-%d orbits'", sep, col, periods[k]);
+            gd_plot_printf(s, "%s1/0 with lines lw 2 lc rgb '%s' title 'period-%d orbits'", sep, col, periods[k]);
     }
-    gd_gnuplot_printf(s, "%s1/0 with lines lw 2 dt 2 lc rgb '#000000' title 'unstable'", sep);
+    gd_plot_printf(s, "%s1/0 with lines lw 2 dt 2 lc rgb '#000000' title 'unstable'", sep);
     for (int k = 0; k < NKINDS; k++)
         if (present[k])
-            gd_gnuplot_printf(s, "%s$BIF%d using 1:2 with points pt %d ps %g lc rgb '#000000' title '%s'", sep, k,
+            gd_plot_printf(s, "%s$BIF%d using 1:2 with points pt %d ps %g lc rgb '#000000' title '%s'", sep, k,
                               kinds[k].pt, kinds[k].ps, kinds[k].key);
     if (overlay)
-        gd_gnuplot_printf(s, "%s'%s/%s' using 'parameter':(strcol('direction') eq 'down' ? 1/0 : column('%s')*%.12g) with "
+        gd_plot_printf(s, "%s'%s/%s' using 'parameter':(strcol('direction') eq 'down' ? 1/0 : column('%s')*%.12g) with "
                              "points pt 1 ps 1.1 lw 1.5 lc rgb '#555555' title 'sweep up', \\\n  '%s/%s' using 'parameter':"
                              "(strcol('direction') eq 'down' ? column('%s')*%.12g : 1/0) with points pt 2 ps 1 lw 1.5 "
                              "lc rgb '#555555' title 'sweep down'",
                           sep, overlay, r->sweep_file, r->sweep_col, r->scale, overlay, r->sweep_file, r->sweep_col,
                           r->scale);
-    gd_gnuplot_printf(s, "\n");
-    cli_fig_end(s, 0);
+    gd_plot_printf(s, "\n");
+    gd_fig_end(s, 0);
     free(bx);
     free(by);
     free(bk);
     free(bloc);
 }
 
-gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_contin_result *res, gd_error *err)
+/* continuation.png and .svg */
+static void draw(const gd_plotter *pl, const gd_case *c, const gd_contin_result *res)
 {
     if (res->nbranches == 0)
-        return GD_OK;
+        return;
+    gd_error e = {0}, *err = &e;
     /* gnuplot reads the overlay sweep, named relative to this process's working directory, by its
      * absolute path */
     char *overlay = NULL;
-    if (c->cont_overlay_sweep[0] && !(overlay = realpath(c->cont_overlay_sweep, NULL)))
-        return gd_error_set(err, GD_ERR_IO, "%s: continuation.overlay_sweep: %s", c->cont_overlay_sweep,
-                            strerror(errno));
+    if (c->cont_overlay_sweep[0] && !(overlay = realpath(c->cont_overlay_sweep, NULL))) {
+        gd_error_set(err, GD_ERR_IO, "%s: continuation.overlay_sweep: %s", c->cont_overlay_sweep, strerror(errno));
+        gd_plot_fail(pl, "pictures not drawn", err);
+        return;
+    }
     resp r;
     resp_of(c, res, &r);
     sweep_pts sp = {0};
@@ -478,9 +481,9 @@ gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_cont
         }
     if (!(yhi >= ylo))
         ylo = yhi = 0;
-    cli_pad(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), 0.025, 0, &f.x0, &f.x1);
-    cli_pad(ylo, yhi, 0.07, 0, &f.y0, &f.y1);
-    gd_gnuplot_script s = {0};
+    gd_pad(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), 0.025, 0, &f.x0, &f.x1);
+    gd_pad(ylo, yhi, 0.07, 0, &f.y0, &f.y1);
+    gd_plot_script s = {0};
     if (st == GD_OK)
         for (int svg = 0; svg < 2; svg++)
             plot_one(&s, overlay, c, res, &r, &f, &sp, svg);
@@ -490,14 +493,17 @@ gd_status cli_continuation_draw(const char *dir, const gd_case *c, const gd_cont
     free(sp.up);
     if (st != GD_OK) {
         free(s.p);
-        return st;
-    }
-    if (s.bad) {
-        free(s.p);
-        return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the continuation's gnuplot script");
+        gd_plot_fail(pl, "pictures not drawn", err);
+        return;
     }
     static const char *names[] = {"continuation"};
-    st = gd_gnuplot_draw(dir, s.p, names, 1, err);
-    free(s.p);
-    return st;
+    gd_plot_draw(pl, &s, names, 1, "pictures not drawn");
+}
+
+void gd_plot_continuation(const gd_plotter *p, const gd_case *c, const gd_contin_result *res)
+{
+    if (gd_plot_wanted(p, c->plots)) {
+        draw(p, c, res);
+        gd_plot_curves(p, c, res);
+    }
 }

@@ -126,12 +126,12 @@ static const char *schema_unit(const char *u)
     return u;
 }
 
-const char *cli_half_sub(int half, int halves)
+const char *gd_half_sub(int half, int halves)
 {
     return halves > 1 ? (half ? "R" : "L") : "";
 }
 
-const char *cli_half_words(int half, int halves)
+const char *gd_half_words(int half, int halves)
 {
     return halves > 1 ? (half ? "right half" : "left half") : "";
 }
@@ -154,7 +154,7 @@ static void side_symbol(char *out, size_t len, const char *sym, const char *side
         snprintf(out, len, "%s_%s", sym, side);
 }
 
-int cli_qty_column(const char *column, int halves, cli_qty *q)
+int gd_qty_column(const char *column, int halves, gd_qty *q)
 {
     memset(q, 0, sizeof *q);
     q->scale = 1;
@@ -192,7 +192,7 @@ int cli_qty_column(const char *column, int halves, cli_qty *q)
     col[n] = '\0';
     /* "lambda_dot_L" -> "lambda_dot" + L: the side sits before _dot in the tables' names too */
     if (half >= 0)
-        side = cli_half_sub(half, halves);
+        side = gd_half_sub(half, halves);
     for (size_t i = 0; i < sizeof stems / sizeof stems[0]; i++) {
         if (strcmp(col, stems[i].stem) != 0)
             continue;
@@ -208,7 +208,7 @@ int cli_qty_column(const char *column, int halves, cli_qty *q)
         }
         if (!q->sym[0] && half >= 0 && halves > 1) {
             size_t l = strlen(q->name);
-            snprintf(q->name + l, sizeof q->name - l, " of the %s", cli_half_words(half, halves));
+            snprintf(q->name + l, sizeof q->name - l, " of the %s", gd_half_words(half, halves));
         }
         copy(q->unit, sizeof q->unit, unit ? unit : stems[i].unit);
         /* a rate in dimensionless time (the basins' sections): d/dτ, τ = ω_n t */
@@ -226,7 +226,7 @@ int cli_qty_column(const char *column, int halves, cli_qty *q)
     return 0;
 }
 
-int cli_qty_key(const char *dotted, cli_qty *q)
+int gd_qty_key(const char *dotted, gd_qty *q)
 {
     memset(q, 0, sizeof *q);
     q->scale = 1;
@@ -276,7 +276,7 @@ int cli_qty_key(const char *dotted, cli_qty *q)
     return 0;
 }
 
-int cli_qty_in(cli_qty *q, const char *unit)
+int gd_qty_in(gd_qty *q, const char *unit)
 {
     if (strcmp(q->unit, unit) == 0)
         return 1;
@@ -289,7 +289,7 @@ int cli_qty_in(cli_qty *q, const char *unit)
     return 0;
 }
 
-void cli_gp_text(const char *in, char *out, size_t len)
+void gd_gp_text(const char *in, char *out, size_t len)
 {
     size_t k = 0;
     for (const char *s = in; *s && k + 3 < len; s++) {
@@ -302,7 +302,7 @@ void cli_gp_text(const char *in, char *out, size_t len)
     out[k] = '\0';
 }
 
-void cli_gp_title(const char *in, char *out, size_t len)
+void gd_gp_title(const char *in, char *out, size_t len)
 {
     size_t k = 0;
     for (const char *s = in; *s && k + 3 < len; s++) {
@@ -315,10 +315,10 @@ void cli_gp_title(const char *in, char *out, size_t len)
     out[k] = '\0';
 }
 
-void cli_qty_label(const cli_qty *q, char *buf, size_t len)
+void gd_qty_label(const gd_qty *q, char *buf, size_t len)
 {
     char name[256];
-    cli_gp_text(q->name, name, sizeof name);
+    gd_gp_text(q->name, name, sizeof name);
     /* the symbol is enhanced text already: only its quotes */
     char sym[96];
     size_t k = 0;
@@ -334,7 +334,7 @@ void cli_qty_label(const cli_qty *q, char *buf, size_t len)
         snprintf(buf, len, "%s%s%s", name, sym[0] ? " " : "", sym);
 }
 
-const char *cli_optimizer_words(int alg)
+const char *gd_optimizer_words(int alg)
 {
     const char *n = gd_opt_algorithm_name(alg);
     static const struct {
