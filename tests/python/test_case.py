@@ -257,7 +257,7 @@ def test_bad_input_as_command_line(c, tmp_path, monkeypatch):
         assert str(t.value) == message
 
 
-def test_cost_of_gear_objectives():
+def test_cost_of_gear_objectives(work):
     """check()'s estimate of an optimisation counts what one evaluation of its objective computes:
     gear-lte-range an LTCA per torque, gear-dynamic per torque an LTCA and the orbits followed over
     the speed range (several times the LTCA's cost: docs/optimisation.md section 12 measured 0.5 s
