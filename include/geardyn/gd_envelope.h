@@ -88,6 +88,13 @@ typedef struct gd_curve_opts {
     int direction;           /* +1: set out towards increasing p2 (or p1 where p2 cannot move); -1 decreasing */
     double locate_tol;       /* a codimension-two point's arclength bracket (0: ten times tol over y_scale) */
     gd_stop_hook stop;       /* asked before each point: nonzero ends with GD_ERR_INTERRUPTED */
+    /* the words of the end reasons: parameter i is key[i] = value_scale[i] p_i unit[i]; the box's lower and
+     * upper bound of parameter i are the keys bound_key[i][0], bound_key[i][1] (NULL: "p1", "p2", no unit,
+     * scale 1, "the lower bound of p1") */
+    struct {
+        const char *key[2], *unit[2], *bound_key[2][2];
+        double value_scale[2];
+    } words;
 } gd_curve_opts;
 
 /* multiple shooting, scales and tolerances derived, ds 0.02 in [1e-6, 0.2], 400 points, +1 */

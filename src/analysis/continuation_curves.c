@@ -128,6 +128,16 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
     cvo.max_points = c->cont_curve_max_points;
     cvo.locate_tol = co->locate_tol;
     cvo.stop = co->stop;
+    cvo.words.key[0] = res->parameter;
+    cvo.words.key[1] = res->parameter2;
+    cvo.words.unit[0] = res->unit;
+    cvo.words.unit[1] = res->unit2;
+    cvo.words.value_scale[0] = res->scale;
+    cvo.words.value_scale[1] = res->scale2;
+    cvo.words.bound_key[0][0] = "continuation.from"; /* p_min: from / scale, as the branches' */
+    cvo.words.bound_key[0][1] = "continuation.to";
+    cvo.words.bound_key[1][0] = "continuation.parameter2_from";
+    cvo.words.bound_key[1][1] = "continuation.parameter2_to";
     const double tol = 1e-6 * (co->p_max - co->p_min);
     const int nb = res->nbranches;
     for (int ib = 0; ib < nb && st == GD_OK; ib++)
