@@ -19,9 +19,9 @@
  * grazing met). Along each curve the codimension-two points are located by GSL's Brent solver on
  * continuous test functions: the cusp on a fold curve, fold-flip points, the strong resonances 1:1 to
  * 1:4 on a Neimark-Sacker curve, grazing curves meeting fold, period-doubling and Neimark-Sacker
- * curves, and double grazing. Checked by tests (tests/test_envelope.c): fold, period-doubling,
- * grazing and Neimark-Sacker curves, the strong resonances 1:3 and 1:4; the other codimension-two
- * points are not yet. */
+ * curves, and double grazing. Checked by tests (tests/test_envelope.c, tests/cli/test_envelope_cli.sh):
+ * fold, period-doubling, grazing and Neimark-Sacker curves, the strong resonances 1:3 and 1:4, the cusp
+ * of the Kahraman & Singh fold curves; the other codimension-two points are not yet. */
 #ifndef GD_ENVELOPE_H
 #define GD_ENVELOPE_H
 
