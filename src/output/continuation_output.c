@@ -143,8 +143,11 @@ static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_err
         for (int i = 0; i < cu->cv.npoints; i++) {
             const gd_curve_point *pt = &cu->cv.pt[i];
             const gd_po *o = &pt->orbit;
-            fprintf(fp, "%d,%s,%d,%d,%s,%d,%.12g,%.12g,%.12g,%.12g,%s", ic, gd_curve_kind_name(cu->cv.kind),
-                    cu->cv.nper, cu->branch, cu->direction > 0 ? "up" : "down", i, gd_contin_value(res, o->p),
+            char fb[16] = "";
+            if (cu->branch >= 0)
+                snprintf(fb, sizeof fb, "%d", cu->branch);
+            fprintf(fp, "%d,%s,%d,%s,%s,%d,%.12g,%.12g,%.12g,%.12g,%s", ic, gd_curve_kind_name(cu->cv.kind),
+                    cu->cv.nper, fb, cu->direction > 0 ? "up" : "down", i, gd_contin_value(res, o->p),
                     pt->p2 * res->scale2, o->p, pt->p2,
                     cu->cv.clearance >= 0 ? res->clear_name[cu->cv.clearance] : "");
             num(fp, pt->t_graze);
@@ -246,7 +249,7 @@ static json_t *curve_json(const gd_contin_result *res, int ic)
     json_object_set_new(o, "kind", json_string(gd_curve_kind_name(cv->kind)));
     json_object_set_new(o, "period_n", json_integer(cv->nper));
     json_object_set_new(o, "clearance", cv->clearance >= 0 ? json_string(res->clear_name[cv->clearance]) : json_null());
-    json_object_set_new(o, "from_branch", json_integer(cu->branch));
+    json_object_set_new(o, "from_branch", cu->branch >= 0 ? json_integer(cu->branch) : json_null());
     json_object_set_new(o, "direction", json_string(cu->direction > 0 ? "up" : "down"));
     json_object_set_new(o, "points", json_integer(cv->npoints));
     json_object_set_new(o, "first", json_pack("[o, o]", gd_json_num(gd_contin_value(res, a->orbit.p)),
@@ -357,6 +360,7 @@ gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_moda
         json_object_set_new(r, "parameter2", json_string(res->parameter2));
         json_object_set_new(r, "unit2", json_string(res->unit2));
         json_object_set_new(r, "scale2", gd_json_num(res->scale2));
+        json_object_set_new(r, "curve_start", res->curve_start[0] ? json_string(res->curve_start) : json_null());
         json_t *cvs = json_array();
         for (int i = 0; i < res->ncurves; i++)
             json_array_append_new(cvs, curve_json(res, i));

@@ -85,6 +85,29 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < <(grep -E '^(PASS|FAIL)' "$work/checks.txt")
 
+# one curve from a row of an earlier run's bifurcations.csv (continuation.curve_start): row 2, the
+# upper fold, gives its two curves only, the same as the run of every curve gives from that fold
+"$G" run "$KS" --out "$work/row" --quiet --set output.plots=off --set continuation.curve_start="$out/bifurcations.csv" \
+    --set continuation.curve_start_row=2 > "$work/row.txt" 2>&1
+ok $? "a start from row 2 of bifurcations.csv runs ($(head -c 300 "$work/row.txt"))"
+python3 - "$out" "$work/row" > "$work/row-checks.txt" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+b = json.load(open(sys.argv[2] + "/summary.json"))["results"]
+bf = [c for c in a["curves"] if c["kind"] == "fold" and abs(c["first"][0] - b["curves"][0]["first"][0]) < 1e-6]
+print(("PASS " if len(b["curves"]) == 2 and all(c["kind"] == "fold" and c["from_branch"] is None for c in b["curves"])
+       and "row 2: fold at speed_rpm = " in (b["curve_start"] or "") else "FAIL ") +
+      "only the fold's two curves (%s; %s)" % ([(c["kind"], c["direction"]) for c in b["curves"]], b["curve_start"]))
+same = len(bf) == 2 and all(x["direction"] == y["direction"] and x["points"] == y["points"] and
+                            all(abs(u - v) <= 1e-9 * abs(v) for u, v in zip(x["last"], y["last"]))
+                            for x, y in zip(bf, b["curves"]))
+print(("PASS " if same else "FAIL ") + "they end where the all-curves run's curves of that fold end, to 1e-9 (%s)"
+      % [c["last"] for c in b["curves"]])
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/row-checks.txt"
+
 # the cusp (cases/continuation/kahraman-singh-cusp.ini): both fold curves from the branch at F_a 0.02
 # pass it, codim2.csv reports it from each, at the same point; one-parameter continuations in Omega
 # at F_a 1 % above it find two folds (their hysteresis 0.5 rpm wide) near its Omega, 1 % below none
@@ -154,5 +177,12 @@ refuse continuation.parameter2_from=-1 "continuation.parameter2_from: excitation
 refuse continuation.parameter2_from=1.5 "continuation.parameter2: the case's excitation.ste_amplitude_um = 1 lies outside"
 refuse continuation.parameter2= "continuation.parameter2_from: given without continuation.parameter2"
 refuse continuation.curve_max_points=1 "continuation.curve_max_points"
+# a row that is not a bifurcation of this case with a curve: refused before any work
+refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start_row: 9, but .*bifurcations.csv has 4 rows \(valid: 1 to 4\)" continuation.curve_start_row=9
+refuse continuation.curve_start="$work/cusp/bifurcations.csv" "continuation.curve_start: the continuation in .*cusp is of another model: excitation.ste_amplitude_um = 0.2 there, 1 here"
+mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-change,/,neimark-sacker,/' "$out/bifurcations.csv" > "$work/ns/bifurcations.csv"
+refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a neimark-sacker, which has no curve"
+refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
+refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
 echo "1..$n"
 [ $bad -eq 0 ]
