@@ -226,6 +226,8 @@ typedef struct gd_case {
     char cont_parameter2[256]; /* "section.key" of the curves' second parameter ("": no curves) */
     double cont_from2, cont_to2; /* its bounds, in the unit of its key */
     int cont_curve_max_points; /* points of one curve in one direction at most */
+    char cont_curve_start[GD_PATH_MAX]; /* an earlier continuation's bifurcations.csv: one row's curve only ("": all) */
+    int cont_curve_start_row; /* its data row, 1 the first */
 
     /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
     char bas_x[32], bas_y[32];   /* the section's coordinates */

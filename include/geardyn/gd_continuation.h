@@ -43,7 +43,7 @@ typedef struct gd_contin_branch {
 /* A curve of fold, period-doubling or grazing points continued in (parameter, parameter2) from a
  * bifurcation of a branch (docs/continuation.md section 8). */
 typedef struct gd_contin_curve {
-    int branch, bif;             /* the branch and its bifurcation the curve starts from */
+    int branch, bif;             /* the branch and its bifurcation the curve starts from (-1: curve_start's row) */
     int direction;               /* +1: set out towards increasing parameter2, -1 decreasing */
     gd_curve cv;                 /* its points: orbit.p = value / scale, p2 = value2 / scale2 */
 } gd_contin_curve;
@@ -70,6 +70,7 @@ typedef struct gd_contin_result {
     double cpu_s;
     /* continuation.parameter2: the curves (none when it is "") */
     char parameter2[256], unit2[32];
+    char curve_start[GD_PATH_MAX + 96]; /* the one curve's start (continuation.curve_start), "" for all */
     double scale2;               /* key value per unit of p2 */
     int ncurves;
     gd_contin_curve *curve;      /* from each fold, period doubling and grazing, down then up in parameter2 */
@@ -94,6 +95,18 @@ typedef struct gd_contin_start {
     char source[GD_PATH_MAX + 96]; /* what it is, for summary.json ("sweep DIR, up, speed_rpm = 3000") */
 } gd_contin_start;
 
+/* The start of one curve in two parameters (continuation.curve_start): a fold, period doubling or
+ * grazing of an earlier run's bifurcations.csv, of this case. */
+typedef struct gd_contin_curve_row {
+    int kind;                    /* gd_curve_kind */
+    int nper;                    /* mesh periods of the orbit */
+    int clearance;               /* a grazing's clearance (index into the model's), else -1 */
+    double value;                /* the parameter, in the key's unit */
+    int n;                       /* the state's size: the model's */
+    double y[GD_MAX_STATE];      /* the orbit's state at mesh phase 0 */
+    char source[GD_PATH_MAX + 96]; /* what it is, for summary.json ("FILE row 2: fold at speed_rpm = ...") */
+} gd_contin_curve_row;
+
 /* Run the continuation of a resolved case into *res (free with gd_contin_result_free). start:
  * NULL for start = attractor or state; required for start = sweep (the row `continuation` reads
  * it from the sweep's states.csv), and used instead of the case's start when given. stop (may be
@@ -101,6 +114,10 @@ typedef struct gd_contin_start {
  * no result. */
 GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *start, gd_contin_progress_fn progress,
                                void *user, const gd_stop_hook *stop, gd_contin_result *res, gd_error *err);
+/* The same, with continuation.parameter2 following only the curve of row (NULL: every bifurcation's). */
+GD_API gd_status gd_contin_run_curve(const gd_case *c, const gd_contin_start *start, const gd_contin_curve_row *row,
+                                     gd_contin_progress_fn progress, void *user, const gd_stop_hook *stop,
+                                     gd_contin_result *res, gd_error *err);
 GD_API void gd_contin_result_free(gd_contin_result *res);
 
 /* The parameter of a branch point or bifurcation in the key's unit. */

@@ -19,9 +19,9 @@
  * grazing met). Along each curve the codimension-two points are located by GSL's Brent solver on
  * continuous test functions: the cusp on a fold curve, fold-flip points, the strong resonances 1:1 to
  * 1:4 on a Neimark-Sacker curve, grazing curves meeting fold, period-doubling and Neimark-Sacker
- * curves, and double grazing. Checked by tests (tests/test_envelope.c): fold, period-doubling,
- * grazing and Neimark-Sacker curves, the strong resonances 1:3 and 1:4; the other codimension-two
- * points are not yet. */
+ * curves, and double grazing. Checked by tests (tests/test_envelope.c, tests/cli/test_envelope_cli.sh):
+ * fold, period-doubling, grazing and Neimark-Sacker curves, the strong resonances 1:3 and 1:4, the cusp
+ * of the Kahraman & Singh fold curves; the other codimension-two points are not yet. */
 #ifndef GD_ENVELOPE_H
 #define GD_ENVELOPE_H
 
@@ -88,6 +88,13 @@ typedef struct gd_curve_opts {
     int direction;           /* +1: set out towards increasing p2 (or p1 where p2 cannot move); -1 decreasing */
     double locate_tol;       /* a codimension-two point's arclength bracket (0: ten times tol over y_scale) */
     gd_stop_hook stop;       /* asked before each point: nonzero ends with GD_ERR_INTERRUPTED */
+    /* the words of the end reasons: parameter i is key[i] = value_scale[i] p_i unit[i]; the box's lower and
+     * upper bound of parameter i are the keys bound_key[i][0], bound_key[i][1] (NULL: "p1", "p2", no unit,
+     * scale 1, "the lower bound of p1") */
+    struct {
+        const char *key[2], *unit[2], *bound_key[2][2];
+        double value_scale[2];
+    } words;
 } gd_curve_opts;
 
 /* multiple shooting, scales and tolerances derived, ds 0.02 in [1e-6, 0.2], 400 points, +1 */

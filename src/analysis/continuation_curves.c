@@ -1,6 +1,8 @@
 /* The curves of the `continuation` analysis (continuation.parameter2; docs/continuation.md section
  * 8): the keys checked, and every fold, period doubling and grazing of the branches continued in
- * (parameter, parameter2) both ways by gd_curve_follow (gd_envelope.h), each bifurcation once. */
+ * (parameter, parameter2) both ways by gd_curve_follow (gd_envelope.h), each bifurcation once, or
+ * only the curve of one row of an earlier run's bifurcations.csv (continuation.curve_start, read by
+ * src/output/curve_start.c); the end reasons in the keys' names and units. */
 #include "geardyn/gd_continuation.h"
 #include "../case/case_keys.h"
 #include "analysis_internal.h"
@@ -19,6 +21,14 @@ gd_status gd_contin_check_curves(const gd_case *c, gd_error *err)
     char w[GD_PATH_MAX + 32], range[160];
     static const char *bk[2] = {"parameter2_from", "parameter2_to"};
     const char *name = c->cont_parameter2;
+    if (gd_case_key_given(c, "continuation", "curve_start_row") && !c->cont_curve_start[0])
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start_row: given without "
+                            "continuation.curve_start (valid: name the bifurcations.csv whose row starts the curve, or "
+                            "leave curve_start_row out)", WHERE("curve_start_row"));
+    if (!name[0] && c->cont_curve_start[0])
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start: given without continuation.parameter2 "
+                            "(valid: set parameter2, the curve's second key, or leave curve_start out)",
+                            WHERE("curve_start"));
     if (!name[0]) {
         for (int i = 0; i < 2; i++)
             if (gd_case_key_given(c, "continuation", bk[i]))
@@ -99,8 +109,40 @@ static void curve_note(gd_contin_result *res, const char *fmt, ...)
     va_end(ap);
 }
 
+/* Follow the curve of start both ways into res (from branch ib's bifurcation i, or -1, -1: a row); *st
+ * set on an error that ends the run, a note on a curve not followed. */
+static gd_status follow_both(gd_contin_result *res, gd_case_param2 *pp, const gd_solver_opts *o, gd_curve_opts *cvo,
+                             const gd_curve_start *s, int ib, int i, const char *what, gd_error *err)
+{
+    gd_status st = GD_OK;
+    for (int dir = -1; dir <= 1 && st == GD_OK; dir += 2) {
+        gd_contin_curve *cc = realloc(res->curve, sizeof *cc * (size_t)(res->ncurves + 1));
+        if (!cc)
+            return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the curves");
+        res->curve = cc;
+        gd_contin_curve *cu = &res->curve[res->ncurves];
+        memset(cu, 0, sizeof *cu);
+        cu->branch = ib;
+        cu->bif = i;
+        cu->direction = dir;
+        cvo->direction = dir;
+        gd_error e2 = {0};
+        gd_status cs = gd_curve_follow(gd_model_at_case_keys, pp, o, cvo, s, &cu->cv, &e2);
+        if (cs == GD_OK) {
+            res->curve_corrections += cu->cv.corrections;
+            res->ncurves++;
+        } else if (cs == GD_ERR_NOMEM || cs == GD_ERR_INTERRUPTED) {
+            st = gd_error_set(err, cs, "%s", e2.msg);
+        } else {
+            curve_note(res, "no %s curve from %s (%s): %s", gd_curve_kind_name(s->kind), what, dir > 0 ? "up" : "down",
+                       e2.msg);
+        }
+    }
+    return st;
+}
+
 gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts *o, const gd_cont_opts *co,
-                           gd_contin_result *res, gd_error *err)
+                           const gd_contin_curve_row *row, gd_contin_result *res, gd_error *err)
 {
     if (!c->cont_parameter2[0])
         return GD_OK;
@@ -128,8 +170,30 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
     cvo.max_points = c->cont_curve_max_points;
     cvo.locate_tol = co->locate_tol;
     cvo.stop = co->stop;
+    cvo.words.key[0] = res->parameter;
+    cvo.words.key[1] = res->parameter2;
+    cvo.words.unit[0] = res->unit;
+    cvo.words.unit[1] = res->unit2;
+    cvo.words.value_scale[0] = res->scale;
+    cvo.words.value_scale[1] = res->scale2;
+    cvo.words.bound_key[0][0] = "continuation.from"; /* p_min: from / scale, as the branches' */
+    cvo.words.bound_key[0][1] = "continuation.to";
+    cvo.words.bound_key[1][0] = "continuation.parameter2_from";
+    cvo.words.bound_key[1][1] = "continuation.parameter2_to";
     const double tol = 1e-6 * (co->p_max - co->p_min);
-    const int nb = res->nbranches;
+    if (row) { /* only the curve of an earlier run's row */
+        gd_curve_start s;
+        memset(&s, 0, sizeof s);
+        s.kind = row->kind;
+        s.nper = row->nper;
+        s.clearance = row->kind == GD_CURVE_GRAZING ? row->clearance : -1;
+        s.p1 = row->value / res->scale;
+        s.p2 = v2 / res->scale2;
+        memcpy(s.y, row->y, sizeof s.y);
+        snprintf(res->curve_start, sizeof res->curve_start, "%s", row->source);
+        st = follow_both(res, &pp, o, &cvo, &s, -1, -1, row->source, err);
+    }
+    const int nb = row ? 0 : res->nbranches;
     for (int ib = 0; ib < nb && st == GD_OK; ib++)
         for (int i = 0; i < res->branch[ib].br.nbif && st == GD_OK; i++) {
             const gd_bifurcation *bf = &res->branch[ib].br.bif[i];
@@ -152,32 +216,10 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
             s.p1 = bf->p;
             s.p2 = v2 / res->scale2;
             memcpy(s.y, bf->y, sizeof s.y);
-            for (int dir = -1; dir <= 1 && st == GD_OK; dir += 2) {
-                gd_contin_curve *cc = realloc(res->curve, sizeof *cc * (size_t)(res->ncurves + 1));
-                if (!cc) {
-                    st = gd_error_set(err, GD_ERR_NOMEM, "out of memory for the curves");
-                    break;
-                }
-                res->curve = cc;
-                gd_contin_curve *cu = &res->curve[res->ncurves];
-                memset(cu, 0, sizeof *cu);
-                cu->branch = ib;
-                cu->bif = i;
-                cu->direction = dir;
-                cvo.direction = dir;
-                gd_error e2 = {0};
-                gd_status cs = gd_curve_follow(gd_model_at_case_keys, &pp, o, &cvo, &s, &cu->cv, &e2);
-                if (cs == GD_OK) {
-                    res->curve_corrections += cu->cv.corrections;
-                    res->ncurves++;
-                } else if (cs == GD_ERR_NOMEM || cs == GD_ERR_INTERRUPTED) {
-                    st = gd_error_set(err, cs, "%s", e2.msg);
-                } else {
-                    curve_note(res, "branch %d: no %s curve from the %s at %.10g (%s): %s", ib, gd_curve_kind_name(kind),
-                               gd_bif_kind_name(bf->kind), gd_contin_value(res, bf->p),
-                               dir > 0 ? "up" : "down", e2.msg);
-                }
-            }
+            char what[160];
+            snprintf(what, sizeof what, "the %s of branch %d at %.10g", gd_bif_kind_name(bf->kind), ib,
+                     gd_contin_value(res, bf->p));
+            st = follow_both(res, &pp, o, &cvo, &s, ib, i, what, err);
         }
     /* the case as it was: the second key at its value */
     gd_error e3 = {0};

@@ -570,6 +570,13 @@ static gd_status run_branches(crun *r, const gd_case *c, const gd_po *start, gd_
 GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd_contin_progress_fn progress,
                                void *user, const gd_stop_hook *stop, gd_contin_result *res, gd_error *err)
 {
+    return gd_contin_run_curve(c, from, NULL, progress, user, stop, res, err);
+}
+
+GD_API gd_status gd_contin_run_curve(const gd_case *c, const gd_contin_start *from, const gd_contin_curve_row *row,
+                                     gd_contin_progress_fn progress, void *user, const gd_stop_hook *stop,
+                                     gd_contin_result *res, gd_error *err)
+{
     memset(res, 0, sizeof *res);
     double t0 = gd_clock_thread_cpu_s();
     crun r;
@@ -614,7 +621,7 @@ GD_API gd_status gd_contin_run(const gd_case *c, const gd_contin_start *from, gd
     if (st == GD_OK)
         st = run_branches(&r, c, &start, progress, user, err);
     if (st == GD_OK)
-        st = gd_contin_curves(c, &r.c, &r.o, &r.co, res, err);
+        st = gd_contin_curves(c, &r.c, &r.o, &r.co, row, res, err);
     res->cpu_s = gd_clock_thread_cpu_s() - t0;
     if (r.c.src)
         gd_case_free(&r.c);

@@ -872,8 +872,31 @@ static gd_status bound_point(ccont *C, const cpt *a, int q, double pb, cpt *b, g
     return st;
 }
 
-/* the parameters of a point in the keys' words, for end reasons */
-#define PP(u) (u)[C->S->N], (u)[C->S->N + 1]
+/* a parameter's value in its key's unit, for end reasons */
+static double p_value(const ccont *C, int q, double p)
+{
+    double s = C->co->words.value_scale[q];
+    return s != 0 ? s * p : p;
+}
+
+/* "key = value unit" of parameter q at p */
+static const char *p_text(const ccont *C, int q, double p, char *buf, size_t n)
+{
+    const char *k = C->co->words.key[q], *u = C->co->words.unit[q];
+    snprintf(buf, n, "%s = %.10g%s%s", k ? k : q ? "p2" : "p1", p_value(C, q, p), u && u[0] ? " " : "", u ? u : "");
+    return buf;
+}
+
+/* both parameters of a point: "key1 = v1 unit1, key2 = v2 unit2" */
+typedef struct { char s[2 * GD_PATH_MAX]; } ptext;
+static ptext at_text(const ccont *C, double p1, double p2)
+{
+    ptext t;
+    char a[GD_PATH_MAX], b[GD_PATH_MAX - 8];
+    snprintf(t.s, sizeof t.s, "%s, %s", p_text(C, 0, p1, a, sizeof a), p_text(C, 1, p2, b, sizeof b));
+    return t;
+}
+#define PP(u) at_text(C, (u)[C->S->N], (u)[C->S->N + 1]).s
 
 static gd_status run(ccont *C, const cpt *a0, gd_error *err)
 {
@@ -896,7 +919,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
     double ds = co->ds;
     while (C->cv->npoints < co->max_points) {
         if (gd_stop_asked(&co->stop)) {
-            st = gd_error_set(err, GD_ERR_INTERRUPTED, "the curve was stopped at (%.9g, %.9g)", PP(a->u));
+            st = gd_error_set(err, GD_ERR_INTERRUPTED, "the curve was stopped at %s", PP(a->u));
             goto done;
         }
         for (int k = 0; k < 2; k++)
@@ -917,7 +940,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             too_far |= fabs(b->u[N + k] - a->u[N + k]) > C->dp_max[k];
         if (st == GD_ERR_INPUT) { /* the model is not valid there */
             if (ds <= co->ds_min) {
-                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond (%.9g, %.9g): %s", PP(a->u), e1.msg);
+                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond %s: %s", PP(a->u), e1.msg);
                 st = GD_OK;
                 goto done;
             }
@@ -928,7 +951,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             const char *why = st != GD_OK ? e1.msg : too_far ? "a parameter moves more than dp_max"
                                                              : "the tangent turns too sharply";
             if (ds <= co->ds_min) {
-                end_with(C->cv, GD_CEND_STEP, "no convergence at the smallest step %.3g from (%.9g, %.9g): %s",
+                end_with(C->cv, GD_CEND_STEP, "no convergence at the smallest step %.3g from %s: %s",
                          ds, PP(a->u), why);
                 st = GD_OK;
                 goto done;
@@ -943,7 +966,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         if (qb >= 0) { /* the point on the bound replaces b */
             st = bound_point(C, a, qb, pbnd, b, &e1);
             if (st != GD_OK) {
-                end_with(C->cv, GD_CEND_BOUND, "the curve leaves the box after (%.9g, %.9g) (no point on the bound: "
+                end_with(C->cv, GD_CEND_BOUND, "the curve leaves the box after %s (no point on the bound: "
                          "%s)", PP(a->u), e1.msg);
                 st = st == GD_ERR_NOMEM || st == GD_ERR_INTERRUPTED ? gd_error_set(err, st, "%s", e1.msg) : GD_OK;
                 goto done;
@@ -962,8 +985,8 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             st = push_c2(C->cv, &c2, err);
             if (st == GD_OK)
                 st = push_point(C->cv, &q->pt, err);
-            end_with(C->cv, GD_CEND_CONTACT, "the orbit's contact sequence changes at (%.9g, %.9g) (%s%s%s, location %s): "
-                     "the curve ends there", c2.p1, c2.p2, gd_codim2_kind_name(c2.kind),
+            end_with(C->cv, GD_CEND_CONTACT, "the orbit's contact sequence changes at %s (%s%s%s, location %s): "
+                     "the curve ends there", at_text(C, c2.p1, c2.p2).s, gd_codim2_kind_name(c2.kind),
                      c2.clearance >= 0 ? " of " : "", c2.clearance >= 0 ? S->m.clear[c2.clearance].name : "",
                      gd_bif_location_name(c2.location));
             goto done;
@@ -975,17 +998,21 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         if (res_end) {
             const gd_codim2 *c2 = &C->cv->c2[C->cv->nc2 - 1];
             st = push_point(C->cv, &q->pt, err);
-            end_with(C->cv, GD_CEND_RESONANCE, "strong resonance %s at (%.9g, %.9g): the pair meets on the real axis "
+            end_with(C->cv, GD_CEND_RESONANCE, "strong resonance %s at %s: the pair meets on the real axis "
                      "(beyond it a neutral saddle, no Neimark-Sacker point)", c2->kind == GD_C2_R1 ? "1:1" : "1:2",
-                     c2->p1, c2->p2);
+                     at_text(C, c2->p1, c2->p2).s);
             goto done;
         }
         st = push_point(C->cv, &b->pt, err);
         if (st != GD_OK)
             goto done;
         if (ended) {
-            end_with(C->cv, GD_CEND_BOUND, "the bound %s = %.9g reached at (%.9g, %.9g)", qb ? "p2" : "p1", pbnd,
-                     PP(b->u));
+            const char *bk = co->words.bound_key[qb][pbnd >= co->p_max[qb]];
+            const char *un = co->words.unit[qb];
+            char other[GD_PATH_MAX];
+            end_with(C->cv, GD_CEND_BOUND, "ended on the bound %s%s = %.10g%s%s at %s", bk ? bk : "",
+                     bk ? "" : qb ? "p2" : "p1", p_value(C, qb, pbnd), un && un[0] ? " " : "", un ? un : "",
+                     p_text(C, 1 - qb, b->u[N + 1 - qb], other, sizeof other));
             goto done;
         }
         /* closed: the chord a -> b passes the first point within a quarter of its length, the tangent along */
@@ -1002,7 +1029,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                 dist2 += S->w[i] * r * r;
             }
             if (left_first && dist2 < 0.0625 * d2 && dot_w(C, b->t, first_t) > 0.5) {
-                end_with(C->cv, GD_CEND_CLOSED, "closed: back at its first point at (%.9g, %.9g)", PP(b->u));
+                end_with(C->cv, GD_CEND_CLOSED, "closed: back at its first point at %s", PP(b->u));
                 goto done;
             }
             if (db2 > 4.0 * d2)
@@ -1017,7 +1044,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         b = t;
         ds = iters <= 3 ? fmin(1.5 * ds, co->ds_max) : iters >= 6 ? fmax(0.5 * ds, co->ds_min) : ds;
     }
-    end_with(C->cv, GD_CEND_BUDGET, "%d points reached at (%.9g, %.9g)", co->max_points, PP(a->u));
+    end_with(C->cv, GD_CEND_BUDGET, "%d points reached at %s", co->max_points, PP(a->u));
 done:
     free(a);
     free(b);
@@ -1157,8 +1184,8 @@ GD_API gd_status gd_curve_follow(gd_model_at2_fn model_at, void *ctx, const gd_s
                 csys_refresh_borders(S, S->M, S->v, S->wl, S->X, S->Psi);
         }
         if (st != GD_OK)
-            gd_error_prefix(err, "the %s curve's start at (%.9g, %.9g)", gd_curve_kind_name(start->kind), start->p1,
-                            start->p2);
+            gd_error_prefix(err, "the %s curve's start at %s", gd_curve_kind_name(start->kind),
+                            at_text(&C, start->p1, start->p2).s);
     }
     if (st == GD_OK) {
         st = csys_eval(S, u, 1, err);

@@ -31,6 +31,7 @@ static const void *cfield(const gd_case *c, const gd_keyspec *k) { return (const
 static size_t string_cap(const gd_keyspec *k)
 {
     if (k->offset == offsetof(gd_case, directory) || k->offset == offsetof(gd_case, cont_overlay_sweep) ||
+        k->offset == offsetof(gd_case, cont_curve_start) ||
         k->offset == offsetof(gd_case, cont_start_sweep))
         return GD_PATH_MAX;
     if (k->offset == offsetof(gd_case, cont_state))

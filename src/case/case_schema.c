@@ -344,6 +344,11 @@ static const gd_keyspec schema[] = {
       "upper bound of parameter2, in the unit of its key: a curve ends there"),
     I("continuation", "curve_max_points", cont_curve_max_points, 2, 100000, 400,
       "points of one curve in one direction at most, its start included"),
+    S("continuation", "curve_start", cont_curve_start, "",
+      "an earlier continuation's bifurcations.csv (relative to the working directory), of this case: only the "
+      "curve of its row curve_start_row is followed, both ways (\"\": every bifurcation of the branches)"),
+    I("continuation", "curve_start_row", cont_curve_start_row, 1, 1000000, 1,
+      "the row of curve_start whose bifurcation's curve is followed: 1 the first row after the header"),
 
     /* [basins] (analysis = basins; docs/basins.md) */
     S("basins", "x", bas_x, "lambda_L",

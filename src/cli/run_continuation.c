@@ -39,9 +39,14 @@ void cli_continuation_report(const cli_case_args *a, const char *dir, const gd_c
     for (int i = 0; i < res->ncurves; i++) {
         const gd_curve *cv = &res->curve[i].cv;
         const gd_curve_point *z = &cv->pt[cv->npoints - 1];
-        printf("  curve %d, %s%s%s, period %d, from branch %d, %s in %s: %d points to (%.10g, %.10g) (%s)\n", i,
+        char from[GD_PATH_MAX + 112];
+        if (res->curve[i].branch >= 0)
+            snprintf(from, sizeof from, "branch %d", res->curve[i].branch);
+        else
+            snprintf(from, sizeof from, "%s", res->curve_start);
+        printf("  curve %d, %s%s%s, period %d, from %s, %s in %s: %d points to (%.10g, %.10g) (%s)\n", i,
                gd_curve_kind_name(cv->kind), cv->clearance >= 0 ? " of " : "",
-               cv->clearance >= 0 ? res->clear_name[cv->clearance] : "", cv->nper, res->curve[i].branch,
+               cv->clearance >= 0 ? res->clear_name[cv->clearance] : "", cv->nper, from,
                res->curve[i].direction > 0 ? "up" : "down", res->parameter2, cv->npoints, gd_contin_value(res, z->orbit.p),
                z->p2 * res->scale2, cv->end_reason);
     }

@@ -1,6 +1,7 @@
 /* The files of a continuation (include/geardyn/gd_continuation.h): branch.csv (every branch point),
  * bifurcations.csv (every located bifurcation), curves.csv (every point of the curves in two
- * parameters, with continuation.parameter2) and summary.json. Writers only: nothing computed. */
+ * parameters) and codim2.csv (their codimension-two points), with continuation.parameter2, and
+ * summary.json. Writers only: nothing computed. */
 #include "output_internal.h"
 #include "json_util.h"
 
@@ -142,8 +143,11 @@ static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_err
         for (int i = 0; i < cu->cv.npoints; i++) {
             const gd_curve_point *pt = &cu->cv.pt[i];
             const gd_po *o = &pt->orbit;
-            fprintf(fp, "%d,%s,%d,%d,%s,%d,%.12g,%.12g,%.12g,%.12g,%s", ic, gd_curve_kind_name(cu->cv.kind),
-                    cu->cv.nper, cu->branch, cu->direction > 0 ? "up" : "down", i, gd_contin_value(res, o->p),
+            char fb[16] = "";
+            if (cu->branch >= 0)
+                snprintf(fb, sizeof fb, "%d", cu->branch);
+            fprintf(fp, "%d,%s,%d,%s,%s,%d,%.12g,%.12g,%.12g,%.12g,%s", ic, gd_curve_kind_name(cu->cv.kind),
+                    cu->cv.nper, fb, cu->direction > 0 ? "up" : "down", i, gd_contin_value(res, o->p),
                     pt->p2 * res->scale2, o->p, pt->p2,
                     cu->cv.clearance >= 0 ? res->clear_name[cu->cv.clearance] : "");
             num(fp, pt->t_graze);
@@ -164,12 +168,75 @@ static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_err
     return gd_run_dir_commit(d, fp, err);
 }
 
+/* The test function whose sign change located codimension-two point c2 of a curve of kind ck: a column
+ * of curves.csv, kappa on a Neimark-Sacker curve, mu_modulus (|mu| - 1 of a complex pair) for a
+ * Neimark-Sacker point met on a grazing curve, or where the orbit's contact events change (a grazing
+ * met, ending the curve): gap_CLEARANCE (the distance of the extremum that crossed to its boundary) or
+ * events_CLEARANCE (the counts of its events, bisected). */
+static void c2_test(const gd_contin_result *res, int ck, const gd_codim2 *c2, char *buf, size_t n)
+{
+    const char *clr = c2->clearance >= 0 && c2->clearance < res->nclear ? res->clear_name[c2->clearance] : "";
+    int met = c2->kind == GD_C2_DOUBLE_GRAZING ||
+              (ck != GD_CURVE_GRAZING && c2->kind >= GD_C2_GRAZING_FOLD && c2->kind <= GD_C2_GRAZING_NS);
+    if (met)
+        snprintf(buf, n, "%s_%s", c2->location == GD_LOC_EVENTS ? "events" : "gap", clr);
+    else if (c2->kind == GD_C2_CUSP)
+        snprintf(buf, n, "test_cusp");
+    else if (c2->kind == GD_C2_FOLD_FLIP)
+        snprintf(buf, n, "%s", ck == GD_CURVE_FOLD ? "test_period_doubling" : "test_fold");
+    else if (c2->kind >= GD_C2_R1 && c2->kind <= GD_C2_R4)
+        snprintf(buf, n, "kappa");
+    else if (c2->kind == GD_C2_GRAZING_FOLD)
+        snprintf(buf, n, "test_fold");
+    else if (c2->kind == GD_C2_GRAZING_PD)
+        snprintf(buf, n, "test_period_doubling");
+    else
+        snprintf(buf, n, "mu_modulus");
+}
+
+/* codim2.csv: every codimension-two point located along the curves */
+static gd_status write_codim2(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
+{
+    FILE *fp;
+    gd_status st = gd_run_dir_create(d, "codim2.csv", &fp, err);
+    if (st != GD_OK)
+        return st;
+    const char *dot = strchr(res->parameter2, '.'), *k2 = dot ? dot + 1 : res->parameter2, *k = key_column(res);
+    fprintf(fp, "curve,curve_kind,period_n,kind,label,%s,%s,%s_lo,%s_lo,%s_hi,%s_hi,continuation_p,continuation_p2,"
+            "test,clearance,mu_re,mu_im,location,ends_curve,point", k, k2, k, k2, k, k2);
+    for (int j = 0; j < res->n; j++)
+        fprintf(fp, ",%s", res->state_name[j]);
+    fprintf(fp, "\n");
+    for (int ic = 0; ic < res->ncurves; ic++) {
+        const gd_curve *cv = &res->curve[ic].cv;
+        for (int i = 0; i < cv->nc2; i++) {
+            const gd_codim2 *c2 = &cv->c2[i];
+            char test[64];
+            c2_test(res, cv->kind, c2, test, sizeof test);
+            fprintf(fp, "%d,%s,%d,%s,%s,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%.12g,%s,%s", ic,
+                    gd_curve_kind_name(cv->kind), cv->nper, gd_codim2_kind_name(c2->kind), gd_codim2_label(c2->kind),
+                    gd_contin_value(res, c2->p1), c2->p2 * res->scale2, gd_contin_value(res, c2->p1_lo),
+                    c2->p2_lo * res->scale2, gd_contin_value(res, c2->p1_hi), c2->p2_hi * res->scale2, c2->p1, c2->p2,
+                    test, c2->clearance >= 0 && c2->clearance < res->nclear ? res->clear_name[c2->clearance] : "");
+            num(fp, c2->mu_re);
+            num(fp, c2->mu_im);
+            fprintf(fp, ",%s,%d,%d", gd_bif_location_name(c2->location), c2->ends_curve, c2->point);
+            for (int j = 0; j < res->n; j++)
+                fprintf(fp, ",%.17g", c2->y[j]);
+            fprintf(fp, "\n");
+        }
+    }
+    return gd_run_dir_commit(d, fp, err);
+}
+
 gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_error *err)
 {
     gd_status st = write_branch(d, res, err);
     if (st == GD_OK)
         st = write_bifurcations(d, res, err);
-    return st == GD_OK && res->parameter2[0] ? write_curves(d, res, err) : st;
+    if (st == GD_OK && res->parameter2[0])
+        st = write_curves(d, res, err);
+    return st == GD_OK && res->parameter2[0] ? write_codim2(d, res, err) : st;
 }
 
 static json_t *curve_json(const gd_contin_result *res, int ic)
@@ -182,7 +249,7 @@ static json_t *curve_json(const gd_contin_result *res, int ic)
     json_object_set_new(o, "kind", json_string(gd_curve_kind_name(cv->kind)));
     json_object_set_new(o, "period_n", json_integer(cv->nper));
     json_object_set_new(o, "clearance", cv->clearance >= 0 ? json_string(res->clear_name[cv->clearance]) : json_null());
-    json_object_set_new(o, "from_branch", json_integer(cu->branch));
+    json_object_set_new(o, "from_branch", cu->branch >= 0 ? json_integer(cu->branch) : json_null());
     json_object_set_new(o, "direction", json_string(cu->direction > 0 ? "up" : "down"));
     json_object_set_new(o, "points", json_integer(cv->npoints));
     json_object_set_new(o, "first", json_pack("[o, o]", gd_json_num(gd_contin_value(res, a->orbit.p)),
@@ -191,6 +258,20 @@ static json_t *curve_json(const gd_contin_result *res, int ic)
                                              gd_json_num(z->p2 * res->scale2)));
     json_object_set_new(o, "end", json_string(gd_curve_end_name(cv->end)));
     json_object_set_new(o, "end_reason", json_string(cv->end_reason));
+    json_t *c2s = json_array();
+    for (int i = 0; i < cv->nc2; i++) {
+        const gd_codim2 *c2 = &cv->c2[i];
+        char test[64];
+        c2_test(res, cv->kind, c2, test, sizeof test);
+        json_array_append_new(c2s, json_pack("{s:s, s:s, s:[o, o], s:s, s:o, s:s, s:b}", "kind",
+                                             gd_codim2_kind_name(c2->kind), "label", gd_codim2_label(c2->kind), "at",
+                                             gd_json_num(gd_contin_value(res, c2->p1)), gd_json_num(c2->p2 * res->scale2),
+                                             "test", test, "clearance", c2->clearance >= 0 && c2->clearance < res->nclear
+                                             ? json_string(res->clear_name[c2->clearance]) : json_null(),
+                                             "location", gd_bif_location_name(c2->location), "ends_curve",
+                                             c2->ends_curve));
+    }
+    json_object_set_new(o, "codim2", c2s);
     json_object_set_new(o, "corrections", json_integer(cv->corrections));
     json_object_set_new(o, "newton_iterations", json_integer(cv->newton_iterations));
     json_object_set_new(o, "newton_tol", gd_json_num(cv->tol));
@@ -279,6 +360,7 @@ gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_moda
         json_object_set_new(r, "parameter2", json_string(res->parameter2));
         json_object_set_new(r, "unit2", json_string(res->unit2));
         json_object_set_new(r, "scale2", gd_json_num(res->scale2));
+        json_object_set_new(r, "curve_start", res->curve_start[0] ? json_string(res->curve_start) : json_null());
         json_t *cvs = json_array();
         for (int i = 0; i < res->ncurves; i++)
             json_array_append_new(cvs, curve_json(res, i));

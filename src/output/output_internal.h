@@ -108,6 +108,17 @@ gd_status gd_contin_write_tables(gd_run_dir *d, const gd_contin_result *res, gd_
  * key of the model equal but the continued one and derived values), listing states.csv. Refusals
  * are GD_ERR_INPUT naming the key. */
 gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *err);
+/* The resolved case of an earlier run (summary.json's case.parameters, in dir) against c, key by key
+ * over the model's keys but the continued one: GD_ERR_INPUT naming continuation.KEY and the first
+ * key that differs ("the WHAT in DIR is of another model"). */
+struct json_t;
+gd_status gd_contin_same_model(const gd_case *c, struct json_t *their_case, const char *dir, const char *key,
+                               const char *what, gd_error *err);
+/* continuation.curve_start: row curve_start_row of an earlier continuation's bifurcations.csv, checked
+ * to be a fold, period doubling or grazing (a contact change of a clearance), located, in [from, to],
+ * of this case's model and state (its summary.json beside it: a continuation in the same key, every
+ * model key equal but the continued one). Refusals are GD_ERR_INPUT naming the file, line and key. */
+gd_status gd_contin_curve_row_read(const gd_case *c, gd_contin_curve_row *row, gd_error *err);
 /* derived.modal: the modes of the case's model at its own values */
 gd_status gd_contin_write_summary(gd_run_dir *d, const gd_case *c, const gd_modal *modes, const gd_contin_result *res,
                                   gd_error *err);

@@ -116,7 +116,8 @@ static int derived(json_t *e)
 
 /* The sweep's resolved case against this one, key by key over the model's keys, except the
  * continued key and the values derived from others. */
-static gd_status same_model(const gd_case *c, json_t *sweep_case, const char *dir, gd_error *err)
+gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char *dir, const char *key,
+                               const char *what, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     json_t *mine = gd_json_case(c);
@@ -135,9 +136,9 @@ static gd_status same_model(const gd_case *c, json_t *sweep_case, const char *di
         if (!b || !same_value(json_object_get(a, "value"), json_object_get(b, "value"))) {
             char *va = value_text(json_object_get(a, "value"));
             char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
-            st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.start_sweep: the sweep in %s is of another model: "
-                              "%s = %s there, %s here (valid: a sweep of this case, which may differ in %s only)",
-                              WHERE("start_sweep"), dir, name, vb ? vb : "(absent)", va ? va : "?",
+            st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.%s: the %s in %s is of another model: "
+                              "%s = %s there, %s here (valid: a %s of this case, which may differ in %s only)",
+                              WHERE(key), key, what, dir, name, vb ? vb : "(absent)", va ? va : "?", what,
                               c->cont_parameter);
             free(va);
             free(vb);
@@ -172,7 +173,8 @@ static gd_status check_summary(const gd_case *c, json_t *root, const char *dir, 
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.start_sweep: the sweep in %s has no states.csv "
                             "(valid: a finished sweep that lists states.csv in its summary.json: run it again)",
                             WHERE("start_sweep"), dir);
-    return same_model(c, json_object_get(json_object_get(root, "case"), "parameters"), dir, err);
+    return gd_contin_same_model(c, json_object_get(json_object_get(root, "case"), "parameters"), dir, "start_sweep",
+                                "sweep", err);
 }
 
 /* The comma-separated fields of line into f (at most max); their number. */

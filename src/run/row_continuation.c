@@ -23,10 +23,16 @@ static int on_branch(void *user, int done, int planned)
     return env && env->continuation_branch ? env->continuation_branch(env->user, done, planned) : 0;
 }
 
-/* The [continuation] keys, and with start = sweep the sweep's directory and point. */
+/* The [continuation] keys, with curve_start its row, and with start = sweep the sweep's directory and
+ * point. */
 gd_status gd_row_continuation_check(gd_case *c, gd_error *err)
 {
     gd_status st = gd_contin_check_case(c, err);
+    if (st == GD_OK && c->cont_curve_start[0]) {
+        gd_contin_curve_row *row = malloc(sizeof *row);
+        st = row ? gd_contin_curve_row_read(c, row, err) : gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+        free(row);
+    }
     if (st != GD_OK || c->cont_start != GD_CONT_START_SWEEP)
         return st;
     gd_contin_start s;
@@ -42,13 +48,19 @@ gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_ru
     gd_status st = c->cont_start == GD_CONT_START_SWEEP ? gd_contin_sweep_start(c, &s, err) : GD_OK;
     if (st != GD_OK)
         return st;
+    gd_contin_curve_row row;
+    if (c->cont_curve_start[0]) {
+        st = gd_contin_curve_row_read(c, &row, err);
+        if (st != GD_OK)
+            return st;
+    }
     contin_outcome *r = calloc(1, sizeof *r);
     if (!r)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
     gd_row_case_modes(c, &r->modes);
     const gd_stop_hook stop = gd_row_stop(env);
-    st = gd_contin_run(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, on_branch, (void *)env, &stop, &r->res,
-                       err);
+    st = gd_contin_run_curve(c, c->cont_start == GD_CONT_START_SWEEP ? &s : NULL, c->cont_curve_start[0] ? &row : NULL,
+                             on_branch, (void *)env, &stop, &r->res, err);
     if (st != GD_OK) {
         free(r);
         return st;

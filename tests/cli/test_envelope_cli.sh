@@ -19,15 +19,16 @@ grep -Eq "^parameter2 = excitation.ste_amplitude_um +; file line" "$work/check.t
 out="$work/ks"
 "$G" run "$KS" --out "$out" --quiet --set output.plots=on > "$work/run.txt" 2>&1
 ok $? "run exits 0 ($(head -c 300 "$work/run.txt"))"
-for f in branch.csv bifurcations.csv curves.csv summary.json; do
+for f in branch.csv bifurcations.csv curves.csv codim2.csv summary.json; do
     [ -s "$out/$f" ]; ok $? "wrote $f"
 done
+grep -q '"codim2.csv"' "$out/summary.json"; ok $? "codim2.csv listed in summary.json's files"
 if command -v gnuplot > /dev/null; then
     [ -s "$out/curves.png" ] && [ -s "$out/curves.svg" ] && grep -q '"curves.png"' "$out/summary.json"
     ok $? "the curves' picture drawn (PNG, SVG) and listed"
 fi
 python3 - "$out" > "$work/checks.txt" <<'PY'
-import csv, json, math, sys
+import csv, json, math, re, sys
 d = sys.argv[1]
 scale, fa_um = 3183.0988618379, 10.0  # rpm per unit of Omega, um per unit of F_a (the case's comment)
 zeta, fm = 0.05, 0.1
@@ -41,6 +42,20 @@ kinds = sorted(c["kind"] for c in curves)
 ok(kinds == ["fold"] * 4 + ["grazing"] * 2 + ["period-doubling"] * 2, "eight curves: two grazing, four fold, two "
    "period-doubling (%s)" % kinds)
 ok(all(c["end"] == "bound" for c in curves), "every curve ends on the box (%s)" % [c["end"] for c in curves])
+# the end reasons in the keys' names and units: the bound's key and value, the other key's value
+rx = re.compile(r"^ended on the bound (continuation\.parameter2_to = 2 um at operating\.speed_rpm = [0-9.]+ rpm"
+                r"|continuation\.parameter2_from = 0\.5 um at operating\.speed_rpm = [0-9.]+ rpm"
+                r"|continuation\.from = 1591\.5494\d* rpm at excitation\.ste_amplitude_um = [0-9.]+ um"
+                r"|continuation\.to = 4774\.6482\d* rpm at excitation\.ste_amplitude_um = [0-9.]+ um)$")
+bad = [c["end_reason"] for c in curves if not rx.match(c["end_reason"])]
+ok(not bad, "every end reason names the bound and the other key in their units (%s)" % bad[:2])
+for c in curves:
+    oth = float(c["end_reason"].rsplit(" = ", 1)[1].split()[0]) if c["end"] == "bound" else float("nan")
+    k = 0 if "at operating.speed_rpm" in c["end_reason"] else 1
+    ok(abs(oth - c["last"][k]) <= 1e-9 * abs(c["last"][k]), "curve %d's end reason gives its last point (%s)"
+       % (c["curve"], c["end_reason"]))
+c2 = list(csv.DictReader(open(d + "/codim2.csv")))
+ok(len(c2) == sum(len(c["codim2"]) for c in curves) == 0, "no codimension-two point in this box (%d rows)" % len(c2))
 ok(s["parameter2"] == "excitation.ste_amplitude_um" and s["unit2"] == "um", "summary.json names parameter2 and its unit")
 worst, worst_l, worst_mu, n = 0.0, 0.0, 0.0, 0
 for r in cv:
@@ -70,6 +85,81 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < <(grep -E '^(PASS|FAIL)' "$work/checks.txt")
 
+# one curve from a row of an earlier run's bifurcations.csv (continuation.curve_start): row 2, the
+# upper fold, gives its two curves only, the same as the run of every curve gives from that fold
+"$G" run "$KS" --out "$work/row" --quiet --set output.plots=off --set continuation.curve_start="$out/bifurcations.csv" \
+    --set continuation.curve_start_row=2 > "$work/row.txt" 2>&1
+ok $? "a start from row 2 of bifurcations.csv runs ($(head -c 300 "$work/row.txt"))"
+python3 - "$out" "$work/row" > "$work/row-checks.txt" <<'PY'
+import json, sys
+a = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+b = json.load(open(sys.argv[2] + "/summary.json"))["results"]
+bf = [c for c in a["curves"] if c["kind"] == "fold" and abs(c["first"][0] - b["curves"][0]["first"][0]) < 1e-6]
+print(("PASS " if len(b["curves"]) == 2 and all(c["kind"] == "fold" and c["from_branch"] is None for c in b["curves"])
+       and "row 2: fold at speed_rpm = " in (b["curve_start"] or "") else "FAIL ") +
+      "only the fold's two curves (%s; %s)" % ([(c["kind"], c["direction"]) for c in b["curves"]], b["curve_start"]))
+same = len(bf) == 2 and all(x["direction"] == y["direction"] and x["points"] == y["points"] and
+                            all(abs(u - v) <= 1e-9 * abs(v) for u, v in zip(x["last"], y["last"]))
+                            for x, y in zip(bf, b["curves"]))
+print(("PASS " if same else "FAIL ") + "they end where the all-curves run's curves of that fold end, to 1e-9 (%s)"
+      % [c["last"] for c in b["curves"]])
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/row-checks.txt"
+
+# the cusp (cases/continuation/kahraman-singh-cusp.ini): both fold curves from the branch at F_a 0.02
+# pass it, codim2.csv reports it from each, at the same point; one-parameter continuations in Omega
+# at F_a 1 % above it find two folds (their hysteresis 0.5 rpm wide) near its Omega, 1 % below none
+# (with steps a tenth of the case's, that would see them); and the folds' separation s at F_a 1 %
+# and 2 % above it extrapolate (s^(2/3) linear in F_a, the cusp's normal form) to its F_a.
+CU="$SRC/cases/continuation/kahraman-singh-cusp.ini"
+"$G" run "$CU" --out "$work/cusp" --quiet --set output.plots=off > "$work/cusp.txt" 2>&1
+ok $? "the cusp case runs ($(head -c 300 "$work/cusp.txt"))"
+python3 - "$work/cusp/codim2.csv" > "$work/cusp-at.txt" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+cp = [r for r in rows if r["kind"] == "cusp"]
+om = [float(r["speed_rpm"]) / 3183.0988618379 for r in cp]
+fa = [float(r["ste_amplitude_um"]) / 10.0 for r in cp]
+good = (len(rows) == len(cp) == 2 and all(r["curve_kind"] == "fold" and r["label"] == "CP" and r["test"] == "test_cusp"
+        and r["location"] == "located" for r in cp) and abs(om[0] - om[1]) < 1e-8 * om[0] and abs(fa[0] - fa[1]) < 1e-8 * fa[0])
+print("%d %.12g %.12g %s" % (good, om[0] if om else 0, fa[0] if fa else 0, [(r["kind"], r["curve"]) for r in rows]))
+PY
+read -r good om_c fa_c rest < "$work/cusp-at.txt"
+[ "$good" = 1 ]; ok $? "codim2.csv: the cusp, from both fold curves, at the same point to 1e-8 (Omega $om_c, F_a $fa_c; $rest)"
+KS1="$SRC/cases/continuation/kahraman-singh.ini"
+one() { # F_a, output, ds
+    "$G" run "$KS1" --out "$2" --quiet --set output.plots=off --set continuation.branch_switching=off \
+        --set operating.speed_rpm=2546.4790894703 --set continuation.from=2546.4790894703 \
+        --set continuation.to=3819.7186342055 --set excitation.ste_amplitude_um="$1" --set continuation.ds="$3" \
+        --set continuation.ds_max="$3"
+}
+for f in 1.01 1.02 0.99; do
+    one "$(python3 -c "print(10 * $fa_c * $f)")" "$work/one-$f" $([ $f = 0.99 ] && echo 0.005 || echo 0.05)
+    ok $? "one-parameter run at F_a = $f x the cusp's"
+done
+python3 - "$work" "$om_c" "$fa_c" <<'PY' > "$work/cusp-checks.txt"
+import csv, sys
+w, om_c, fa_c = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
+def folds(f):
+    return sorted(float(r["speed_rpm"]) / 3183.0988618379 for r in csv.DictReader(open("%s/one-%s/bifurcations.csv" % (w, f)))
+                  if r["kind"] == "fold" and r["location"] == "located")
+a, b, c = folds("1.01"), folds("1.02"), folds("0.99")
+print(("PASS " if len(a) == 2 and abs(0.5 * (a[0] + a[1]) - om_c) < 2e-3 else "FAIL ") +
+      "F_a 1 %% above the cusp: two folds near its Omega %.6f (%s)" % (om_c, a))
+print(("PASS " if len(b) == 2 else "FAIL ") + "F_a 2 %% above: two folds (%s)" % b)
+print(("PASS " if len(c) == 0 else "FAIL ") + "F_a 1 %% below the cusp: no fold (%s)" % c)
+if len(a) == 2 and len(b) == 2:
+    s1, s2 = (a[1] - a[0]) ** (2 / 3), (b[1] - b[0]) ** (2 / 3)
+    f0 = 1.01 * fa_c - s1 * (0.01 * fa_c) / (s2 - s1)
+    print(("PASS " if abs(f0 - fa_c) < 1e-3 * fa_c else "FAIL ") + "the folds' separation extrapolates to the cusp's "
+          "F_a: %.8f against %.8f" % (f0, fa_c))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/cusp-checks.txt"
+
 # refusals: exit 2, file:line and key named, nothing written
 refuse() { # key=value, pattern of the message[, another key=value]
     local o="$work/bad"
@@ -87,5 +177,12 @@ refuse continuation.parameter2_from=-1 "continuation.parameter2_from: excitation
 refuse continuation.parameter2_from=1.5 "continuation.parameter2: the case's excitation.ste_amplitude_um = 1 lies outside"
 refuse continuation.parameter2= "continuation.parameter2_from: given without continuation.parameter2"
 refuse continuation.curve_max_points=1 "continuation.curve_max_points"
+# a row that is not a bifurcation of this case with a curve: refused before any work
+refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start_row: 9, but .*bifurcations.csv has 4 rows \(valid: 1 to 4\)" continuation.curve_start_row=9
+refuse continuation.curve_start="$work/cusp/bifurcations.csv" "continuation.curve_start: the continuation in .*cusp is of another model: excitation.ste_amplitude_um = 0.2 there, 1 here"
+mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-change,/,neimark-sacker,/' "$out/bifurcations.csv" > "$work/ns/bifurcations.csv"
+refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a neimark-sacker, which has no curve"
+refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
+refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
 echo "1..$n"
 [ $bad -eq 0 ]
