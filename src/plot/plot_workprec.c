@@ -192,6 +192,12 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_wp_result *res
         keyw = fmax(keyw, gd_text_width(words, GD_FIG_PX) + gd_text_width("; order 0.00", GD_FIG_PX) + 60);
     }
     int Wd = (int)(cols * pw + 30 + (key_own_column ? keyw + 30 : 0)), Hd = (int)(rows * ph + 70);
+    /* the key in one column (gnuplot would break it into columns at the height of the panel it is
+     * set in, running off the picture), the picture tall enough for it: its title and an entry
+     * per family and for the reference's floor, 18.75 px a line at spacing 1 */
+    int nkey = res->nfamilies + (res->ref.floor > 0);
+    double key_top = key_own_column ? 100 : 70 + (cells / 2) * ph + 30;
+    Hd = (int)fmax(Hd, key_top + (nkey + 1) * 18.75 * 1.15 + 20);
     for (int fm = 0; fm < 2; fm++) {
         gd_fig_begin(&b, fm, Wd, Hd, "work_precision");
         gd_plot_printf(&b, "set multiplot title '%s: %s; reference %s, its floor %.1e'\n", title, what, refm,
@@ -203,21 +209,7 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_wp_result *res
             double t = 1 - (70 + row * ph + 30) / Hd, bt = 1 - (70 + (row + 1) * ph - 75) / Hd;
             gd_plot_printf(&b, "set lmargin at screen %.5f\nset rmargin at screen %.5f\nset tmargin at screen %.5f\n"
                                   "set bmargin at screen %.5f\n", l, r, t, bt);
-            if (cell == 0) {
-                double kx, ky;
-                if (key_own_column) {
-                    kx = (30 + cols * pw + 10) / Wd;
-                    ky = 1 - 100.0 / Hd;
-                } else {
-                    kx = (30 + (cells % 2) * pw + 60) / Wd;
-                    ky = 1 - (70 + (cells / 2) * ph + 30) / Hd;
-                }
-                gd_plot_printf(&b, "set key at screen %.5f,%.5f left top vertical Left reverse samplen 3 spacing %.4f "
-                                      "title 'method (solid: events located; dashed: not)'\n", kx, ky,
-                                  GD_KEY_SPACING(fm, 1.15));
-            } else {
-                gd_plot_printf(&b, "unset key\n");
-            }
+            gd_plot_printf(&b, "unset key\n");
             int pr = cell < np ? cell : -1;
             double x0, x1, y0, y1;
             if (pr >= 0) {
@@ -254,15 +246,6 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_wp_result *res
                 int bi = base_index(res, f);
                 const char *colour = gd_colour[bi % GD_NCOLOURS];
                 int pt = markers[bi % 6] - (F->root_finding ? 0 : 1);
-                char words[120], key[200];
-                family_words(F, words, sizeof words);
-                /* the measured order in the key, when there is one */
-                snprintf(key, sizeof key, "%s", words);
-                for (int k = 0; k < res->norders; k++)
-                    if (res->orders[k].family == f && isfinite(res->orders[k].order)) {
-                        size_t u = strlen(key);
-                        snprintf(key + u, sizeof key - u, "; order %.2f", res->orders[k].order);
-                    }
                 if (pr >= 0) {
                     gd_plot_printf(&b, "%s$F%d using %d:%d with linespoints lc rgb '%s' lw 1.3 dt %d pt %d ps 0.9 ",
                                       first ? "" : ", ", f, panels[pr].xcol, panels[pr].ycol, colour,
@@ -276,19 +259,48 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_wp_result *res
                     gd_plot_printf(&b, "%s$O%d using 1:2 with linespoints lc rgb '%s' lw 1.3 dt %d pt %d ps 0.9 ",
                                       first ? "" : ", ", k, colour, F->root_finding ? 1 : 2, pt);
                 }
-                if (cell == 0)
-                    gd_plot_printf(&b, "title '%s'", key);
-                else
-                    gd_plot_printf(&b, "notitle");
+                gd_plot_printf(&b, "notitle");
                 first = 0;
             }
             if (first)
                 gd_plot_printf(&b, "1/0 notitle");
             if (pr >= 0 && panels[pr].ycol == 3 && res->ref.floor > 0)
-                gd_plot_printf(&b, ", %.6g with lines lc rgb '#777777' dt 3 lw 1.2 %s", res->ref.floor,
-                                  cell == 0 ? "title 'the reference''s floor'" : "notitle");
+                gd_plot_printf(&b, ", %.6g with lines lc rgb '#777777' dt 3 lw 1.2 notitle", res->ref.floor);
             gd_plot_printf(&b, "\n");
         }
+        /* the key: an empty plot of its own over the key's place, as tall as the key (gnuplot breaks a
+         * key into columns at the height of the plot it belongs to, and a panel is shorter) */
+        double kx = key_own_column ? 30 + cols * pw + 10 : 30 + (cells % 2) * pw + 60;
+        gd_plot_printf(&b, "set lmargin at screen %.5f\nset rmargin at screen %.5f\nset tmargin at screen %.5f\n"
+                           "set bmargin at screen %.5f\n", kx / Wd, fmin(kx + keyw, Wd - 5.0) / Wd, 1 - key_top / Hd,
+                       10.0 / Hd);
+        gd_plot_printf(&b, "unset border\nunset tics\nunset grid\nunset xlabel\nunset ylabel\nunset title\n"
+                           "unset logscale\nset xrange [0:1]\nset yrange [0:1]\n");
+        gd_plot_printf(&b, "set key at screen %.5f,%.5f left top vertical Left reverse samplen 3 spacing %.4f "
+                           "title 'method (solid: events located; dashed: not)'\nplot ",
+                       kx / Wd, 1 - key_top / Hd, GD_KEY_SPACING(fm, 1.15));
+        for (int f = 0; f < res->nfamilies; f++) {
+            const gd_wp_family *F = &res->families[f];
+            int bi = base_index(res, f);
+            char words[120], key[200];
+            family_words(F, words, sizeof words);
+            /* the measured order in the key, when there is one */
+            snprintf(key, sizeof key, "%s", words);
+            for (int k = 0; k < res->norders; k++)
+                if (res->orders[k].family == f && isfinite(res->orders[k].order)) {
+                    size_t u = strlen(key);
+                    snprintf(key + u, sizeof key - u, "; order %.2f", res->orders[k].order);
+                }
+            gd_plot_printf(&b, "%s1/0 with linespoints lc rgb '%s' lw 1.3 dt %d pt %d ps 0.9 title '%s'", f ? ", " : "",
+                           gd_colour[bi % GD_NCOLOURS], F->root_finding ? 1 : 2,
+                           markers[bi % 6] - (F->root_finding ? 0 : 1), key);
+        }
+        if (res->ref.floor > 0)
+            gd_plot_printf(&b, "%s1/0 with lines lc rgb '#777777' dt 3 lw 1.2 title 'the reference''s floor'",
+                           res->nfamilies ? ", " : "");
+        else if (res->nfamilies == 0)
+            gd_plot_printf(&b, "1/0 notitle");
+        gd_plot_printf(&b, "\n");
         gd_fig_end(&b, 1);
     }
     static const char *names[] = {"work_precision"};

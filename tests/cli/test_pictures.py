@@ -557,6 +557,15 @@ def check_texts_frames(fig, bad):
                 return
 
 
+def check_texts_inside(fig, bad):
+    """Every text inside the picture (a key broken into columns ran off its right edge)."""
+    for t in fig.texts:
+        b = t.box.grow(-0.5)
+        if t.s.strip() and fig.width > 0 and (b.x0 < 0 or b.y0 < 0 or b.x1 > fig.width or b.y1 > fig.height):
+            bad.append('texts: %r runs off the picture (%g x %g)' % (t, fig.width, fig.height))
+            return
+
+
 def round_step(d):
     m = d / 10 ** math.floor(math.log10(d))
     return any(abs(m - r) < 1e-6 * r for r in (1, 2, 2.5, 5, 10))
@@ -988,6 +997,7 @@ def check_picture(path, outdir, keys, single, summary):
     check_key(fig, bad)
     check_texts(fig, bad)
     check_texts_frames(fig, bad)
+    check_texts_inside(fig, bad)
     check_ticks(fig, bad)
     check_colour(fig, bad)
     check_type(fig, bad)
