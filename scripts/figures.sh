@@ -71,6 +71,10 @@ if wanted continuation-kahraman-singh; then
     run kahraman-singh cases/continuation/kahraman-singh.ini
     fig continuation-kahraman-singh kahraman-singh/continuation.png
 fi
+if wanted continuation-curves-kahraman-singh; then
+    run kahraman-singh-curves cases/continuation/kahraman-singh-curves.ini
+    fig continuation-curves-kahraman-singh kahraman-singh-curves/curves.png
+fi
 if wanted continuation-curves-kahraman-singh-cusp; then
     run kahraman-singh-cusp cases/continuation/kahraman-singh-cusp.ini
     fig continuation-curves-kahraman-singh-cusp kahraman-singh-cusp/curves.png
