@@ -15,21 +15,6 @@
 
 #define WHERE(key) (gd_case_key_where(c, "basins", key, w, sizeof w), w)
 
-static int split(char *line, char **f, int max)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = 0;
-    for (char *p = line; n < max;) {
-        f[n++] = p;
-        char *q = strchr(p, ',');
-        if (!q)
-            break;
-        *q = 0;
-        p = q + 1;
-    }
-    return n;
-}
-
 static gd_status grow(gd_basins_known *k, long *cap, gd_error *err)
 {
     if (k->npoints < *cap)
@@ -110,7 +95,7 @@ gd_status gd_basins_read_continuation(const gd_case *c, gd_basins_known *k, gd_e
         st = gd_error_set(err, GD_ERR_INPUT, "%s: basins.continuation: %s is empty (valid: a finished continuation's)",
                           WHERE("continuation"), path);
     } else {
-        int nf = split(line, f, MAXF);
+        int nf = gd_csv_split(line, f, MAXF);
         for (int q = 0; q < m.n; q++)
             col_y[q] = -1;
         for (int i = 0; i < nf; i++) {
@@ -137,7 +122,7 @@ gd_status gd_basins_read_continuation(const gd_case *c, gd_basins_known *k, gd_e
     long cap = 0, row = 1;
     while (st == GD_OK && fgets(line, 65536, fp)) {
         row++;
-        int nf = split(line, f, MAXF);
+        int nf = gd_csv_split(line, f, MAXF);
         if (nf <= col_value || nf <= col_branch || nf <= col_stable || nf <= col_period) {
             st = gd_error_set(err, GD_ERR_INPUT, "%s: basins.continuation: %s line %ld is short (valid: a finished "
                               "continuation's)", WHERE("continuation"), path, row);

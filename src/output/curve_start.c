@@ -18,30 +18,6 @@
 #define WHERE(key) (gd_case_key_where(c, "continuation", key, w, sizeof w), w)
 #define NF_MAX (GD_MAX_STATE + 64)
 
-/* The comma-separated fields of line into f (at most max); their number. */
-static int split(char *line, char **f, int max)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = 0;
-    for (char *p = line; n < max;) {
-        f[n++] = p;
-        char *q = strchr(p, ',');
-        if (!q)
-            break;
-        *q = 0;
-        p = q + 1;
-    }
-    return n;
-}
-
-static int column(char **f, int nf, const char *name)
-{
-    for (int i = 0; i < nf; i++)
-        if (strcmp(f[i], name) == 0)
-            return i;
-    return -1;
-}
-
 /* The run beside the file: a continuation in this case's key, of this case's model. */
 static gd_status check_run(const gd_case *c, const char *dir, gd_error *err)
 {
@@ -176,13 +152,13 @@ gd_status gd_contin_curve_row_read(const gd_case *c, gd_contin_curve_row *row, g
         st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start: %s is empty (valid: the bifurcations.csv "
                           "of a finished continuation)", WHERE("curve_start"), path);
     if (st == GD_OK) {
-        nh = split(head, h, NF_MAX);
-        ck = column(h, nh, "kind");
-        cn = column(h, nh, "period_n");
-        cv = column(h, nh, key);
-        cc = column(h, nh, "clearance");
-        cl = column(h, nh, "location");
-        if (ck < 0 || cn < 0 || cc < 0 || cl < 0 || column(h, nh, "branch") != 0)
+        nh = gd_csv_split(head, h, NF_MAX);
+        ck = gd_csv_column(h, nh, "kind");
+        cn = gd_csv_column(h, nh, "period_n");
+        cv = gd_csv_column(h, nh, key);
+        cc = gd_csv_column(h, nh, "clearance");
+        cl = gd_csv_column(h, nh, "location");
+        if (ck < 0 || cn < 0 || cc < 0 || cl < 0 || gd_csv_column(h, nh, "branch") != 0)
             st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start: %s is not a bifurcations.csv (no "
                               "column kind, period_n, clearance or location) (valid: the bifurcations.csv of a "
                               "finished continuation)", WHERE("curve_start"), path);
@@ -192,7 +168,7 @@ gd_status gd_contin_curve_row_read(const gd_case *c, gd_contin_curve_row *row, g
                               c->cont_parameter);
     }
     for (int j = 0; j < m.n && st == GD_OK; j++)
-        if ((cy[j] = column(h, nh, names[j])) < 0)
+        if ((cy[j] = gd_csv_column(h, nh, names[j])) < 0)
             st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start: %s has no column %s of this model's "
                               "state (valid: a continuation of this case's model)", WHERE("curve_start"), path,
                               names[j]);
@@ -201,7 +177,7 @@ gd_status gd_contin_curve_row_read(const gd_case *c, gd_contin_curve_row *row, g
         if (strspn(line, " \t\r\n") == strlen(line))
             continue;
         if (++r == c->cont_curve_start_row) { /* (f points into line: read no further) */
-            nf = split(line, f, NF_MAX);
+            nf = gd_csv_split(line, f, NF_MAX);
             found = 1;
             break;
         }

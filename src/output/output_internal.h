@@ -29,6 +29,11 @@ gd_status gd_atomic_commit(gd_atomic_file *f, gd_error *err);
 void gd_atomic_abort(gd_atomic_file *f);
 /* mkdir -p */
 gd_status gd_mkdir_p(const char *dir, gd_error *err);
+/* The comma-separated fields of line (the project's own CSV: no quoting) into f, at most max; their
+ * number. The line is cut in place, its end of line dropped. */
+int gd_csv_split(char *line, char **f, int max);
+/* The index of the field name among f[0..nf), -1 when absent. */
+int gd_csv_column(char *const *f, int nf, const char *name);
 
 /* geardyn check's values as JSON text (malloc'd): the case c (resolved as check resolves it), the
  * derived values of its model m, its modes and the run's cost (check_json.c). */

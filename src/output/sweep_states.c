@@ -177,22 +177,6 @@ static gd_status check_summary(const gd_case *c, json_t *root, const char *dir, 
                                 "sweep", err);
 }
 
-/* The comma-separated fields of line into f (at most max); their number. */
-static int split(char *line, char **f, int max)
-{
-    int n = 0;
-    line[strcspn(line, "\r\n")] = 0;
-    for (char *p = line; n < max;) {
-        f[n++] = p;
-        char *q = strchr(p, ',');
-        if (!q)
-            break;
-        *q = 0;
-        p = q + 1;
-    }
-    return n;
-}
-
 /* The columns of states.csv that a start needs: the key's, direction, period_n, status, and the
  * state's (every column after status, y[0] .. y[n - 1]). */
 typedef struct states_cols {
@@ -227,7 +211,7 @@ static gd_status nearest_row(const gd_case *c, FILE *fp, const states_cols *sc, 
     double v0 = gd_contin_start_value(c), best = INFINITY;
     char line[16384], *f[GD_MAX_STATE + 16];
     while (fgets(line, sizeof line, fp)) {
-        int nf = split(line, f, GD_MAX_STATE + 16);
+        int nf = gd_csv_split(line, f, GD_MAX_STATE + 16);
         if (nf != sc->status + 1 + sc->n || strcmp(f[sc->direction], dirn) != 0 || strcmp(f[sc->status], "done") != 0)
             continue;
         double v = strtod(f[sc->value], NULL);
@@ -279,7 +263,7 @@ gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *
     if (!fgets(line, sizeof line, fp))
         st = gd_error_set(err, GD_ERR_INPUT, "%s: empty (valid: the states.csv of a finished sweep)", path);
     else
-        st = find_columns(f, split(line, f, GD_MAX_STATE + 16), key, &sc, path, err);
+        st = find_columns(f, gd_csv_split(line, f, GD_MAX_STATE + 16), key, &sc, path, err);
     if (st == GD_OK)
         st = nearest_row(c, fp, &sc, s, path, err);
     fclose(fp);
