@@ -4,53 +4,17 @@
  * point read back is the point computed, bit for bit. */
 #include "geardyn/gd_basins.h"
 
+#include "../core/strbuf.h"
+
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct buf {
-    char *p;
-    size_t n, cap;
-    int bad;
-} buf;
-
-static void put(buf *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
-static void put(buf *b, const char *fmt, ...)
-{
-    if (b->bad)
-        return;
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) {
-            b->bad = 1;
-            return;
-        }
-        if (b->p && b->n + (size_t)k < b->cap) {
-            b->n += (size_t)k;
-            return;
-        }
-        size_t cap = b->cap ? 2 * b->cap : 4096;
-        while (cap < b->n + (size_t)k + 1)
-            cap *= 2;
-        char *q = realloc(b->p, cap);
-        if (!q) {
-            b->bad = 1;
-            return;
-        }
-        b->p = q;
-        b->cap = cap;
-    }
-}
-
-static void put_reals(buf *b, const double *x, int n)
+static void put_reals(gd_strbuf *b, const double *x, int n)
 {
     for (int i = 0; i < n; i++)
-        put(b, " %.17g", x[i]);
+        gd_strbuf_printf(b, " %.17g", x[i]);
 }
 
 GD_API gd_status gd_basins_record_format(const gd_basins_result *res, int k, char **line, size_t *len, gd_error *err)
@@ -61,34 +25,34 @@ GD_API gd_status gd_basins_record_format(const gd_basins_result *res, int k, cha
         return gd_error_set(err, GD_ERR_INPUT, "no computed point %d of the basins to format", k);
     const gd_basins_point *p = &res->pt[k];
     const int n = res->n;
-    buf b = {0};
-    put(&b, "basins %d %.17g %ld %ld %.17g %d %d", k, p->value, p->samples, p->periods, p->cpu_s, p->natt, p->norbits);
+    gd_strbuf b = {0};
+    gd_strbuf_printf(&b, "basins %d %.17g %ld %ld %.17g %d %d", k, p->value, p->samples, p->periods, p->cpu_s, p->natt, p->norbits);
     for (int s = 0; s < GD_BASIN_NSPECIAL; s++)
-        put(&b, " %ld", p->special[s]);
+        gd_strbuf_printf(&b, " %ld", p->special[s]);
     for (int a = 0; a < p->natt; a++) {
         const gd_attractor *t = &p->att[a];
         const gd_po *o = &t->orbit;
-        put(&b, " A %d %d %d %.17g %d %.17g %.17g %ld %d", t->kind, t->period, t->seeded, t->mle_per_period,
+        gd_strbuf_printf(&b, " A %d %d %d %.17g %d %.17g %.17g %ld %d", t->kind, t->period, t->seeded, t->mle_per_period,
             t->impact_regime, t->x_min, t->x_max, p->count[a], t->npts);
         put_reals(&b, t->pts, t->npts * n);
-        put(&b, " %d %d %d %.17g", o->n, o->nper, o->nseg, o->p);
+        gd_strbuf_printf(&b, " %d %d %d %.17g", o->n, o->nper, o->nseg, o->p);
         put_reals(&b, o->mu_re, o->n);
         put_reals(&b, o->mu_im, o->n);
-        put(&b, " %.17g %d %d %.17g", o->mu_max, o->stable, o->iterations, o->residual);
+        gd_strbuf_printf(&b, " %.17g %d %d %.17g", o->mu_max, o->stable, o->iterations, o->residual);
         for (int c = 0; c < GD_MAX_CLEAR; c++)
-            put(&b, " %ld", o->events[c]);
+            gd_strbuf_printf(&b, " %ld", o->events[c]);
         for (int s = 0; s < o->nseg; s++)
             put_reals(&b, o->y[s], o->n);
     }
     for (int r = 0; r < p->norbits; r++) {
         const gd_basins_orbit *ob = &p->orbits[r];
-        put(&b, " R %d %d %d %.17g", ob->branch, ob->period, ob->stable, ob->mu_max);
+        gd_strbuf_printf(&b, " R %d %d %d %.17g", ob->branch, ob->period, ob->stable, ob->mu_max);
         for (int q = 0; q < ob->period; q++) {
             put_reals(&b, ob->pts[q], n);
-            put(&b, " %.17g %.17g", ob->u[q], ob->v[q]);
+            gd_strbuf_printf(&b, " %.17g %.17g", ob->u[q], ob->v[q]);
         }
     }
-    put(&b, "\n");
+    gd_strbuf_printf(&b, "\n");
     if (b.bad) {
         free(b.p);
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for a basins record");

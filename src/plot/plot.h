@@ -18,15 +18,14 @@
 #include "geardyn/gd_workprec.h"
 #include "quantity.h"
 
+#include "../core/strbuf.h"
+
 #include <stddef.h>
 
-/* A gnuplot script growing in memory: gd_plot_printf appends to p (n characters, NUL terminated);
- * when memory runs out bad is set and nothing more is appended. Start from {0}; free(p) when done. */
-typedef struct gd_plot_script {
-    char *p;
-    size_t n, cap;
-    int bad;
-} gd_plot_script;
+/* A gnuplot script growing in memory (src/core/strbuf.h): gd_plot_printf appends to p (n
+ * characters, NUL terminated); when memory runs out bad is set and nothing more is appended. Start
+ * from {0}; free(p) when done. */
+typedef gd_strbuf gd_plot_script;
 void gd_plot_printf(gd_plot_script *b, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Where a run's pictures go: the caller's drawer and notes (NULL: none) and the run's directory,

@@ -73,30 +73,8 @@ void gd_plot_fail(const gd_plotter *p, const char *failed, const gd_error *err)
 
 void gd_plot_printf(gd_plot_script *b, const char *fmt, ...)
 {
-    if (b->bad)
-        return;
-    for (;;) {
-        va_list ap;
-        va_start(ap, fmt);
-        int k = vsnprintf(b->p ? b->p + b->n : NULL, b->p ? b->cap - b->n : 0, fmt, ap);
-        va_end(ap);
-        if (k < 0) {
-            b->bad = 1;
-            return;
-        }
-        if (b->p && b->n + (size_t)k < b->cap) {
-            b->n += (size_t)k;
-            return;
-        }
-        size_t cap = b->cap ? 2 * b->cap : 65536;
-        while (cap < b->n + (size_t)k + 1)
-            cap *= 2;
-        char *q = realloc(b->p, cap);
-        if (!q) {
-            b->bad = 1;
-            return;
-        }
-        b->p = q;
-        b->cap = cap;
-    }
+    va_list ap;
+    va_start(ap, fmt);
+    gd_strbuf_vprintf(b, fmt, ap);
+    va_end(ap);
 }
