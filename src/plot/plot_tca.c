@@ -30,9 +30,10 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_tca_result *r)
     gd_plot_script s = {0};
     for (int fi = 0; fi < 2; fi++) {
         gd_fig_begin(&s, fi, H > 1 ? 1400 : 820, 660, "contact_pattern");
-        gd_plot_printf(&s, "set multiplot layout 1,%d title 'Contact pattern on the unrolled pinion flank: flank "
+        /* on the single pair's narrower picture the title takes two lines */
+        gd_plot_printf(&s, "set multiplot layout 1,%d title 'Contact pattern on the unrolled pinion flank:%sflank "
                               "points closer than the paint thickness %.3g µm to the mating flank%s'\n",
-                          H, p, flat ? "" : " (black: the path of the first contact)");
+                          H, H > 1 ? " " : "' . \"\\n\" . '", p, flat ? "" : " (black: the path of the first contact)");
         gd_plot_printf(&s, "set xlabel '%s'\nset ylabel 'roll length (mm)'\nset cbrange [0:%.6g]\n"
                               "set cblabel 'least separation (µm)' offset 1.2,0\nset cbtics out\n"
                               "set palette defined (0 '#7f0000', %.6g '#d7301f', %.6g '#fdd49e', %.6g '#f7f7f7')\n"

@@ -16,7 +16,9 @@ import geardyn
 from conftest import GEARDYN, SRC, cli, listing, load, same_file, state
 
 KS = os.path.join(SRC, 'tests', 'cli', 'ks-sweep.ini')   # the K&S oscillator, up and down
-SETS = [('sweep.points', 6), ('run.transient_periods', 100), ('run.record_periods', 20), ('output.plots', 'off')]
+SETS = [('sweep.points', 6), ('run.transient_periods', 20000), ('run.record_periods', 20), ('output.plots', 'off')]
+# 20000 transient periods: about 0.4 s a point, several times the 0.1 s between the progress calls,
+# so that the stop comes while the point after the K-th runs (a faster sweep could end first)
 K = 3                                                   # points done when the sweep is stopped
 
 
