@@ -51,6 +51,10 @@ SHORTEN=(
   # ALO (100 iterations x 30 ants of LTCA): 3 iterations x 10 ants, coarse LTCA grid.
   'cases/paper/optimize-alo.ini'
   'optimize.iterations=3 optimize.population=10 solver.ltca_positions_per_cycle=8 solver.ltca_face_slices=7'
+  # ALO on the dynamic objective (30 iterations x 20 ants, each three LTCAs and continuations over
+  # 3000-5500 rpm): 2 iterations x 4 ants.
+  'cases/paper/optimize-dynamic.ini'
+  'optimize.iterations=2 optimize.population=4'
   # optimiser comparison on the gear (9 optimisers x 10 runs x 400 LTCA): 2 runs x 40, coarse LTCA.
   'cases/paper/compare-optimizers.ini'
   'optimize.runs=2 optimize.budget_evals=40 optimize.population=10 solver.ltca_positions_per_cycle=8 solver.ltca_face_slices=7'
