@@ -168,6 +168,25 @@ GD_API gd_status gd_sim_orbit_gaps(const gd_model *m, const gd_solver_opts *o, c
                                    gd_gap_extrema *g, gd_error *err);
 
 
+/* Linear stability of a fixed explicit step (o: RK4, or ERK with fixed_step; h = period /
+ * steps_per_period) on the model's Jacobian at the state y in the modes md, at eight phases of the
+ * mesh period: the largest amplification |R(h lambda)| of the method's stability function R over
+ * the eigenvalues lambda, the eigenvalue attaining it, and the fewest steps per mesh period for
+ * which every |R| <= 1 (docs/accuracy.md). An adaptive or implicit method, or a custom system
+ * without a Jacobian: amplification NaN, unstable 0, min_steps_per_period 0. */
+typedef struct gd_step_stability {
+    double h;                 /* the step, dimensionless */
+    double amplification;     /* max |R(h lambda)| */
+    int unstable;             /* amplification > 1 (beyond rounding) */
+    double lambda_re, lambda_im; /* the eigenvalue attaining it (|Im|), over omega_n */
+    double freq_hz;           /* its |Im lambda| in Hz */
+    double damping_ratio;     /* -Re lambda / |lambda| */
+    long min_steps_per_period;
+} gd_step_stability;
+GD_API gd_status gd_sim_step_stability(const gd_model *m, const gd_solver_opts *o, const double *y, const gd_modes *md,
+                                       gd_step_stability *out, gd_error *err);
+
+
 #ifdef __cplusplus
 }
 #endif

@@ -58,7 +58,10 @@ typedef enum gd_wp_status {
     GD_WP_OK = 0,
     GD_WP_OVER_BUDGET = 1,   /* stopped at workprecision.max_steps_per_period */
     GD_WP_FAILED = 2,        /* the integration failed (message) */
-    GD_WP_SKIPPED = 3        /* a looser setting of its family was over budget */
+    GD_WP_SKIPPED = 3,       /* a looser setting of its family was over budget */
+    GD_WP_UNSTABLE = 4       /* a fixed step outside the method's stability region on the linearised
+                              * model (gd_sim_step_stability): its numbers, when it ran to the end, are
+                              * kept, and no diagram, fit or choice uses them */
 } gd_wp_status;
 GD_API const char *gd_wp_status_name(int status);
 

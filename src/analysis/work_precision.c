@@ -13,8 +13,8 @@
 
 GD_API const char *gd_wp_status_name(int status)
 {
-    static const char *names[] = {"ok", "over-budget", "failed", "skipped"};
-    return status >= 0 && status <= 3 ? names[status] : "?";
+    static const char *names[] = {"ok", "over-budget", "failed", "skipped", "unstable"};
+    return status >= 0 && status <= 4 ? names[status] : "?";
 }
 
 static int hook_start(const gd_wp_hooks *h, void *user, const char *what, const char *label, int i, int n)

@@ -98,7 +98,7 @@ void wp_fill_run(gd_wp_run *r, const wp_trace *tr, const wp_trace *ref, long per
         r->ref_events += !chaotic || ref->ev[i].t <= horizon * period;
     r->err_poincare = r->err_short = r->err_rms = r->err_events = r->err_mle = NAN;
     r->rms_accel_mps2 = r->mle_per_period = NAN;
-    if (tr->status != GD_WP_OK)
+    if (!tr->complete)
         return;
     r->rms_accel_mps2 = tr->rms;
     r->err_poincare = gd_workprec_poincare_error(tr->pts, ref->pts, periods + 1, n);

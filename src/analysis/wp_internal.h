@@ -28,6 +28,7 @@ typedef struct wp_trace {
     gd_sim_stats stats;
     double cpu;              /* CPU time of the calling thread, s */
     int status;              /* gd_wp_status */
+    int complete;            /* every period integrated (OK, or UNSTABLE run to the end) */
     char msg[256];
 } wp_trace;
 

@@ -168,6 +168,29 @@ static void opts_of(const gd_case *c, const wp_setting *w, gd_solver_opts *o)
         o->max_step_fraction = w->max_step_fraction;
 }
 
+/* A fixed step outside the method's stability region on the model linearised at the start
+ * (gd_sim_step_stability) makes a run that ended (ran to the end, or failed other than by its
+ * budget; failure: why, "" when it ran) UNSTABLE, with the mode and the
+ * fewest stable steps in its message: its numbers, when it ran to the end, are those of a round-off
+ * amplified every step until the contacts bounded it. */
+static gd_status fixed_step_stability(const gd_model *m, const gd_solver_opts *o, const double *y0, const gd_modes *md0,
+                                      int ended, const char *failure, wp_trace *tr, gd_error *err)
+{
+    if (!ended || !(o->method == GD_METHOD_RK4 || o->fixed_step))
+        return GD_OK;
+    gd_step_stability sb;
+    gd_status st = gd_sim_step_stability(m, o, y0, md0, &sb, err);
+    if (st != GD_OK || !sb.unstable)
+        return st;
+    tr->status = GD_WP_UNSTABLE;
+    snprintf(tr->msg, sizeof tr->msg,
+             "unstable step: |R(h lambda)| = %.3g > 1 on the %.5g Hz mode (damping ratio %.2g) of the model "
+             "linearised at the start; stable from %ld steps per mesh period%s%s",
+             sb.amplification, sb.freq_hz, sb.damping_ratio, sb.min_steps_per_period, failure[0] ? "; the run failed: " : "",
+             failure);
+    return GD_OK;
+}
+
 /* Integrate `periods` mesh periods from (y0, md0) with setting w: the Poincare points, the
  * events, the RMS of the mean mesh acceleration (when sample) and the statistics. A failed or
  * over-budget run is not an error of the analysis: it is reported in tr->status. */
@@ -235,6 +258,19 @@ gd_status wp_run_one(const gd_case *c, const gd_model *m, const wp_setting *w, c
     tr->cpu = gd_clock_thread_cpu_s() - t0;
     if (x.nomem)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for the event list");
+    gd_status stab = fixed_step_stability(m, &o, y0, md0, !x.over, st == GD_OK ? "" : x.diverged ? "the state grew past 1e6 times its start" : x.hst ? x.herr.msg : e.msg, tr, err);
+    if (stab != GD_OK) {
+        wp_trace_free(tr);
+        return stab;
+    }
+    if (tr->status == GD_WP_UNSTABLE) {
+        if (st == GD_OK) {
+            tr->complete = 1;
+            drop_flipflops(tr, m->period);
+            tr->rms = x.count > 0 ? sqrt(x.sum2 / (double)x.count) * m->bc_m * m->omega_n * m->omega_n : NAN;
+        }
+        return GD_OK;
+    }
     if (st != GD_OK) {
         if (x.over) {
             tr->status = GD_WP_OVER_BUDGET;
@@ -248,6 +284,7 @@ gd_status wp_run_one(const gd_case *c, const gd_model *m, const wp_setting *w, c
         }
         return GD_OK;
     }
+    tr->complete = 1;
     drop_flipflops(tr, m->period);
     tr->rms = x.count > 0 ? sqrt(x.sum2 / (double)x.count) * m->bc_m * m->omega_n * m->omega_n : NAN;
     return GD_OK;

@@ -152,6 +152,7 @@ int cmd_check(int argc, char **argv)
         print_iso6336(&pair, &g);
         print_excitations(&c, &m);
         cli_check_modes(&c, &m);
+        cli_check_step(&c, &m);
     }
     const gd_run_cost *k = &a.cost;
     char est[200];

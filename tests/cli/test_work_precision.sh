@@ -83,5 +83,17 @@ ok $? "a horizon longer than the window refused (exit $rc)"
 "$G" run "$work/wp.ini" --out "$work/fail" --set solver.max_events_per_period=1 --quiet > "$work/e6.txt" 2>&1; rc=$?
 [ $rc -eq 1 ] && [ -z "$(ls -A "$work/fail" 2>/dev/null)" ]; ok $? "a failing transient stops with status 1 and no files (exit $rc)"
 
+# check judges a fixed step against its method's stability region: the paper's pair (bta) at
+# 2000 rpm has its groove modes at 19.4 kHz, so RK4 needs 43 steps per mesh period (h w <= 2 sqrt 2)
+for spp in 32 64; do
+    "$G" check "$SRC/cases/accuracy/periodn-2000rpm.ini" --set solver.method=rk4 --set solver.steps_per_period=$spp \
+        > "$work/chk$spp.txt" 2>&1
+done
+grep -q "^stable_from_steps_per_period = 43   ; UNSTABLE" "$work/chk32.txt" &&
+    grep -q "^stable_from_steps_per_period = 43$" "$work/chk64.txt"
+ok $? "check: RK4 on the paper's pair at 2000 rpm unstable at 32 steps per period, stable at 64 (from 43)"
+"$G" check "$SRC/cases/accuracy/periodn-2000rpm.ini" > "$work/chk-adaptive.txt" 2>&1
+! grep -q "step_amplification" "$work/chk-adaptive.txt"; ok $? "check: an adaptive step is not judged"
+
 echo "1..$n"
 [ $bad -eq 0 ]
