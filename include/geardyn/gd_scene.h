@@ -59,6 +59,13 @@ typedef struct gd_run_cost {
     double seconds;          /* wall time with `threads` threads on an otherwise idle machine */
     int threads;             /* the threads assumed */
     const char *time_class;  /* of seconds: "seconds", "minutes", "hours", "days or more" */
+    /* the case's fixed step (solver.method = rk4, or erk with solver.fixed_step) against its method's
+     * stability region on the model linearised at its static operating point (gd_sim_step_stability):
+     * the largest |R(h lambda)|, the mode attaining it, and the fewest stable steps per mesh period;
+     * an adaptive or implicit solver: NaN, NaN, 0 */
+    double step_amplification;
+    double step_mode_hz;
+    long stable_steps_per_period;
 } gd_run_cost;
 GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, int threads, gd_run_cost *cost);
 /* "about 3.2e+08 s (10 years) on 2 threads (6.4e+08 s (20 years) of CPU)" */

@@ -98,6 +98,12 @@ int cli_load_case(cli_case_args *a, gd_case *c)
     /* every check before any work (check shows the case as probed, without LTCA) */
     if (gd_case_prepare(c, a->check_only, cli_threads(a->threads), &a->cost, &err) != GD_OK)
         return cli_signal_caught() ? cli_interrupted(a->dir) : cli_fail(&err);
+    if (!a->check_only && !a->quiet && a->cost.step_amplification > 1.0 + 1e-9 && c->analysis != GD_ANALYSIS_WORK_PRECISION)
+        fprintf(stderr,
+                "geardyn: note: solver.steps_per_period = %d is outside the stability region of the fixed-step method on "
+                "the model's %.5g Hz mode (|R(h lambda)| = %.3g per step): the results will be round-off grown every "
+                "step; stable from %ld steps per mesh period (docs/accuracy.md section 1)\n",
+                c->steps_per_period, a->cost.step_mode_hz, a->cost.step_amplification, a->cost.stable_steps_per_period);
     return 0;
 }
 

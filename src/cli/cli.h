@@ -39,7 +39,7 @@ void cli_print_defaulted(FILE *f, const gd_case *c, const char *prefix);
 /* geardyn check's section of natural frequencies, resonance speeds and strain-energy shares of the
  * case's model m (check_modes.c). */
 void cli_check_modes(const gd_case *c, const gd_model *m);
-void cli_check_step(const gd_case *c, const gd_model *m);
+void cli_check_step(const gd_case *c, const gd_run_cost *k);
 /* The threads a run uses for --threads N: N when positive, else the OpenMP default (1 without
  * OpenMP). */
 int cli_threads(int requested);

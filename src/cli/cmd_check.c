@@ -152,9 +152,9 @@ int cmd_check(int argc, char **argv)
         print_iso6336(&pair, &g);
         print_excitations(&c, &m);
         cli_check_modes(&c, &m);
-        cli_check_step(&c, &m);
     }
     const gd_run_cost *k = &a.cost;
+    cli_check_step(&c, k);
     char est[200];
     gd_run_cost_format(k, est, sizeof est);
     printf("\n# estimated cost of the run (check runs no LTCA and no integration; docs/performance.md)\n");

@@ -43,6 +43,9 @@ gd_status gd_check_json_text(const gd_case *c, const gd_model *m, const gd_run_c
     json_object_set_new(co, "disk_bytes", gd_json_num(cost->disk_bytes));
     json_object_set_new(co, "ltca_unknowns", gd_json_num(cost->ltca_unknowns));
     json_object_set_new(co, "max_bytes", gd_json_num(c->max_bytes));
+    json_object_set_new(co, "step_amplification", gd_json_num(cost->step_amplification));
+    json_object_set_new(co, "step_mode_hz", gd_json_num(cost->step_mode_hz));
+    json_object_set_new(co, "stable_steps_per_period", json_integer(cost->stable_steps_per_period));
     json_object_set_new(root, "cost", co);
     *text = json_dumps(root, JSON_INDENT(2) | JSON_PRESERVE_ORDER | JSON_REAL_PRECISION(17));
     json_decref(root);

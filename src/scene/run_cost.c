@@ -351,9 +351,29 @@ static double basins_cost(const gd_case *c, const gd_model *m, double w, gd_run_
     return cost->steps * step_s + (c->plots ? 2 * PICTURE_S + 2e-6 * cells : 0);
 }
 
+/* The case's fixed step against its method's stability region (gd_run_cost's step_ fields). */
+static void step_stability(const gd_case *c, const gd_model *m, gd_run_cost *cost)
+{
+    cost->step_amplification = cost->step_mode_hz = NAN;
+    gd_solver_opts o;
+    gd_solver_opts_from_case(c, &o);
+    if (m->custom || !(o.method == GD_METHOD_RK4 || (o.method == GD_METHOD_ERK && o.fixed_step)))
+        return;
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    gd_step_stability sb;
+    gd_error e = {0};
+    if (gd_model_static_state(m, y, &md, &e) != GD_OK || gd_sim_step_stability(m, &o, y, &md, &sb, &e) != GD_OK)
+        return; /* not judged */
+    cost->step_amplification = sb.amplification;
+    cost->step_mode_hz = sb.freq_hz;
+    cost->stable_steps_per_period = sb.min_steps_per_period;
+}
+
 GD_API void gd_run_cost_estimate(const gd_case *c, const gd_model *m, int threads, gd_run_cost *cost)
 {
     memset(cost, 0, sizeof *cost);
+    step_stability(c, m, cost);
     double w = highest_frequency(m);
     double run_cpu = 0, run_bytes = 0, run_steps = 0, parallel = 1, cpu = 0, files = 0, window = 0;
     int ltca = c->stiffness == GD_STIFF_LTCA || c->impact || (c->ste_source == GD_STE_LTCA && c->error_excitation);

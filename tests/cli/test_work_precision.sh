@@ -92,6 +92,13 @@ done
 grep -q "^stable_from_steps_per_period = 43   ; UNSTABLE" "$work/chk32.txt" &&
     grep -q "^stable_from_steps_per_period = 43$" "$work/chk64.txt"
 ok $? "check: RK4 on the paper's pair at 2000 rpm unstable at 32 steps per period, stable at 64 (from 43)"
+for spp in 16 32; do   # 4000 rpm: stable from 22 steps
+    "$G" run "$SRC/cases/quickstart.ini" --out "$work/rk4-$spp" --set solver.method=rk4 --set solver.steps_per_period=$spp \
+        --set run.transient_periods=20 --set run.record_periods=5 --set output.plots=off > "$work/rk4-$spp.txt" 2>&1
+done
+grep -q "note: solver.steps_per_period = 16 is outside the stability region.*stable from 22 steps" "$work/rk4-16.txt" &&
+    ! grep -q "stability region" "$work/rk4-32.txt"
+ok $? "run: a note when the fixed step is unstable (RK4 at 16 steps at 4000 rpm), none when stable (32)"
 "$G" check "$SRC/cases/accuracy/periodn-2000rpm.ini" > "$work/chk-adaptive.txt" 2>&1
 ! grep -q "step_amplification" "$work/chk-adaptive.txt"; ok $? "check: an adaptive step is not judged"
 
