@@ -45,6 +45,7 @@ gd_status cont_gaps(cont *c, cpoint *q, gd_error *err);
 /* The test functions at a point (cont_tests.c) */
 double cont_fold_test(const cont *c, const cpoint *q);
 double cont_pd_test(const gd_po *po);
+double cont_det_test(const gd_po *po, double s);
 /* |mu_(j)| - 1 for the multiplier of the j-th largest modulus */
 double cont_modulus_test(const gd_po *po, int j);
 /* the branch-point test as a continuous function: D / exp(ref) */

@@ -27,9 +27,16 @@ double cont_fold_test(const cont *c, const cpoint *q)
  * its sign (each factor divided by its modulus) times the smallest modulus of a factor */
 double cont_pd_test(const gd_po *po)
 {
+    return cont_det_test(po, -1.0);
+}
+
+/* det(M - s I) = prod (mu_i - s) over the multipliers, as its sign times the smallest |mu_i - s|
+ * (s = -1: the period doubling's test; s = +1: a real multiplier passing 1, a smooth fold's) */
+double cont_det_test(const gd_po *po, double s)
+{
     double re = 1.0, im = 0.0, mmin = INFINITY;
     for (int i = 0; i < po->n; i++) {
-        double a = 1.0 + po->mu_re[i], b = po->mu_im[i], m = hypot(a, b);
+        double a = s > 0 ? po->mu_re[i] - 1.0 : 1.0 + po->mu_re[i], b = po->mu_im[i], m = hypot(a, b);
         if (m == 0)
             return 0.0;
         double r2 = (re * a - im * b) / m;

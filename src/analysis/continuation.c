@@ -339,6 +339,24 @@ static int half_period(const gd_shoot *sh, const double *u, double tol)
     return d < 1e3 * tol;
 }
 
+/* Whether the step from a to b reversed the parameter's direction (the tangent's parameter part
+ * changed sign) with no fold between them: on a smooth branch the parameter turns only where a real
+ * multiplier passes 1 (det(M - I) changes sign), and on a non-smooth one where the orbit's contact
+ * events change (a corner at a grazing). Neither: the corrector converged onto another part of the
+ * branch, past a turn it did not follow (as the way back to a period doubling's vertex of the NASA
+ * Glenn pair's period-2 branch did from 6486 rpm, landing at 6579 rpm on the branch's way up). */
+static int turned_without_fold(const cont *c, const cpoint *a, const cpoint *b)
+{
+    if ((cont_fold_test(c, a) > 0) == (cont_fold_test(c, b) > 0))
+        return 0;
+    if ((cont_det_test(&a->po, 1.0) > 0) != (cont_det_test(&b->po, 1.0) > 0))
+        return 0;
+    for (int k = 0; k < GD_MAX_CLEAR; k++)
+        if (a->po.events[k] != b->po.events[k])
+            return 0;
+    return 1;
+}
+
 static gd_status run(cont *c, const gd_po *start, gd_error *err)
 {
     const gd_cont_opts *co = c->co;
@@ -415,6 +433,18 @@ static gd_status run(cont *c, const gd_po *start, gd_error *err)
         }
         if (vs == VTX_SHORTEN) {
             ds = fmax(fmin(ratio, 0.5) * ds, co->ds_min);
+            continue;
+        }
+        if (st == GD_OK && turned_without_fold(c, a, b)) { /* onto another part of the branch: half the step */
+            if (ds <= co->ds_min) {
+                c->br->end = GD_END_STEP;
+                snprintf(c->br->end_detail, sizeof c->br->end_detail, "the parameter's direction reverses with no "
+                         "multiplier passing 1 and the contact events unchanged");
+                snprintf(c->br->end_reason, sizeof c->br->end_reason, "no convergence at the smallest step %.3g "
+                         "from p = %.9g: %s", ds, a->u[N], c->br->end_detail);
+                goto done;
+            }
+            ds = fmax(0.5 * ds, co->ds_min);
             continue;
         }
         if (b->u[N] < co->p_min || b->u[N] > co->p_max) {

@@ -238,5 +238,25 @@ line=$(grep -n '^to = 1000' "$work/bad.ini" | cut -d: -f1)
 rc=$?
 [ $rc -eq 2 ] && grep -q "bad.ini:$line: continuation.to: 1000 is not above from" "$work/bad.txt" && [ ! -e "$work/bad2" ]
 ok $? "to = 1000 in the file refused at its line $line (rc $rc: $(head -c 200 "$work/bad.txt"))"
+# the NASA Glenn spur pair (docs/guide.md): its period-2 orbits form a curve between the period doublings
+# of the period-1 branch at 6365.78 and 6592.91 rpm. Switched at the first, the orbit is found 1 % of the
+# range above it, where the branch bends sharply: the way back down must reach the doubling it was born at,
+# not jump onto the branch's way up (where the parameter's reversal would be reported as a fold with no
+# multiplier at 1, a complex pair 0.38 + 0.39i)
+"$G" run "$SRC/cases/guide/nasa-grc-spur-continuation.ini" --out "$work/nasa" --quiet --set output.plots=off \
+    --set continuation.overlay_sweep= > "$work/nasa.txt" 2>&1
+python3 -c '
+import csv, json, sys
+s = json.load(open(sys.argv[1] + "/summary.json"))["results"]
+p2 = [x for x in s["branches"] if x["period_n"] == 2 and x["born_at"] is not None and abs(x["born_at"] - 6365.78) < 0.01]
+assert len(p2) == 2, [(x["period_n"], x["born_at"]) for x in s["branches"]]
+ends = sorted((x["end"], round(x["joins_doubling"]["value"], 2)) for x in p2)
+assert ends == [("period-doubling", 6365.78), ("period-doubling", 6592.91)], ends
+ids = {x["branch"] for x in p2}
+rows = [r for r in csv.DictReader(open(sys.argv[1] + "/bifurcations.csv")) if int(r["branch"]) in ids]
+assert not [r for r in rows if r["kind"] in ("fold", "branch-point")], rows
+' "$work/nasa"
+ok $? "NASA Glenn pair: the period-2 branch followed from its doubling at 6365.78 rpm both ways to a doubling (the one it was born at and 6592.91 rpm), no fold on it"
+
 echo "1..$n"
 [ $bad -eq 0 ]
