@@ -101,6 +101,8 @@ SHORTEN = [
     # optimisation: 3 iterations of 10 ants, coarse LTCA
     ('cases/paper/optimize-alo.ini', ['optimize.iterations=3', 'optimize.population=10',
                                       'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
+    # the dynamic objective: 2 iterations of 4 ants (each three LTCAs and continuations)
+    ('cases/paper/optimize-dynamic.ini', ['optimize.iterations=2', 'optimize.population=4']),
     ('cases/paper/compare-optimizers.ini', ['optimize.runs=2', 'optimize.budget_evals=40', 'optimize.population=10',
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
