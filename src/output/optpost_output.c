@@ -1,6 +1,7 @@
 /* The tables and summary.json entries of what an optimisation over load and speed reports after it
  * (include/geardyn/gd_optpost.h, docs/optimisation.md section 12): response_over_speed.csv (the
- * curves the dynamic objective took its maxima from, each flank and torque), lte_over_torque.csv
+ * curves the dynamic objective took its maxima from, each flank and torque, on the loop's model and
+ * on bta), lte_over_torque.csv
  * (the Harris map), results.objective_on_bta, results.response_over_speed and
  * results.lte_over_torque. */
 #include "output_internal.h"
@@ -21,15 +22,19 @@ gd_status gd_optpost_write_tables(gd_run_dir *d, const gd_case *c, const gd_optp
     if (p->dynamic) {
         if ((st = gd_run_dir_create(d, "response_over_speed.csv", &fp, err)) != GD_OK)
             return st;
-        fprintf(fp, "flank,torque_nm,point,speed_rpm,%s,stable,source,period_n\n",
+        fprintf(fp, "model,flank,torque_nm,point,speed_rpm,%s,stable,source,period_n\n",
                 c->opt_dynamic_response == GD_DYN_DTE_PP ? "dte_pp_um" : "rms_accel_mps2");
-        for (int j = 0; j < GD_OPTPOST_NFLANKS; j++)
-            for (int k = 0; k < p->curve[j].ntorques; k++) {
-                const gd_dyn_curve *cv = &p->curve[j].curve[k];
-                for (int i = 0; i < cv->npts; i++)
-                    fprintf(fp, "%s,%.10g,%d,%.10g,%.17g,%d,%s,%d\n", gd_optpost_flank_name(j), cv->torque_nm, i + 1,
-                            cv->pt[i].speed_rpm, cv->pt[i].value, cv->pt[i].stable, source_names[cv->pt[i].source],
-                            cv->pt[i].period_n);
+        for (int m = 0; m < (p->bta_separate ? 2 : 1); m++) /* the loop's model, then bta */
+            for (int j = 0; j < GD_OPTPOST_NFLANKS; j++) {
+                const gd_dyn_result *r = m == 0 ? &p->curve[j] : &p->on_bta[j];
+                for (int k = 0; k < r->ntorques; k++) {
+                    const gd_dyn_curve *cv = &r->curve[k];
+                    for (int i = 0; i < cv->npts; i++)
+                        fprintf(fp, "%s,%s,%.10g,%d,%.10g,%.17g,%d,%s,%d\n",
+                                model_names[m == 0 ? c->opt_dynamic_model : GD_MODEL_BTA], gd_optpost_flank_name(j),
+                                cv->torque_nm, i + 1, cv->pt[i].speed_rpm, cv->pt[i].value, cv->pt[i].stable,
+                                source_names[cv->pt[i].source], cv->pt[i].period_n);
+                }
             }
         if ((st = gd_run_dir_commit(d, fp, err)) != GD_OK)
             return st;
