@@ -77,7 +77,7 @@ PUBLIC = {
     'gd_analysis.h': 'run', 'gd_job.h': 'run', 'gd_response.h': 'analysis', 'gd_sweep.h': 'analysis',
     'gd_workprec.h': 'analysis', 'gd_spectrum.h': 'analysis', 'gd_periodic.h': 'analysis',
     'gd_continuation.h': 'analysis', 'gd_envelope.h': 'analysis',
-    'gd_continuation.h': 'analysis', 'gd_dynobj.h': 'analysis',
+    'gd_continuation.h': 'analysis', 'gd_dynobj.h': 'analysis', 'gd_optpost.h': 'analysis',
     'gd_basins.h': 'analysis',
     'gd_output.h': 'output',
     'geardyn.h': 'cli',            # the umbrella: the command line only

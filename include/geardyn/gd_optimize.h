@@ -459,6 +459,7 @@ typedef struct gd_opt_optimize_summary {
     const double *torques_nm;
     double objective_of[3];
     const double *aux_of[3];
+    const void *post;             /* gear-lte-range, gear-dynamic: the gd_optpost (gd_optpost.h) of the three flanks */
     /* the best run's progress: the relative fall of its best value over the last tenth of its
      * evaluations; converged = that fall is at most 1e-3 */
     double last_tenth_improvement;
@@ -512,6 +513,7 @@ typedef struct gd_optimize_outcome {
     void (*user_free)(void *user);
     double objective_of[3];
     double aux_of[3][GD_OPT_MAX_AUX];
+    void *post;              /* gear-lte-range, gear-dynamic: a gd_optpost (gd_optpost.h), the row's to free */
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */

@@ -30,5 +30,6 @@
 #include "geardyn/gd_excitation.h"
 #include "geardyn/gd_optimize.h"
 #include "geardyn/gd_dynobj.h"
+#include "geardyn/gd_optpost.h"
 
 #endif

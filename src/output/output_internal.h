@@ -12,6 +12,7 @@
 #include "geardyn/gd_tca.h"
 #include "geardyn/gd_ltca.h"
 #include "geardyn/gd_optimize.h"
+#include "geardyn/gd_optpost.h"
 #include "geardyn/gd_continuation.h"
 #include "geardyn/gd_scene.h"
 #include "geardyn/gd_basins.h"
@@ -79,6 +80,12 @@ gd_status gd_summary_write_ltca(gd_run_dir *d, const gd_case *c, const gd_ltca_r
 gd_status gd_optimize_write_optimum(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
 gd_status gd_optimize_write_convergence(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
 gd_status gd_optimize_write_lte(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
+/* After an optimisation over load and speed (gd_optpost.h, optpost_output.c): response_over_speed.csv
+ * (gear-dynamic) and lte_over_torque.csv; results.objective_on_bta, results.response_over_speed
+ * (gear-dynamic) and results.lte_over_torque added to res. */
+gd_status gd_optpost_write_tables(gd_run_dir *d, const gd_case *c, const gd_optpost *p, gd_error *err);
+struct json_t;
+void gd_optpost_summary(struct json_t *res, const gd_case *c, const gd_optpost *p);
 /* runs.csv, statistics.csv, convergence.csv, ecdf.csv and best_points.csv of a comparison. */
 gd_status gd_compare_write_tables(gd_run_dir *d, const gd_compare_outcome *C, gd_error *err);
 gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_opt_optimize_summary *s,

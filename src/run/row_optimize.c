@@ -56,6 +56,7 @@ void gd_row_optimize_free(void *result)
         gd_ltca_result_free(&o->lte[j]);
     free(o->run_f);
     gd_opt_gear_free(o->gear_problem);
+    gd_row_optimize_post_free(o);
     if (o->user_free)
         o->user_free(o->user);
     gd_opt_testfn_free(&o->tf);
@@ -318,6 +319,8 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
         st = compute_lte(&c, stop, o, err);
     if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
         st = objective_of_flanks(&c, o, err);
+    if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
+        st = gd_row_optimize_post(&c, env, o, err);
     if (st == GD_OK && o->gear)
         st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
     if (st == GD_OK && o->gear)
@@ -333,13 +336,14 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
 /* lte.csv (the gear; a failure there leaves it out), optimum.csv, convergence.csv. */
 gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
-    (void)c;
     const gd_optimize_outcome *o = result;
     if (o->gear)
         gd_optimize_write_lte(out, o, err);
     gd_status st = gd_optimize_write_optimum(out, o, err);
     if (st == GD_OK)
         st = gd_optimize_write_convergence(out, o, err);
+    if (st == GD_OK && o->post)
+        st = gd_optpost_write_tables(out, c, o->post, err);
     return st;
 }
 
@@ -387,6 +391,7 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
             sm.objective_of[j] = o->objective_of[j];
             sm.aux_of[j] = o->aux_of[j];
         }
+        sm.post = o->post;
     }
     sm.wall_s = wall;
     return gd_summary_write_optimize(out, c, &sm, err);
@@ -396,4 +401,5 @@ void gd_row_optimize_pictures(const gd_case *c, const void *result, gd_run_dir *
 {
     const gd_plotter p = gd_row_plotter(env, out);
     gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
+    gd_plot_optpost(&p, c, (const gd_optimize_outcome *)result);
 }

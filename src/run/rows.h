@@ -23,6 +23,9 @@ GD_ROW_DECLARE(tca)
 GD_ROW_DECLARE(ltca)
 GD_ROW_DECLARE(workprec)
 GD_ROW_DECLARE(optimize)
+/* optimize over load and speed: the three flanks' report (gd_optpost.h) into o->post, and its freeing */
+gd_status gd_row_optimize_post(const gd_case *c, const gd_run_env *env, gd_optimize_outcome *o, gd_error *err);
+void gd_row_optimize_post_free(gd_optimize_outcome *o);
 GD_ROW_DECLARE(compare)
 GD_ROW_DECLARE(continuation)
 /* continuation's check_case: gd_contin_check_case, and the sweep's point with start = sweep */

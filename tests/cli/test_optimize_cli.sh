@@ -280,6 +280,27 @@ assert abs(of["optimum"]["value"] - r["objective_value"]) <= 1e-9 * r["objective
 assert abs(r["lte_pp_arcsec"]["optimum"] - of["optimum"]["torques"][1]["lte_pp_arcsec"]) <= 1e-9 * r["lte_pp_arcsec"]["optimum"]
 PY
 ok $? "gear-lte-range: each flank's value is the duty-weighted mean of its torques', the optimum's the run's best"
+python3 - "$out" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+r = json.load(open(os.path.join(out, "summary.json")))["results"]
+rows = list(csv.DictReader(open(os.path.join(out, "lte_over_torque.csv"))))
+assert list(rows[0]) == ["torque_nm", "objective_torque", "lte_unmodified_arcsec", "lte_case_arcsec", "lte_optimum_arcsec"]
+assert not os.path.exists(os.path.join(out, "response_over_speed.csv")) and "objective_on_bta" not in r
+t = [float(x["torque_nm"]) for x in rows]
+assert len(rows) == 22 and t == sorted(t) and abs(t[0] - 12) < 1e-9 and abs(t[-1] - 180) < 1e-9, t
+assert [float(x["torque_nm"]) for x in rows if x["objective_torque"] == "1"] == [60, 120]
+h = r["lte_over_torque"]
+for flank in ("unmodified", "case", "optimum"):
+    at = {float(x["torque_nm"]): float(x["lte_%s_arcsec" % flank]) for x in rows}
+    # the Harris map at the objective's torques: its values (summary.json's 12 digits; the same
+    # numbers bit for bit in test dynamic_objective)
+    for each in r["objective_of"][flank]["torques"]:
+        assert abs(at[each["torque_nm"]] - each["lte_pp_arcsec"]) <= 1e-11 * each["lte_pp_arcsec"], (flank, each)
+    assert all(abs(a - at[x]) <= 1e-11 * a for a, x in zip(h[flank]["lte_pp_arcsec"], t))
+    assert abs(h[flank]["least_lte_pp_arcsec"] - min(at.values())) <= 1e-11 * min(at.values())
+PY
+ok $? "gear-lte-range: lte_over_torque.csv, 20 torques from 12 to 180 N m and the objective's 60 and 120, there the objective's amplitudes"
 
 out="$work/opt-dynamic"
 "$G" run "$work/spur-range.ini" --out "$out" --quiet --set optimize.objective=gear-dynamic \
@@ -301,6 +322,47 @@ assert abs(of["optimum"]["value"] - r["objective_value"]) <= 1e-9 * r["objective
 assert r["objective_value"] <= max(r["run_values"])
 PY
 ok $? "gear-dynamic: the objective of the three flanks, each with its method, the optimum's the run's best"
+python3 - "$out" <<'PY'
+import csv, json, os, sys
+out = sys.argv[1]
+r = json.load(open(os.path.join(out, "summary.json")))["results"]
+rows = list(csv.DictReader(open(os.path.join(out, "response_over_speed.csv"))))
+assert list(rows[0]) == ["model", "flank", "torque_nm", "point", "speed_rpm", "rms_accel_mps2", "stable", "source",
+                         "period_n"]
+assert {x["model"] for x in rows} == {"torsional", "bta"}
+for flank in ("unmodified", "case", "optimum"):
+    on_bta = [x for x in rows if x["flank"] == flank and x["model"] == "bta"]
+    peak = max(float(x["rms_accel_mps2"]) for x in on_bta if x["stable"] == "1")
+    assert abs(peak - r["objective_on_bta"][flank]["value"]) <= 1e-11 * peak, (flank, peak)
+    mine = [x for x in rows if x["flank"] == flank and x["model"] == "torsional"]
+    assert mine and all(x["torque_nm"] == "120" for x in mine)
+    assert all(3500 - 1e-6 <= float(x["speed_rpm"]) <= 4500 + 1e-6 for x in mine)
+    assert {x["source"] for x in mine} <= {"branch", "swept", "refined"} and mine[0]["source"] == "branch"
+    # the curve's largest stable value is the objective the run reported (to summary.json's 12 digits)
+    peak = max(float(x["rms_accel_mps2"]) for x in mine if x["stable"] == "1")
+    assert abs(peak - r["objective_of"][flank]["value"]) <= 1e-11 * peak, (flank, peak)
+    assert r["response_over_speed"][flank]["value"] == r["objective_of"][flank]["value"]
+b = r["objective_on_bta"]
+assert b["model_in_loop"] == "torsional" and b["model"] == "bta"
+vals = {f: b[f]["value"] for f in ("unmodified", "case", "optimum")}
+assert all(v > 0 for v in vals.values()) and vals != {f: r["objective_of"][f]["value"] for f in vals}
+assert b["ranking"] == sorted(vals, key=lambda f: vals[f])
+loop = {f: r["objective_of"][f]["value"] for f in vals}
+assert b["ranking_in_loop"] == sorted(loop, key=lambda f: loop[f])
+assert b["same_ranking"] == (b["ranking"] == b["ranking_in_loop"])
+at = [x for x in csv.DictReader(open(os.path.join(out, "lte_over_torque.csv"))) if x["objective_torque"] == "1"]
+assert len(at) == 1 and float(at[0]["torque_nm"]) == 120
+for flank in ("unmodified", "case", "optimum"):   # the LTE table's amplitudes at the case's 120 N m
+    v = float(at[0]["lte_%s_arcsec" % flank])
+    assert abs(v - r["lte_pp_arcsec"][flank]) <= 1e-9 * v, (flank, v, r["lte_pp_arcsec"][flank])
+PY
+ok $? "gear-dynamic: the response curves' largest stable values are the objective, the flanks on bta ranked, the Harris map at 120 N m the LTE table's"
+"$G" run "$work/spur-range.ini" --out "$out-2" --quiet --threads 1 --set optimize.objective=gear-dynamic \
+    --set optimize.torques_nm=120 --set optimize.torque_weights=1 --set optimize.speed_from_rpm=3500 \
+    --set optimize.speed_to_rpm=4500 --set optimize.budget_evals=4 --set optimize.population=2 > "$work/run.txt" 2>&1 &&
+cmp -s "$out/response_over_speed.csv" "$out-2/response_over_speed.csv" &&
+cmp -s "$out/lte_over_torque.csv" "$out-2/lte_over_torque.csv"
+ok $? "gear-dynamic: response_over_speed.csv and lte_over_torque.csv the same with 1 and 2 threads"
 
 echo "1..$n"
 [ $bad -eq 0 ]
