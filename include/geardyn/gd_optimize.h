@@ -434,6 +434,17 @@ GD_API double gd_opt_compare_ecdf(const gd_opt_compare_result *const *r, int nre
 
 /* ---- summary.json ------------------------------------------------------------------------------ */
 
+/* optimize with optimize.robust: the Monte Carlo sample, and for the unmodified flank, the case's own
+ * and the optimum (0, 1, 2) the robust objective (the quantile), the nominal one and the value of
+ * every sample. */
+typedef struct gd_opt_robust_report {
+    gd_opt_robust settings;
+    int nvars;
+    const double *dev;       /* samples x (3 + nvars), gd_opt_gear_robust_sample */
+    double robust[3], nominal[3];
+    double *values[3];       /* samples each, in the sample's order */
+} gd_opt_robust_report;
+
 typedef struct gd_opt_optimize_summary {
     int objective, dim, algorithm, runs, threads;
     long budget;
@@ -464,6 +475,7 @@ typedef struct gd_opt_optimize_summary {
     double last_tenth_improvement;
     int converged;
     double wall_s;
+    const gd_opt_robust_report *robust; /* optimize.robust (else NULL) */
 } gd_opt_optimize_summary;
 
 
@@ -512,6 +524,8 @@ typedef struct gd_optimize_outcome {
     void (*user_free)(void *user);
     double objective_of[3];
     double aux_of[3][GD_OPT_MAX_AUX];
+    gd_opt_robust_report *robust; /* optimize.robust (else NULL); objective_of is then robust, aux_of the nominal
+                                     objective's own numbers */
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */

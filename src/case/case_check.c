@@ -295,6 +295,8 @@ GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
                      IS("optimize", "speed_to_rpm") || IS("optimize", "dynamic_response") ||
                      IS("optimize", "dynamic_model") || IS("optimize", "dynamic_sweep_step_rpm")))
             return "ignored: only optimize.objective = gear-dynamic uses it";
+        if (!c->opt_robust && strncmp(k->key, "robust_", 7) == 0)
+            return "ignored: optimize.robust = off";
     }
 #undef IS
     return NULL;

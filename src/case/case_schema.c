@@ -530,6 +530,25 @@ static const gd_keyspec schema[] = {
     D("optimize", "dynamic_sweep_step_rpm", "rpm", opt_dynamic_sweep_step_rpm, 0, 100000, 1, 0, NAN,
       "gear-dynamic: the spacing of the short sweep where the period-1 orbit is unstable or lost (derived: a "
       "fiftieth of the speed range); its points run run.transient_periods and run.record_periods"),
+    B("optimize", "robust", opt_robust, 0,
+      "gear objectives: the robust variant, the robust_quantile of the objective over a Monte Carlo sample of "
+      "misalignment and manufacturing deviations of the design variables (drawn from optimize.seed, the same for "
+      "every candidate)"),
+    I("optimize", "robust_samples", opt_robust_samples, 1, 100000, 20,
+      "robust: the size of the Monte Carlo sample"),
+    D("optimize", "robust_quantile", "", opt_robust_quantile, 0, 1, 1, 0, 0.9,
+      "robust: the quantile of the sample's values that is the objective"),
+    D("optimize", "robust_misalignment_tilt_arcmin", "arcmin", opt_robust_tilt_arcmin, 0, 60, 0, 0, 0.5,
+      "robust: each tilt component of the axis (misalignment.axis_in_plane_arcmin, axis_cross_plane_arcmin) "
+      "deviates uniformly within +- this"),
+    D("optimize", "robust_misalignment_centre_distance_mm", "mm", opt_robust_centre_distance_mm, 0, 10, 0, 0, 0.05,
+      "robust: the centre distance deviates uniformly within +- this"),
+    D("optimize", "robust_deviation_um", "um", opt_robust_amount_um, 0, 1000, 0, 0, 2,
+      "robust: each design variable in um (relief amounts y1, y3, y5, y6, helix slope y9) deviates uniformly "
+      "within +- this"),
+    D("optimize", "robust_deviation_mm", "mm", opt_robust_length_mm, 0, 1000, 0, 0, 0.5,
+      "robust: each design variable in mm (relief lengths y2, y4, the unmodified lead band y7, y8) deviates "
+      "uniformly within +- this"),
 };
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)

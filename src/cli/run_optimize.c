@@ -80,6 +80,7 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
             printf("  the paper's pair: its Table 2 gives %.6g arcsec here; the paper: 4.194 -> 1.157, -72.41 %%\n",
                    o->lte[3].lte_pp_arcsec);
     }
+    cli_optimize_robust_report(c, o);
     if (!o->converged)
         printf("  not converged: the best value fell by %.3g %% over the last tenth of the evaluations (best at "
                "evaluation %ld of %ld); more iterations may lower it\n", 100 * o->last_tenth_improvement, b->best_at,

@@ -490,6 +490,8 @@ gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
         st = resolve_budget(c, compare, err);
     if (st == GD_OK)
         st = resolve_targets(c, &ok, err);
+    if (st == GD_OK)
+        st = gd_opt_resolve_robust(c, compare, ok.gear, err);
     if (st == GD_OK && ok.gear)
         st = check_gear(c, pair, err);
     if (st == GD_OK && !compare && (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC))

@@ -140,6 +140,8 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
         }
         json_object_set_new(res, "objective_of", of);
     }
+    if (s->robust)
+        json_object_set_new(res, "robust", gd_optimize_robust_json(s->robust));
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);
     return gd_json_write_summary(d, root, err);

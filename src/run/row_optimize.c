@@ -10,6 +10,7 @@
 #include "geardyn/gd_geometry.h"
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
+#include "row_optimize_robust.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -59,6 +60,7 @@ void gd_row_optimize_free(void *result)
     if (o->user_free)
         o->user_free(o->user);
     gd_opt_testfn_free(&o->tf);
+    row_robust_free(o->robust);
     free(o);
 }
 
@@ -70,13 +72,13 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
                                gd_error *err)
 {
     gd_opt_gear_objective obj;
-    if (o->objective == GD_OBJ_GEAR_LTE_RANGE) {
+    if (o->objective == GD_OBJ_GEAR_LTE_RANGE || o->objective == GD_OBJ_GEAR_LTE) {
         gd_opt_lte_range *r = &o->lte_range;
         r->set = gd_ltca_settings_from_case(c);
         r->set.stop = stop;
-        r->n = c->n_opt_torques;
+        r->n = o->objective == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_torques; /* gear-lte: the case's torque */
         for (int k = 0; k < r->n; k++) {
-            r->torques_nm[k] = c->opt_torques_nm[k];
+            r->torques_nm[k] = o->objective == GD_OBJ_GEAR_LTE ? c->torque_nm : c->opt_torques_nm[k];
             r->weights[k] = c->n_opt_torque_weights ? c->opt_torque_weights[k] : 1.0;
         }
         r->combine = c->opt_lte_range_combine;
@@ -92,7 +94,10 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
         o->user_free = dynobj_free;
         gd_dynobj_objective(d, &obj);
     }
-    return gd_opt_gear_set_objectives(gear, 1, &obj, NULL, err);
+    gd_opt_robust rb; /* optimize.robust */
+    gd_opt_case_robust(c, &rb);
+    gd_status st = gd_opt_gear_set_objectives(gear, 1, &obj, &rb, err);
+    return st == GD_OK ? row_robust_init(c, o, err) : st;
 }
 
 /* The objective (and its recorded numbers) of the unmodified flank, the case's own and the optimum. */
@@ -107,9 +112,11 @@ static gd_status objective_of_flanks(const gd_case *c, gd_optimize_outcome *o, g
         } else if (j == 2) {
             gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
         }
-        gd_status st = gd_opt_gear_value_of_pair(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j], err);
+        gd_status st = opt_gear_value_of_pair_samples(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j],
+                                                      o->robust ? o->robust->values[j] : NULL, err);
         if (st != GD_OK)
             return gd_error_prefix(err, "the %s flank", j == 0 ? "unmodified" : j == 1 ? "case's" : "optimum's");
+        row_robust_flank(o, j);
     }
     return GD_OK;
 }
@@ -135,7 +142,7 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
         double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
         gd_opt_gear_bounds(c, &o->vars, lower, upper);
         st = gd_opt_gear_create(&pair, &set, &o->vars, lower, upper, gear, err);
-        if (st == GD_OK && o->objective != GD_OBJ_GEAR_LTE)
+        if (st == GD_OK && (o->objective != GD_OBJ_GEAR_LTE || c->opt_robust))
             st = set_objective(c, stop, o, *gear, err);
         if (st == GD_OK) {
             gd_opt_gear_problem(*gear, p);
@@ -316,7 +323,7 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
         assess_optimum(&c, o);
     if (st == GD_OK && o->gear)
         st = compute_lte(&c, stop, o, err);
-    if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
+    if (st == GD_OK && o->gear && (o->objective != GD_OBJ_GEAR_LTE || o->robust))
         st = objective_of_flanks(&c, o, err);
     if (st == GD_OK && o->gear)
         st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
@@ -338,6 +345,8 @@ gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir
     if (o->gear)
         gd_optimize_write_lte(out, o, err);
     gd_status st = gd_optimize_write_optimum(out, o, err);
+    if (st == GD_OK && o->robust)
+        st = gd_optimize_write_robust(out, c, o, err);
     if (st == GD_OK)
         st = gd_optimize_write_convergence(out, o, err);
     return st;
@@ -378,11 +387,12 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     sm.last_tenth_improvement = o->last_tenth_improvement;
     sm.converged = o->converged;
     sm.active_profile_mm = o->active_mm;
-    if (o->gear && o->objective != GD_OBJ_GEAR_LTE) {
-        sm.objective_unit = o->objective == GD_OBJ_GEAR_LTE_RANGE ? "arcsec"
+    if (o->gear && (o->objective != GD_OBJ_GEAR_LTE || o->robust)) {
+        sm.objective_unit = o->objective != GD_OBJ_GEAR_DYNAMIC ? "arcsec"
                             : c->opt_dynamic_response == GD_DYN_DTE_PP ? "um" : "m/s^2";
-        sm.ntorques = c->n_opt_torques;
-        sm.torques_nm = c->opt_torques_nm;
+        sm.ntorques = o->objective == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_torques;
+        sm.torques_nm = o->objective == GD_OBJ_GEAR_LTE ? &c->torque_nm : c->opt_torques_nm;
+        sm.robust = o->robust;
         for (int j = 0; j < 3; j++) {
             sm.objective_of[j] = o->objective_of[j];
             sm.aux_of[j] = o->aux_of[j];
