@@ -434,6 +434,21 @@ GD_API double gd_opt_compare_ecdf(const gd_opt_compare_result *const *r, int nre
 
 /* ---- summary.json ------------------------------------------------------------------------------ */
 
+/* optimize with two objectives (optimize.objective2, or zdt1 / zdt2): the runs, the front of the best
+ * (the largest hypervolume), and for the gear the two objectives of the unmodified flank and the
+ * case's own. */
+typedef struct gd_opt_pareto_report {
+    int objective, objective2;   /* objective2: gear-dynamic, or the objective itself for zdt1 / zdt2 */
+    int gear, dim, runs, best;
+    gd_opt_result *res;          /* runs */
+    double hv_ref[2];
+    int hv_ref_derived;          /* 1.1 times the unmodified flank's (gear) or 1.1, 1.1 (zdt) */
+    double flank_f[2][2];        /* gear: the unmodified flank's and the case's own two objectives */
+    double true_front_hv;        /* zdt1 / zdt2: the true front's hypervolume within hv_ref (else NaN) */
+    char column[2][48];          /* the objectives' columns with their units (lte_pp_arcsec, f1, ...) */
+    char label[2][96];           /* their names on a picture, with the unit */
+} gd_opt_pareto_report;
+
 /* optimize with optimize.robust: the Monte Carlo sample, and for the unmodified flank, the case's own
  * and the optimum (0, 1, 2) the robust objective (the quantile), the nominal one and the value of
  * every sample. */
@@ -526,6 +541,7 @@ typedef struct gd_optimize_outcome {
     double aux_of[3][GD_OPT_MAX_AUX];
     gd_opt_robust_report *robust; /* optimize.robust (else NULL); objective_of is then robust, aux_of the nominal
                                      objective's own numbers */
+    gd_opt_pareto_report *pareto; /* two objectives (else NULL): the rest of the outcome is then only the problem's */
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */

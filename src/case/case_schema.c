@@ -447,9 +447,11 @@ static const gd_keyspec schema[] = {
 
     /* [optimize] (analysis = optimize, compare-optimizers; docs/optimisation.md) */
     E("optimize", "algorithm", opt_algorithm, 0,
-      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx|random",
+      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx|random|moalo|weighted-sum|"
+      "eps-constraint",
       "optimize: the optimiser (alo: the Ant Lion Optimizer; gn_*/ln_*: NLopt's global and local methods; "
-      "random: uniform random search)"),
+      "random: uniform random search; two objectives: moalo, the multi-objective ALO, weighted-sum and "
+      "eps-constraint, scalar_algorithm on a grid of scalarised subproblems, or random)"),
     S("optimize", "optimizers", opt_optimizers, "alo,gn_direct_l,gn_crs2_lm,gn_isres,gn_esch,ln_bobyqa,ln_cobyla,ln_sbplx,random",
       "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
     S("optimize", "objective", opt_objective, "gear-lte",
@@ -549,6 +551,19 @@ static const gd_keyspec schema[] = {
     D("optimize", "robust_deviation_mm", "mm", opt_robust_length_mm, 0, 1000, 0, 0, 0.5,
       "robust: each design variable in mm (relief lengths y2, y4, the unmodified lead band y7, y8) deviates "
       "uniformly within +- this"),
+    S("optimize", "objective2", opt_objective2, "",
+      "optimize, two objectives at once: gear-dynamic beside objective gear-lte or gear-lte-range, their Pareto "
+      "front (empty: one objective; zdt1 and zdt2 have two of their own)"),
+    I("optimize", "archive", opt_archive, 2, 100000, 100, "moalo: the size of its archive of non-dominated points"),
+    E("optimize", "scalar_algorithm", opt_scalar_algorithm, 2,
+      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx",
+      "weighted-sum, eps-constraint: the NLopt method of each scalarised subproblem (alo is refused)"),
+    I("optimize", "scalar_grid", opt_scalar_grid, 2, 10000, 8,
+      "weighted-sum, eps-constraint: the subproblems (weights or epsilon levels), each on an equal share of the "
+      "budget"),
+    L("optimize", "hv_reference", "", opt_hv_reference, n_opt_hv_reference, 0, 1e30,
+      "two objectives: the hypervolume's reference point, two numbers > 0 in the objectives' units (derived: 1.1, "
+      "1.1 for zdt1 and zdt2; for the gear 1.1 times the unmodified flank's two objectives)"),
 };
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)

@@ -154,5 +154,9 @@ unsigned long gd_opt_instance_seed(const gd_case *c, int r);
  * robust_case.c), and its checks beyond the keys' ranges (called by gd_opt_resolve_case). */
 void gd_opt_case_robust(const gd_case *c, gd_opt_robust *rb);
 gd_status gd_opt_resolve_robust(const gd_case *c, int compare, int gear, gd_error *err);
+/* Two objectives at once (pareto_case.c): the objectives of an optimize run (2 with optimize.objective2 or
+ * zdt1, zdt2; else 1), and the checks of objective2, the optimiser, the reference point. */
+int gd_opt_case_nobj(const gd_case *c);
+gd_status gd_opt_resolve_two(gd_case *c, int compare, gd_error *err);
 
 #endif

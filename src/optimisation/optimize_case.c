@@ -251,12 +251,11 @@ typedef struct objective_kinds {
 } objective_kinds;
 
 /* The objectives a case can name: gear-lte and the test functions of one objective everywhere;
- * gear-lte-range and gear-dynamic for optimize only (zdt1 and zdt2, two objectives, are the
- * library's). */
+ * gear-lte-range, gear-dynamic and zdt1, zdt2 (two objectives) for optimize only. */
 static int case_objective(int o, int compare)
 {
     if (o == GD_OBJ_ZDT1 || o == GD_OBJ_ZDT2)
-        return 0;
+        return !compare;
     if (o == GD_OBJ_GEAR_LTE_RANGE || o == GD_OBJ_GEAR_DYNAMIC)
         return !compare;
     return 1;
@@ -445,7 +444,7 @@ static gd_status resolve_budget(gd_case *c, int compare, gd_error *err)
     int algs[GD_OPT_NALGORITHMS];
     int na = gd_opt_case_optimizers(c, algs, GD_OPT_NALGORITHMS), alo = 0;
     for (int i = 0; i < na; i++)
-        alo |= algs[i] == GD_OPT_ALO;
+        alo |= algs[i] == GD_OPT_ALO || algs[i] == GD_OPT_MOALO;
     if (alo && c->opt_budget_evals < 2 * c->opt_population) {
         const char *k = gd_case_key_given(c, "optimize", "budget_evals") ? "budget_evals" : "population";
         gd_case_key_where(c, "optimize", k, w, sizeof w);
@@ -492,9 +491,13 @@ gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
         st = resolve_targets(c, &ok, err);
     if (st == GD_OK)
         st = gd_opt_resolve_robust(c, compare, ok.gear, err);
+    if (st == GD_OK)
+        st = gd_opt_resolve_two(c, compare, err);
     if (st == GD_OK && ok.gear)
         st = check_gear(c, pair, err);
-    if (st == GD_OK && !compare && (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC))
-        st = resolve_load_speed(c, pair, ok.objective, err);
+    const int dyn2 = !compare && strcmp(c->opt_objective2, "gear-dynamic") == 0; /* two objectives */
+    if (st == GD_OK && !compare &&
+        (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC || dyn2))
+        st = resolve_load_speed(c, pair, dyn2 ? GD_OBJ_GEAR_DYNAMIC : ok.objective, err);
     return st;
 }

@@ -11,6 +11,7 @@
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
 #include "row_optimize_robust.h"
+#include "row_optimize_pareto.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -61,6 +62,7 @@ void gd_row_optimize_free(void *result)
         o->user_free(o->user);
     gd_opt_testfn_free(&o->tf);
     row_robust_free(o->robust);
+    row_pareto_free(o->pareto);
     free(o);
 }
 
@@ -298,6 +300,15 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     gd_optimize_outcome *o = calloc(1, sizeof *o); /* about 80 kB: names and bounds of up to 1000 variables */
     if (!o)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    if (gd_opt_case_nobj(&c) == 2) { /* two objectives: their Pareto front (row_optimize_pareto.c) */
+        gd_status st = row_pareto_run(&c, env, o, err);
+        if (st != GD_OK) {
+            gd_row_optimize_free(o);
+            return st;
+        }
+        *result = o;
+        return GD_OK;
+    }
     gd_opt_problem p;
     const gd_stop_hook stop = gd_row_stop(env);
     gd_status st = setup_problem(&c, stop, o, &o->gear_problem, &o->tf, &p, err);
@@ -342,6 +353,8 @@ gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir
 {
     (void)c;
     const gd_optimize_outcome *o = result;
+    if (o->pareto)
+        return gd_pareto_write(out, o, err);
     if (o->gear)
         gd_optimize_write_lte(out, o, err);
     gd_status st = gd_optimize_write_optimum(out, o, err);
@@ -356,6 +369,8 @@ gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir
 gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     const gd_optimize_outcome *o = result;
+    if (o->pareto)
+        return gd_summary_write_pareto(out, c, o, err);
     const gd_opt_testfn *tf = &o->tf;
     const gd_opt_settings *s = &o->settings;
     int threads = o->threads;
@@ -405,5 +420,8 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
 void gd_row_optimize_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
 {
     const gd_plotter p = gd_row_plotter(env, out);
-    gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
+    if (((const gd_optimize_outcome *)result)->pareto)
+        gd_plot_pareto(&p, c, (const gd_optimize_outcome *)result);
+    else
+        gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
 }
