@@ -380,6 +380,10 @@ typedef struct gd_opt_compare_settings {
     int ntargets;            /* >= 1 (1: the target only) */
     int threads;             /* runs in parallel over (algorithm, run); 0 the OpenMP default */
     gd_stop_hook stop;       /* every run's gd_opt_settings.stop */
+    /* two objectives: every run's value is the hypervolume shortfall hv_ref[0] hv_ref[1] - HV (the area of the
+     * reference box its front does not dominate), its history after each evaluation; the runs' settings */
+    double hv_ref[2];
+    int archive, scalar_algorithm, scalar_grid; /* 0: the defaults of gd_opt_settings_default */
 } gd_opt_compare_settings;
 
 typedef struct gd_opt_compare_run {
@@ -497,6 +501,8 @@ typedef struct gd_opt_optimize_summary {
 typedef struct gd_opt_compare_problem {
     int objective, dim;
     double shift;
+    int nobj;                /* 2: the values are hypervolume shortfalls within hv_ref */
+    double hv_ref[2];
     const gd_opt_compare_result *res;
 } gd_opt_compare_problem;
 
@@ -549,6 +555,9 @@ typedef struct gd_optimize_outcome {
 typedef struct gd_compare_entry {
     int objective, dim;
     double shift;
+    int nobj;                   /* 2: two objectives (zdt1, zdt2, or gear-lte with optimize.objective2) */
+    double hv_ref[2];           /* two objectives: the hypervolume's reference point */
+    void *dyn;                  /* gear-lte with objective2: the dynamic objective's state (gd_dynobj) */
     gd_opt_gear *gear;
     gd_opt_testfn *tf;          /* runs instances */
     gd_opt_problem *pb;         /* runs */

@@ -456,7 +456,8 @@ static const gd_keyspec schema[] = {
       "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
     S("optimize", "objective", opt_objective, "gear-lte",
       "gear-lte (LTE amplitude of the modified pair over optimize.variables) or test functions sphere, rosenbrock, "
-      "rastrigin, ackley, griewank; compare-optimizers takes a comma-separated list"),
+      "rastrigin, ackley, griewank, and zdt1, zdt2 of two objectives; compare-optimizers takes a comma-separated "
+      "list"),
     L("optimize", "dimension", "", opt_dimensions, n_opt_dimensions, 1, 1000,
       "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte: the count of optimize.variables)"),
     I("optimize", "iterations", opt_iterations, 1, 10000000, 100,
@@ -552,8 +553,8 @@ static const gd_keyspec schema[] = {
       "robust: each design variable in mm (relief lengths y2, y4, the unmodified lead band y7, y8) deviates "
       "uniformly within +- this"),
     S("optimize", "objective2", opt_objective2, "",
-      "optimize, two objectives at once: gear-dynamic beside objective gear-lte or gear-lte-range, their Pareto "
-      "front (empty: one objective; zdt1 and zdt2 have two of their own)"),
+      "two objectives at once: gear-dynamic beside objective gear-lte or gear-lte-range (compare-optimizers: "
+      "gear-lte), their Pareto front (empty: one objective; zdt1 and zdt2 have two of their own)"),
     I("optimize", "archive", opt_archive, 2, 100000, 100, "moalo: the size of its archive of non-dominated points"),
     E("optimize", "scalar_algorithm", opt_scalar_algorithm, 2,
       "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx",

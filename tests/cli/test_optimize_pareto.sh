@@ -139,5 +139,46 @@ PY
 ok $? "the gear: the reference point is 1.1 times the unmodified flank's objectives"
 grep -q "unmodified: lte_pp_arcsec" "$work/g.txt"; ok $? "the console reports the unmodified flank beside the front"
 
+# ---- the comparison of two-objective optimisers (the shipped case, shortened) ---------------------
+cmp_sets="--set optimize.runs=3 --set optimize.budget_evals=1010"
+"$G" run "$SRC/cases/optimize/compare-two-objectives.ini" --out "$work/c1" --threads 1 $cmp_sets > "$work/c1.txt" 2>&1
+ok $? "compare-optimizers on zdt1, zdt2 by moalo, weighted-sum, eps-constraint, random exits 0 ($(head -c 300 "$work/c1.txt"))"
+"$G" run "$SRC/cases/optimize/compare-two-objectives.ini" --out "$work/c2" --threads 2 --quiet $cmp_sets > /dev/null 2>&1
+ok $? "... and with 2 threads"
+for f in runs.csv statistics.csv convergence.csv ecdf.csv; do
+    python3 - "$work/c1/$f" "$work/c2/$f" <<'PY'
+import csv, sys
+a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+strip = lambda rows: [{k: v for k, v in r.items() if not k.startswith("wall")} for r in rows]
+assert strip(a) == strip(b) and len(a) > 0
+PY
+    ok $? "compare, two objectives: $f the same with 1 and 2 threads (but the wall times)"
+done
+python3 - "$work/c1" "$work/z1/summary.json" <<'PY'
+import csv, json, sys
+d = sys.argv[1]
+s = json.load(open(d + "/summary.json"))
+box = 1.1 * 1.1
+for p in s["problems"]:
+    assert p["objectives"] == 2 and p["hv_reference"] == [1.1, 1.1]
+    true = box - 1 / 3 if p["objective"] == "zdt1" else box - 2 / 3
+    assert abs(box - p["f_ref"] - true) < 1e-12, p["f_ref"]  # the reference: the true front's hypervolume
+runs = list(csv.DictReader(open(d + "/runs.csv")))
+assert len(runs) == 2 * 4 * 3
+for r in runs:
+    hv = box - float(r["final_f"])
+    assert -1e-12 <= hv <= (box - 1 / 3 if r["objective"] == "zdt1" else box - 2 / 3) + 1e-12, r
+PY
+ok $? "compare, two objectives: each run's value is the reference box less its hypervolume, the reference the true front's"
+"$G" run "$SRC/cases/optimize/pareto-zdt1.ini" --out "$work/z1010" --quiet --set optimize.iterations=19 > /dev/null 2>&1
+python3 - "$work/c1/runs.csv" "$work/z1010/summary.json" <<'PY'
+import csv, json, sys
+hv = json.load(open(sys.argv[2]))["results"]["hypervolume"]
+r = [x for x in csv.DictReader(open(sys.argv[1])) if x["objective"] == "zdt1" and x["optimizer"] == "moalo" and x["run"] == "1"][0]
+assert r["seed"] == "1"
+assert abs((1.21 - float(r["final_f"])) - hv) <= 1e-9, (1.21 - float(r["final_f"]), hv)
+PY
+ok $? "compare, two objectives: MOALO's run of seed 1 has the hypervolume of optimize's run of seed 1 (1010 evaluations)"
+
 echo "1..$n"
 [ $bad -eq 0 ]
