@@ -81,7 +81,7 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
         r->n = o->objective == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_torques; /* gear-lte: the case's torque */
         for (int k = 0; k < r->n; k++) {
             r->torques_nm[k] = o->objective == GD_OBJ_GEAR_LTE ? c->torque_nm : c->opt_torques_nm[k];
-            r->weights[k] = c->n_opt_torque_weights ? c->opt_torque_weights[k] : 1.0;
+            r->weights[k] = c->n_opt_torque_weights && o->objective != GD_OBJ_GEAR_LTE ? c->opt_torque_weights[k] : 1.0;
         }
         r->combine = c->opt_lte_range_combine;
         gd_opt_lte_range_objective(r, &obj);
