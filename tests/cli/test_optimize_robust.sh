@@ -146,6 +146,19 @@ for flank in ("unmodified", "case", "optimum"):
 PY
 ok $? "gear-lte: the nominal value of each flank is its LTE amplitude of the LTE table"
 
+# gear-lte takes the case's one torque: the weights of gear-lte-range (ignored) do not enter its mean
+out6="$work/t6"
+"$G" run "$work/spur.ini" --out "$out6" --quiet --set optimize.objective=gear-lte --set optimize.lte_range_combine=mean \
+    --set optimize.torque_weights=0,0 --set optimize.budget_evals=2 --set optimize.population=2 > "$work/run6.txt" 2>&1
+ok $? "optimize gear-lte robust with the ignored weights 0, 0 exits 0 ($(head -c 300 "$work/run6.txt"))"
+python3 - "$out6/summary.json" <<'PY'
+import json, math, sys
+rb = json.load(open(sys.argv[1]))["results"]["robust"]
+for flank in ("unmodified", "case", "optimum"):
+    assert math.isfinite(rb[flank]["robust"]) and rb[flank]["robust"] > 0, rb
+PY
+ok $? "gear-lte robust: the ignored torque weights leave every value finite"
+
 out5="$work/t5"
 "$G" run "$work/spur.ini" --out "$out5" --quiet --set optimize.objective=gear-dynamic --set optimize.torques_nm=120 \
     --set optimize.speed_from_rpm=3500 --set optimize.speed_to_rpm=4500 --set optimize.budget_evals=2 \
