@@ -202,6 +202,12 @@ typedef struct gd_case {
     double opt_speed_from_rpm, opt_speed_to_rpm, opt_dynamic_sweep_step_rpm;
     int opt_dynamic_response; /* gd_dyn_measure */
     int opt_dynamic_model;    /* gd_model_kind of the dynamics in the loop */
+    int opt_robust, opt_robust_samples; /* the robust variant of the gear objectives */
+    double opt_robust_quantile, opt_robust_tilt_arcmin, opt_robust_centre_distance_mm;
+    double opt_robust_amount_um, opt_robust_length_mm;
+    char opt_objective2[256]; /* two objectives at once: the second (gear-dynamic), or "" */
+    int opt_archive, opt_scalar_algorithm, opt_scalar_grid;
+    double opt_hv_reference[GD_MAX_HARMONICS]; int n_opt_hv_reference;
 
     /* [continuation] (analysis = continuation; gd_continuation.h, docs/continuation.md) */
     char cont_parameter[256]; /* "section.key" */

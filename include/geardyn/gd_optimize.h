@@ -380,6 +380,10 @@ typedef struct gd_opt_compare_settings {
     int ntargets;            /* >= 1 (1: the target only) */
     int threads;             /* runs in parallel over (algorithm, run); 0 the OpenMP default */
     gd_stop_hook stop;       /* every run's gd_opt_settings.stop */
+    /* two objectives: every run's value is the hypervolume shortfall hv_ref[0] hv_ref[1] - HV (the area of the
+     * reference box its front does not dominate), its history after each evaluation; the runs' settings */
+    double hv_ref[2];
+    int archive, scalar_algorithm, scalar_grid; /* 0: the defaults of gd_opt_settings_default */
 } gd_opt_compare_settings;
 
 typedef struct gd_opt_compare_run {
@@ -434,6 +438,32 @@ GD_API double gd_opt_compare_ecdf(const gd_opt_compare_result *const *r, int nre
 
 /* ---- summary.json ------------------------------------------------------------------------------ */
 
+/* optimize with two objectives (optimize.objective2, or zdt1 / zdt2): the runs, the front of the best
+ * (the largest hypervolume), and for the gear the two objectives of the unmodified flank and the
+ * case's own. */
+typedef struct gd_opt_pareto_report {
+    int objective, objective2;   /* objective2: gear-dynamic, or the objective itself for zdt1 / zdt2 */
+    int gear, dim, runs, best;
+    gd_opt_result *res;          /* runs */
+    double hv_ref[2];
+    int hv_ref_derived;          /* 1.1 times the unmodified flank's (gear) or 1.1, 1.1 (zdt) */
+    double flank_f[2][2];        /* gear: the unmodified flank's and the case's own two objectives */
+    double true_front_hv;        /* zdt1 / zdt2: the true front's hypervolume within hv_ref (else NaN) */
+    char column[2][48];          /* the objectives' columns with their units (lte_pp_arcsec, f1, ...) */
+    char label[2][96];           /* their names on a picture, with the unit */
+} gd_opt_pareto_report;
+
+/* optimize with optimize.robust: the Monte Carlo sample, and for the unmodified flank, the case's own
+ * and the optimum (0, 1, 2) the robust objective (the quantile), the nominal one and the value of
+ * every sample. */
+typedef struct gd_opt_robust_report {
+    gd_opt_robust settings;
+    int nvars;
+    const double *dev;       /* samples x (3 + nvars), gd_opt_gear_robust_sample */
+    double robust[3], nominal[3];
+    double *values[3];       /* samples each, in the sample's order */
+} gd_opt_robust_report;
+
 typedef struct gd_opt_optimize_summary {
     int objective, dim, algorithm, runs, threads;
     long budget;
@@ -465,12 +495,15 @@ typedef struct gd_opt_optimize_summary {
     double last_tenth_improvement;
     int converged;
     double wall_s;
+    const gd_opt_robust_report *robust; /* optimize.robust (else NULL) */
 } gd_opt_optimize_summary;
 
 
 typedef struct gd_opt_compare_problem {
     int objective, dim;
     double shift;
+    int nobj;                /* 2: the values are hypervolume shortfalls within hv_ref */
+    double hv_ref[2];
     const gd_opt_compare_result *res;
 } gd_opt_compare_problem;
 
@@ -514,6 +547,9 @@ typedef struct gd_optimize_outcome {
     double objective_of[3];
     double aux_of[3][GD_OPT_MAX_AUX];
     void *post;              /* gear-lte-range, gear-dynamic: a gd_optpost (gd_optpost.h), the row's to free */
+    gd_opt_robust_report *robust; /* optimize.robust (else NULL); objective_of is then robust, aux_of the nominal
+                                     objective's own numbers */
+    gd_opt_pareto_report *pareto; /* two objectives (else NULL): the rest of the outcome is then only the problem's */
 } gd_optimize_outcome;
 
 /* compare-optimizers: every optimiser of the case on every objective (and dimension). */
@@ -521,6 +557,9 @@ typedef struct gd_optimize_outcome {
 typedef struct gd_compare_entry {
     int objective, dim;
     double shift;
+    int nobj;                   /* 2: two objectives (zdt1, zdt2, or gear-lte with optimize.objective2) */
+    double hv_ref[2];           /* two objectives: the hypervolume's reference point */
+    void *dyn;                  /* gear-lte with objective2: the dynamic objective's state (gd_dynobj) */
     gd_opt_gear *gear;
     gd_opt_testfn *tf;          /* runs instances */
     gd_opt_problem *pb;         /* runs */

@@ -286,7 +286,8 @@ GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
     if (!c->impact && IS("excitation", "impact_exponent"))
         return "ignored: excitation.impact = off";
     if (strcmp(k->section, "optimize") == 0) { /* the keys of the objectives over load and speed */
-        int dyn = strcmp(c->opt_objective, "gear-dynamic") == 0, range = strcmp(c->opt_objective, "gear-lte-range") == 0;
+        int dyn = strcmp(c->opt_objective, "gear-dynamic") == 0 || strcmp(c->opt_objective2, "gear-dynamic") == 0;
+        int range = strcmp(c->opt_objective, "gear-lte-range") == 0;
         if (!dyn && !range && (IS("optimize", "torques_nm") || IS("optimize", "torque_weights")))
             return "ignored: only optimize.objective = gear-lte-range or gear-dynamic uses it";
         if (!range && IS("optimize", "lte_range_combine"))
@@ -295,6 +296,13 @@ GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
                      IS("optimize", "speed_to_rpm") || IS("optimize", "dynamic_response") ||
                      IS("optimize", "dynamic_model") || IS("optimize", "dynamic_sweep_step_rpm")))
             return "ignored: only optimize.objective = gear-dynamic uses it";
+        if (!c->opt_robust && strncmp(k->key, "robust_", 7) == 0)
+            return "ignored: optimize.robust = off";
+        if (c->opt_algorithm != 9 && IS("optimize", "archive")) /* GD_OPT_MOALO */
+            return "ignored: only optimize.algorithm = moalo uses it";
+        if (c->opt_algorithm != 10 && c->opt_algorithm != 11 && /* weighted-sum, eps-constraint */
+            (IS("optimize", "scalar_algorithm") || IS("optimize", "scalar_grid")))
+            return "ignored: only optimize.algorithm = weighted-sum or eps-constraint uses it";
     }
 #undef IS
     return NULL;

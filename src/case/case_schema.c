@@ -447,14 +447,17 @@ static const gd_keyspec schema[] = {
 
     /* [optimize] (analysis = optimize, compare-optimizers; docs/optimisation.md) */
     E("optimize", "algorithm", opt_algorithm, 0,
-      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx|random",
+      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx|random|moalo|weighted-sum|"
+      "eps-constraint",
       "optimize: the optimiser (alo: the Ant Lion Optimizer; gn_*/ln_*: NLopt's global and local methods; "
-      "random: uniform random search)"),
+      "random: uniform random search; two objectives: moalo, the multi-objective ALO, weighted-sum and "
+      "eps-constraint, scalar_algorithm on a grid of scalarised subproblems, or random)"),
     S("optimize", "optimizers", opt_optimizers, "alo,gn_direct_l,gn_crs2_lm,gn_isres,gn_esch,ln_bobyqa,ln_cobyla,ln_sbplx,random",
       "compare-optimizers: the optimisers compared, comma-separated (names as for algorithm)"),
     S("optimize", "objective", opt_objective, "gear-lte",
       "gear-lte (LTE amplitude of the modified pair over optimize.variables) or test functions sphere, rosenbrock, "
-      "rastrigin, ackley, griewank; compare-optimizers takes a comma-separated list"),
+      "rastrigin, ackley, griewank, and zdt1, zdt2 of two objectives; compare-optimizers takes a comma-separated "
+      "list"),
     L("optimize", "dimension", "", opt_dimensions, n_opt_dimensions, 1, 1000,
       "test functions: number of variables, a comma-separated list for compare-optimizers (default 6; gear-lte: the count of optimize.variables)"),
     I("optimize", "iterations", opt_iterations, 1, 10000000, 100,
@@ -530,6 +533,38 @@ static const gd_keyspec schema[] = {
     D("optimize", "dynamic_sweep_step_rpm", "rpm", opt_dynamic_sweep_step_rpm, 0, 100000, 1, 0, NAN,
       "gear-dynamic: the spacing of the short sweep where the period-1 orbit is unstable or lost (derived: a "
       "fiftieth of the speed range); its points run run.transient_periods and run.record_periods"),
+    B("optimize", "robust", opt_robust, 0,
+      "gear objectives: the robust variant, the robust_quantile of the objective over a Monte Carlo sample of "
+      "misalignment and manufacturing deviations of the design variables (drawn from optimize.seed, the same for "
+      "every candidate)"),
+    I("optimize", "robust_samples", opt_robust_samples, 1, 100000, 20,
+      "robust: the size of the Monte Carlo sample"),
+    D("optimize", "robust_quantile", "", opt_robust_quantile, 0, 1, 1, 0, 0.9,
+      "robust: the quantile of the sample's values that is the objective"),
+    D("optimize", "robust_misalignment_tilt_arcmin", "arcmin", opt_robust_tilt_arcmin, 0, 60, 0, 0, 0.5,
+      "robust: each tilt component of the axis (misalignment.axis_in_plane_arcmin, axis_cross_plane_arcmin) "
+      "deviates uniformly within +- this"),
+    D("optimize", "robust_misalignment_centre_distance_mm", "mm", opt_robust_centre_distance_mm, 0, 10, 0, 0, 0.05,
+      "robust: the centre distance deviates uniformly within +- this"),
+    D("optimize", "robust_deviation_um", "um", opt_robust_amount_um, 0, 1000, 0, 0, 2,
+      "robust: each design variable in um (relief amounts y1, y3, y5, y6, helix slope y9) deviates uniformly "
+      "within +- this"),
+    D("optimize", "robust_deviation_mm", "mm", opt_robust_length_mm, 0, 1000, 0, 0, 0.5,
+      "robust: each design variable in mm (relief lengths y2, y4, the unmodified lead band y7, y8) deviates "
+      "uniformly within +- this"),
+    S("optimize", "objective2", opt_objective2, "",
+      "two objectives at once: gear-dynamic beside objective gear-lte or gear-lte-range (compare-optimizers: "
+      "gear-lte), their Pareto front (empty: one objective; zdt1 and zdt2 have two of their own)"),
+    I("optimize", "archive", opt_archive, 2, 100000, 100, "moalo: the size of its archive of non-dominated points"),
+    E("optimize", "scalar_algorithm", opt_scalar_algorithm, 2,
+      "alo|gn_direct_l|gn_crs2_lm|gn_isres|gn_esch|ln_bobyqa|ln_cobyla|ln_sbplx",
+      "weighted-sum, eps-constraint: the NLopt method of each scalarised subproblem (alo is refused)"),
+    I("optimize", "scalar_grid", opt_scalar_grid, 2, 10000, 8,
+      "weighted-sum, eps-constraint: the subproblems (weights or epsilon levels), each on an equal share of the "
+      "budget"),
+    L("optimize", "hv_reference", "", opt_hv_reference, n_opt_hv_reference, 0, 1e30,
+      "two objectives: the hypervolume's reference point, two numbers > 0 in the objectives' units (derived: 1.1, "
+      "1.1 for zdt1 and zdt2; for the gear 1.1 times the unmodified flank's two objectives)"),
 };
 
 GD_API const gd_keyspec *gd_case_schema(size_t *n)

@@ -99,6 +99,8 @@ void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const g
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 /* after an optimisation over load and speed: bta, the ranking, the Harris map's least (run_optpost.c) */
 void cli_optpost_report(const gd_case *c, const gd_optimize_outcome *o);
+void cli_optimize_robust_report(const gd_case *c, const gd_optimize_outcome *o);
+void cli_optimize_pareto_report(const char *dir, const gd_case *c, const gd_optimize_outcome *o);
 void cli_compare_problem(void *user, const gd_compare_entry *q, const gd_opt_compare_settings *s);
 void cli_compare_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 

@@ -10,7 +10,10 @@
 void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r)
 {
     const cli_progress *o = user;
-    if (!o->quiet && runs > 1)
+    if (!o->quiet && runs > 1 && r->nobj == 2)
+        printf("  run %d (seed %lu): %d non-dominated points, hypervolume %.8g after %ld evaluations, %.1f s\n",
+               run + 1, seed, r->nfront, r->hv, r->evaluations, r->wall_s);
+    else if (!o->quiet && runs > 1)
         printf("  run %d (seed %lu): %.8g after %ld evaluations, %.1f s\n", run + 1, seed, r->f, r->evaluations,
                r->wall_s);
 }
@@ -31,6 +34,10 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
     const gd_optimize_outcome *o = result;
     if (a->quiet)
         return;
+    if (o->pareto) {
+        cli_optimize_pareto_report(dir, c, o);
+        return;
+    }
     long budget = o->settings.budget;
     double wall = o->wall_s;
     int threads = o->threads;
@@ -80,6 +87,7 @@ void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case 
             printf("  the paper's pair: its Table 2 gives %.6g arcsec here; the paper: 4.194 -> 1.157, -72.41 %%\n",
                    o->lte[3].lte_pp_arcsec);
     }
+    cli_optimize_robust_report(c, o);
     cli_optpost_report(c, o);
     if (!o->converged)
         printf("  not converged: the best value fell by %.3g %% over the last tenth of the evaluations (best at "

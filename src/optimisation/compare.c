@@ -125,6 +125,14 @@ static gd_status compare_runs(const gd_opt_problem *const *problems, const gd_op
             os.local_step = s->local_step;
         os.keep_history = 1;
         os.stop = s->stop;
+        os.hv_ref[0] = s->hv_ref[0];
+        os.hv_ref[1] = s->hv_ref[1];
+        if (s->archive > 0)
+            os.archive = s->archive;
+        if (s->scalar_algorithm > 0)
+            os.scalar_algorithm = s->scalar_algorithm;
+        if (s->scalar_grid > 0)
+            os.scalar_grid = s->scalar_grid;
         gd_opt_result res;
         gd_error e = {0};
         gd_status st = gd_opt_run(problems[u->run], &os, &res, &e);
@@ -136,6 +144,15 @@ static gd_status compare_runs(const gd_opt_problem *const *problems, const gd_op
         memcpy(u->y, res.y, sizeof(double) * (size_t)dim);
         u->evaluations = res.evaluations;
         memcpy(u->best_history, res.best_history, sizeof(double) * (size_t)res.evaluations);
+        if (res.nobj == 2) { /* the hypervolume shortfall; the point of the front with the least f1 */
+            const double box = s->hv_ref[0] * s->hv_ref[1];
+            u->f = box - res.hv;
+            for (long k = 0; k < res.evaluations; k++)
+                u->best_history[k] = box - res.hv_history[k];
+            u->f = u->best_history[res.evaluations - 1]; /* the history's own sum, to the last bit */
+            if (res.nfront > 0)
+                memcpy(u->y, res.front_y, sizeof(double) * (size_t)dim);
+        }
         for (long k = res.evaluations; k < s->budget; k++)
             u->best_history[k] = res.f;
         u->starts = res.starts;

@@ -48,6 +48,8 @@ typedef struct gear_state {
     gd_pair pair;
     void *os[2];
     double *vals;                      /* robust: the values of the sample */
+    double *keep;                      /* robust, when not NULL: nobj x samples, each objective's values in the
+                                          sample's order (opt_gear_value_of_pair_samples) */
     double aux[GD_OPT_MAX_AUX];
 } gear_state;
 
@@ -319,6 +321,8 @@ static gd_status gear_values_on(gear_state *s, const gd_pair *base, const double
             if (st != GD_OK)
                 gd_error_prefix(err, "robust sample %d", j + 1);
         }
+        if (st == GD_OK && s->keep)
+            memcpy(s->keep + (size_t)k * (size_t)g->rb.samples, s->vals, sizeof(double) * (size_t)g->rb.samples);
         if (st == GD_OK)
             f[k] = quantile(s->vals, g->rb.samples, g->rb.quantile);
         na += 1 + o->naux;
@@ -368,6 +372,22 @@ GD_API gd_status gd_opt_gear_value_of_pair(const gd_opt_gear *g, const gd_pair *
     if (st != GD_OK)
         return st;
     gear_state *s = state;
+    double y[GD_OPT_GEAR_NVARS];
+    gd_opt_gear_from_pair(&g->vars, pair, y);
+    st = gear_values_on(s, pair, y, f, aux ? aux : s->aux, err);
+    state_free(state);
+    return st;
+}
+
+gd_status opt_gear_value_of_pair_samples(const gd_opt_gear *g, const gd_pair *pair, double *f, double *aux,
+                                         double *samples, gd_error *err)
+{
+    void *state;
+    gd_status st = state_alloc((void *)g, &state, err);
+    if (st != GD_OK)
+        return st;
+    gear_state *s = state;
+    s->keep = g->rb.samples > 0 ? samples : NULL;
     double y[GD_OPT_GEAR_NVARS];
     gd_opt_gear_from_pair(&g->vars, pair, y);
     st = gear_values_on(s, pair, y, f, aux ? aux : s->aux, err);

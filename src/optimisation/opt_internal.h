@@ -128,6 +128,11 @@ void opt_first_failure_init(opt_first_failure *f, int n);
 void opt_first_failure_note(opt_first_failure *f, int i, gd_status st, const gd_error *e);
 void opt_first_failure_destroy(opt_first_failure *f);
 
+/* gd_opt_gear_value_of_pair, and with the robust variant each objective's value at every sample of
+ * its Monte Carlo sample (samples: nobj x gd_opt_gear_robust_sample, in the sample's order). */
+gd_status opt_gear_value_of_pair_samples(const gd_opt_gear *g, const gd_pair *pair, double *f, double *aux,
+                                         double *samples, gd_error *err);
+
 /* ---- the case's [optimize] section ---- */
 /* Cross-key checks and derived defaults of [optimize] (called by gd_case_resolve for the two
  * analyses): the optimizer and objective lists, dimensions, bounds, budget, targets; for the gear
@@ -145,5 +150,13 @@ long gd_opt_case_budget(const gd_case *c);
 /* Seed of run r (seed + r) and of the problem instance of run r (a different stream). */
 unsigned long gd_opt_run_seed(const gd_case *c, int r);
 unsigned long gd_opt_instance_seed(const gd_case *c, int r);
+/* The robust variant of the case's gear objectives (optimize.robust and robust_*; samples 0 when off;
+ * robust_case.c), and its checks beyond the keys' ranges (called by gd_opt_resolve_case). */
+void gd_opt_case_robust(const gd_case *c, gd_opt_robust *rb);
+gd_status gd_opt_resolve_robust(const gd_case *c, int compare, int gear, gd_error *err);
+/* Two objectives at once (pareto_case.c): the objectives of an optimize run (2 with optimize.objective2 or
+ * zdt1, zdt2; else 1), and the checks of objective2, the optimiser, the reference point. */
+int gd_opt_case_nobj(const gd_case *c);
+gd_status gd_opt_resolve_two(gd_case *c, int compare, gd_error *err);
 
 #endif

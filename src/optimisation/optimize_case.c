@@ -218,23 +218,23 @@ static gd_status resolve_optimizers(const gd_case *c, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     char valid[512] = "";
-    for (int a = 0; a < GD_OPT_MOALO; a++) { /* the optimisers of one objective (two objectives: the library's) */
+    for (int a = 0; a < GD_OPT_NALGORITHMS; a++) {
         size_t u = strlen(valid);
         snprintf(valid + u, sizeof valid - u, "%s%s", a ? ", " : "", gd_opt_algorithm_name(a));
     }
     char names[GD_OPT_NALGORITHMS + 1][48];
-    int n = split(c->opt_optimizers, names, GD_OPT_MOALO + 1);
+    int n = split(c->opt_optimizers, names, GD_OPT_NALGORITHMS + 1);
     int seen[GD_OPT_NALGORITHMS] = {0};
     gd_case_key_where(c, "optimize", "optimizers", w, sizeof w);
     if (n < 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: more than %d names (valid: each of %s at "
-                            "most once)", w, GD_OPT_MOALO, valid);
+                            "most once)", w, GD_OPT_NALGORITHMS, valid);
     if (n == 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: empty (valid: comma-separated, of %s)", w,
                             valid);
     for (int i = 0; i < n; i++) {
         int a = gd_opt_algorithm_parse(names[i]);
-        if (a < 0 || a >= GD_OPT_MOALO)
+        if (a < 0)
             return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.optimizers: unknown optimiser '%s' (valid: %s)", w,
                                 names[i], valid);
         if (seen[a]++)
@@ -250,13 +250,12 @@ typedef struct objective_kinds {
     int objective;           /* the last named */
 } objective_kinds;
 
-/* The objectives a case can name: gear-lte and the test functions of one objective everywhere;
- * gear-lte-range and gear-dynamic for optimize only (zdt1 and zdt2, two objectives, are the
- * library's). */
+/* The objectives a case can name: gear-lte, the test functions and zdt1, zdt2 (two objectives)
+ * everywhere; gear-lte-range and gear-dynamic for optimize only. */
 static int case_objective(int o, int compare)
 {
     if (o == GD_OBJ_ZDT1 || o == GD_OBJ_ZDT2)
-        return 0;
+        return 1;
     if (o == GD_OBJ_GEAR_LTE_RANGE || o == GD_OBJ_GEAR_DYNAMIC)
         return !compare;
     return 1;
@@ -445,7 +444,7 @@ static gd_status resolve_budget(gd_case *c, int compare, gd_error *err)
     int algs[GD_OPT_NALGORITHMS];
     int na = gd_opt_case_optimizers(c, algs, GD_OPT_NALGORITHMS), alo = 0;
     for (int i = 0; i < na; i++)
-        alo |= algs[i] == GD_OPT_ALO;
+        alo |= algs[i] == GD_OPT_ALO || algs[i] == GD_OPT_MOALO;
     if (alo && c->opt_budget_evals < 2 * c->opt_population) {
         const char *k = gd_case_key_given(c, "optimize", "budget_evals") ? "budget_evals" : "population";
         gd_case_key_where(c, "optimize", k, w, sizeof w);
@@ -490,9 +489,15 @@ gd_status gd_opt_resolve_case(gd_case *c, const gd_pair *pair, gd_error *err)
         st = resolve_budget(c, compare, err);
     if (st == GD_OK)
         st = resolve_targets(c, &ok, err);
+    if (st == GD_OK)
+        st = gd_opt_resolve_robust(c, compare, ok.gear, err);
+    if (st == GD_OK)
+        st = gd_opt_resolve_two(c, compare, err);
     if (st == GD_OK && ok.gear)
         st = check_gear(c, pair, err);
-    if (st == GD_OK && !compare && (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC))
-        st = resolve_load_speed(c, pair, ok.objective, err);
+    const int dyn2 = strcmp(c->opt_objective2, "gear-dynamic") == 0; /* two objectives */
+    if (st == GD_OK &&
+        ((!compare && (ok.objective == GD_OBJ_GEAR_LTE_RANGE || ok.objective == GD_OBJ_GEAR_DYNAMIC)) || dyn2))
+        st = resolve_load_speed(c, pair, dyn2 ? GD_OBJ_GEAR_DYNAMIC : ok.objective, err);
     return st;
 }

@@ -7,6 +7,7 @@
 #include "geardyn/gd_case.h"
 #include "geardyn/gd_modal.h"
 #include "geardyn/gd_model.h"
+#include "geardyn/gd_optimize.h"
 #include "geardyn/gd_output.h"
 
 /* A finite number, or null. */
@@ -34,5 +35,7 @@ json_t *gd_json_files(const char *const *files, int nfiles);
 gd_status gd_json_write(gd_run_dir *d, const char *name, json_t *root, gd_error *err);
 /* summary.json: root with "files" set to every file of the run so far and summary.json itself. */
 gd_status gd_json_write_summary(gd_run_dir *d, json_t *root, gd_error *err);
+/* results.robust of an optimize run with optimize.robust (robust_tables.c). */
+json_t *gd_optimize_robust_json(const gd_opt_robust_report *r);
 
 #endif

@@ -86,6 +86,11 @@ gd_status gd_optimize_write_lte(gd_run_dir *d, const gd_optimize_outcome *o, gd_
 gd_status gd_optpost_write_tables(gd_run_dir *d, const gd_case *c, const gd_optpost *p, gd_error *err);
 struct json_t;
 void gd_optpost_summary(struct json_t *res, const gd_case *c, const gd_optpost *p);
+/* robust.csv: the robust variant's sample and each flank's objective at every sample (robust_tables.c). */
+gd_status gd_optimize_write_robust(gd_run_dir *d, const gd_case *c, const gd_optimize_outcome *o, gd_error *err);
+/* Two objectives (pareto_tables.c): pareto.csv, evaluations.csv, and summary.json. */
+gd_status gd_pareto_write(gd_run_dir *d, const gd_optimize_outcome *o, gd_error *err);
+gd_status gd_summary_write_pareto(gd_run_dir *d, const gd_case *c, const gd_optimize_outcome *o, gd_error *err);
 /* runs.csv, statistics.csv, convergence.csv, ecdf.csv and best_points.csv of a comparison. */
 gd_status gd_compare_write_tables(gd_run_dir *d, const gd_compare_outcome *C, gd_error *err);
 gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_opt_optimize_summary *s,

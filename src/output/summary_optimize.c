@@ -142,6 +142,8 @@ gd_status gd_summary_write_optimize(gd_run_dir *d, const gd_case *c, const gd_op
     }
     if (s->post)
         gd_optpost_summary(res, c, s->post);
+    if (s->robust)
+        json_object_set_new(res, "robust", gd_optimize_robust_json(s->robust));
     json_object_set_new(res, "wall_s", gd_json_num(s->wall_s));
     json_object_set_new(root, "results", res);
     return gd_json_write_summary(d, root, err);
@@ -194,7 +196,17 @@ gd_status gd_summary_write_compare(gd_run_dir *d, const gd_case *c, const gd_opt
         json_object_set_new(o, "objective", json_string(gd_opt_objective_name(pb[p].objective)));
         json_object_set_new(o, "dimension", json_integer(pb[p].dim));
         json_object_set_new(o, "shift", gd_json_num(pb[p].shift));
-        json_object_set_new(o, "objective_unit", json_string(pb[p].objective == GD_OBJ_GEAR_LTE ? "arcsec" : ""));
+        json_object_set_new(o, "objective_unit", json_string(pb[p].nobj == 2 ? "" : pb[p].objective == GD_OBJ_GEAR_LTE ?
+                                                             "arcsec" : ""));
+        if (pb[p].nobj == 2) { /* two objectives: every value is a hypervolume shortfall (section 13) */
+            json_object_set_new(o, "objectives", json_integer(2));
+            json_object_set_new(o, "value", json_string("the hypervolume shortfall: the area of the reference box "
+                                                        "hv_reference[0] hv_reference[1] the front does not dominate"));
+            json_t *ref = json_array();
+            json_array_append_new(ref, gd_json_num(pb[p].hv_ref[0]));
+            json_array_append_new(ref, gd_json_num(pb[p].hv_ref[1]));
+            json_object_set_new(o, "hv_reference", ref);
+        }
         json_object_set_new(o, "f_ref", gd_json_num(r->f_ref));
         json_object_set_new(o, "f_ref_is", json_string(r->f_ref_known ? "the known minimum"
                                                                        : "the best value found by any run"));

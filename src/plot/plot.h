@@ -60,6 +60,8 @@ void gd_plot_ltca(const gd_plotter *p, const gd_case *c, const gd_ltca_result *r
 void gd_plot_optimize(const gd_plotter *p, const gd_case *c, const gd_optimize_outcome *o);
 /* after an optimisation over load and speed (o->post): response_over_speed and lte_over_torque (plot_optpost.c) */
 void gd_plot_optpost(const gd_plotter *p, const gd_case *c, const gd_optimize_outcome *o);
+/* two objectives: the Pareto front (pareto.png, .svg; plot_pareto.c) */
+void gd_plot_pareto(const gd_plotter *p, const gd_case *c, const gd_optimize_outcome *o);
 void gd_plot_compare(const gd_plotter *p, const gd_case *c, const gd_compare_outcome *o);
 void gd_plot_workprec(const gd_plotter *p, const gd_case *c, const gd_workprec_outcome *o);
 void gd_plot_continuation(const gd_plotter *p, const gd_case *c, const gd_contin_result *r);

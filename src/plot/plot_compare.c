@@ -12,7 +12,9 @@ static const char *obj_name(const gd_compare_entry *q) { return gd_opt_objective
 /* The objective as a picture names it. */
 static const char *obj_words(const gd_compare_entry *q)
 {
-    return q->gear ? "LTE of the gear pair" : obj_name(q);
+    if (q->gear)
+        return q->nobj == 2 ? "LTE and dynamic response of the gear pair" : "LTE of the gear pair";
+    return obj_name(q);
 }
 
 
@@ -39,6 +41,7 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
     const gd_opt_compare_result *r0 = &C->p[0].res;
     gd_plot_script s = {0};
     int gear = C->p[0].gear != NULL;
+    int two = C->p[0].nobj == 2; /* every problem then has two objectives: hypervolumes (section 13) */
     for (int fi = 0; fi < 2; fi++) {
         for (int pic = 0; pic < 2; pic++) {
             int panels = pic == 0 ? C->n : C->n + (C->n > 1);
@@ -51,7 +54,11 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
             g.W = (int)(20 + g.cols * g.pw + (g.legend_slot < 0 ? 230 : 0));
             g.H = (int)(60 + g.rows * g.ph);
             gd_fig_begin(&s, fi, g.W, g.H, pic ? "ecdf" : "convergence");
-            if (pic == 0)
+            if (pic == 0 && two)
+                gd_plot_printf(&s, "set multiplot title 'Convergence: the median over %d runs of the hypervolume of "
+                                      "the reference HV_{ref} minus that of the front found; bars: its quartiles at the "
+                                      "budget of %ld evaluations'\n", r0->runs, r0->budget);
+            else if (pic == 0)
                 gd_plot_printf(&s, "set multiplot title 'Convergence: the median over %d runs of the best value found "
                                       "minus the reference value f_{ref}; bars: its quartiles at the budget of %ld "
                                       "evaluations'\n", r0->runs, r0->budget);
@@ -60,7 +67,10 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
                                       "reached, %d runs, %ld evaluations each'\n", r0->runs, r0->budget);
             gd_plot_printf(&s, "set logscale x\nset xlabel 'objective evaluations'\nset xrange [1:%.6g]\n",
                               pic == 0 ? r0->budget * 1.8 : (double)r0->budget);
-            if (pic == 0)
+            if (pic == 0 && two)
+                gd_plot_printf(&s, "set logscale y\nset format y '%%g'\nset ylabel 'hypervolume below the "
+                                      "reference HV_{ref} - HV (%s)'\n", gear ? "arcsec m/s²" : "-");
+            else if (pic == 0)
                 gd_plot_printf(&s, "set logscale y\nset format y '%%g'\nset ylabel 'best value minus the reference "
                                       "f - f_{ref} (%s)'\n", gear ? "arcsec" : "-");
             else
@@ -92,6 +102,10 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
                     gd_plot_printf(&s, "unset key\n");
                 if (pooled)
                     gd_plot_printf(&s, "set title 'all %d problems pooled'\n", C->n);
+                else if (pic == 0 && two)
+                    gd_plot_printf(&s, "set title '%s, d = %d: HV_{ref} = %.4g (%s)'\n", obj_words(q), q->dim,
+                                   q->hv_ref[0] * q->hv_ref[1] - r->f_ref,
+                                   r->f_ref_known ? "the true front" : "the best run");
                 else if (pic == 0)
                     gd_plot_printf(&s, "set title '%s, d = %d%s: f_{ref} = %.4g (%s)'\n", obj_words(q), q->dim,
                                       q->shift > 0 ? ", shifted" : "", r->f_ref, r->f_ref_known ? "the minimum" : "best found");

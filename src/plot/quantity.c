@@ -341,7 +341,8 @@ const char *gd_optimizer_words(int alg)
         const char *code, *words;
     } w[] = {{"alo", "ALO"}, {"gn_direct_l", "DIRECT-L"}, {"gn_crs2_lm", "CRS2-LM"}, {"gn_isres", "ISRES"},
              {"gn_esch", "ESCH"}, {"ln_bobyqa", "BOBYQA"}, {"ln_cobyla", "COBYLA"}, {"ln_sbplx", "Sbplx"},
-             {"random", "random search"}};
+             {"random", "random search"}, {"moalo", "MOALO"}, {"weighted-sum", "weighted sums"},
+             {"eps-constraint", "ε-constraints"}};
     for (size_t i = 0; n && i < sizeof w / sizeof w[0]; i++)
         if (strcmp(w[i].code, n) == 0)
             return w[i].words;

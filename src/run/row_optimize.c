@@ -10,6 +10,8 @@
 #include "geardyn/gd_geometry.h"
 #include "../optimisation/opt_internal.h"
 #include "../output/output_internal.h"
+#include "row_optimize_robust.h"
+#include "row_optimize_pareto.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -60,6 +62,8 @@ void gd_row_optimize_free(void *result)
     if (o->user_free)
         o->user_free(o->user);
     gd_opt_testfn_free(&o->tf);
+    row_robust_free(o->robust);
+    row_pareto_free(o->pareto);
     free(o);
 }
 
@@ -71,14 +75,14 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
                                gd_error *err)
 {
     gd_opt_gear_objective obj;
-    if (o->objective == GD_OBJ_GEAR_LTE_RANGE) {
+    if (o->objective == GD_OBJ_GEAR_LTE_RANGE || o->objective == GD_OBJ_GEAR_LTE) {
         gd_opt_lte_range *r = &o->lte_range;
         r->set = gd_ltca_settings_from_case(c);
         r->set.stop = stop;
-        r->n = c->n_opt_torques;
+        r->n = o->objective == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_torques; /* gear-lte: the case's torque */
         for (int k = 0; k < r->n; k++) {
-            r->torques_nm[k] = c->opt_torques_nm[k];
-            r->weights[k] = c->n_opt_torque_weights ? c->opt_torque_weights[k] : 1.0;
+            r->torques_nm[k] = o->objective == GD_OBJ_GEAR_LTE ? c->torque_nm : c->opt_torques_nm[k];
+            r->weights[k] = c->n_opt_torque_weights && o->objective != GD_OBJ_GEAR_LTE ? c->opt_torque_weights[k] : 1.0;
         }
         r->combine = c->opt_lte_range_combine;
         gd_opt_lte_range_objective(r, &obj);
@@ -93,7 +97,10 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
         o->user_free = dynobj_free;
         gd_dynobj_objective(d, &obj);
     }
-    return gd_opt_gear_set_objectives(gear, 1, &obj, NULL, err);
+    gd_opt_robust rb; /* optimize.robust */
+    gd_opt_case_robust(c, &rb);
+    gd_status st = gd_opt_gear_set_objectives(gear, 1, &obj, &rb, err);
+    return st == GD_OK ? row_robust_init(c, o, err) : st;
 }
 
 /* The objective (and its recorded numbers) of the unmodified flank, the case's own and the optimum. */
@@ -108,9 +115,11 @@ static gd_status objective_of_flanks(const gd_case *c, gd_optimize_outcome *o, g
         } else if (j == 2) {
             gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
         }
-        gd_status st = gd_opt_gear_value_of_pair(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j], err);
+        gd_status st = opt_gear_value_of_pair_samples(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j],
+                                                      o->robust ? o->robust->values[j] : NULL, err);
         if (st != GD_OK)
             return gd_error_prefix(err, "the %s flank", j == 0 ? "unmodified" : j == 1 ? "case's" : "optimum's");
+        row_robust_flank(o, j);
     }
     return GD_OK;
 }
@@ -136,7 +145,7 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
         double lower[GD_OPT_GEAR_NVARS], upper[GD_OPT_GEAR_NVARS];
         gd_opt_gear_bounds(c, &o->vars, lower, upper);
         st = gd_opt_gear_create(&pair, &set, &o->vars, lower, upper, gear, err);
-        if (st == GD_OK && o->objective != GD_OBJ_GEAR_LTE)
+        if (st == GD_OK && (o->objective != GD_OBJ_GEAR_LTE || c->opt_robust))
             st = set_objective(c, stop, o, *gear, err);
         if (st == GD_OK) {
             gd_opt_gear_problem(*gear, p);
@@ -292,6 +301,15 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
     gd_optimize_outcome *o = calloc(1, sizeof *o); /* about 80 kB: names and bounds of up to 1000 variables */
     if (!o)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory");
+    if (gd_opt_case_nobj(&c) == 2) { /* two objectives: their Pareto front (row_optimize_pareto.c) */
+        gd_status st = row_pareto_run(&c, env, o, err);
+        if (st != GD_OK) {
+            gd_row_optimize_free(o);
+            return st;
+        }
+        *result = o;
+        return GD_OK;
+    }
     gd_opt_problem p;
     const gd_stop_hook stop = gd_row_stop(env);
     gd_status st = setup_problem(&c, stop, o, &o->gear_problem, &o->tf, &p, err);
@@ -317,7 +335,7 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
         assess_optimum(&c, o);
     if (st == GD_OK && o->gear)
         st = compute_lte(&c, stop, o, err);
-    if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
+    if (st == GD_OK && o->gear && (o->objective != GD_OBJ_GEAR_LTE || o->robust))
         st = objective_of_flanks(&c, o, err);
     if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
         st = gd_row_optimize_post(&c, env, o, err);
@@ -337,9 +355,13 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
 gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     const gd_optimize_outcome *o = result;
+    if (o->pareto)
+        return gd_pareto_write(out, o, err);
     if (o->gear)
         gd_optimize_write_lte(out, o, err);
     gd_status st = gd_optimize_write_optimum(out, o, err);
+    if (st == GD_OK && o->robust)
+        st = gd_optimize_write_robust(out, c, o, err);
     if (st == GD_OK)
         st = gd_optimize_write_convergence(out, o, err);
     if (st == GD_OK && o->post)
@@ -351,6 +373,8 @@ gd_status gd_row_optimize_write(const gd_case *c, const void *result, gd_run_dir
 gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
     const gd_optimize_outcome *o = result;
+    if (o->pareto)
+        return gd_summary_write_pareto(out, c, o, err);
     const gd_opt_testfn *tf = &o->tf;
     const gd_opt_settings *s = &o->settings;
     int threads = o->threads;
@@ -382,11 +406,12 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
     sm.last_tenth_improvement = o->last_tenth_improvement;
     sm.converged = o->converged;
     sm.active_profile_mm = o->active_mm;
-    if (o->gear && o->objective != GD_OBJ_GEAR_LTE) {
-        sm.objective_unit = o->objective == GD_OBJ_GEAR_LTE_RANGE ? "arcsec"
+    if (o->gear && (o->objective != GD_OBJ_GEAR_LTE || o->robust)) {
+        sm.objective_unit = o->objective != GD_OBJ_GEAR_DYNAMIC ? "arcsec"
                             : c->opt_dynamic_response == GD_DYN_DTE_PP ? "um" : "m/s^2";
-        sm.ntorques = c->n_opt_torques;
-        sm.torques_nm = c->opt_torques_nm;
+        sm.ntorques = o->objective == GD_OBJ_GEAR_LTE ? 1 : c->n_opt_torques;
+        sm.torques_nm = o->objective == GD_OBJ_GEAR_LTE ? &c->torque_nm : c->opt_torques_nm;
+        sm.robust = o->robust;
         for (int j = 0; j < 3; j++) {
             sm.objective_of[j] = o->objective_of[j];
             sm.aux_of[j] = o->aux_of[j];
@@ -400,6 +425,10 @@ gd_status gd_row_optimize_summary(const gd_case *c, const void *result, gd_run_d
 void gd_row_optimize_pictures(const gd_case *c, const void *result, gd_run_dir *out, const gd_run_env *env)
 {
     const gd_plotter p = gd_row_plotter(env, out);
-    gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
-    gd_plot_optpost(&p, c, (const gd_optimize_outcome *)result);
+    if (((const gd_optimize_outcome *)result)->pareto) {
+        gd_plot_pareto(&p, c, (const gd_optimize_outcome *)result);
+    } else {
+        gd_plot_optimize(&p, c, (const gd_optimize_outcome *)result);
+        gd_plot_optpost(&p, c, (const gd_optimize_outcome *)result);
+    }
 }

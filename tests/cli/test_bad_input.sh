@@ -65,7 +65,7 @@ analysis = compare-optimizers
 [optimize]
 optimizers = alo, gn_direct, ln_bobyqa
 [operating]
-torque_nm = 500" "case.ini:4: optimize.optimizers: unknown optimiser 'gn_direct' \\(valid: alo, gn_direct_l, .*random\\)" "optimize: unknown optimiser"
+torque_nm = 500" "case.ini:4: optimize.optimizers: unknown optimiser 'gn_direct' \\(valid: alo, gn_direct_l, .*random, moalo, weighted-sum, eps-constraint\\)" "optimize: unknown optimiser"
 check_bad "[scene]
 analysis = optimize
 [optimize]

@@ -107,6 +107,9 @@ SHORTEN = [
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
+    # two objectives on the gear: 8 evaluations of 4 ants, coarse LTCA
+    ('cases/paper/pareto-lte-dynamic.ini', ['optimize.iterations=1', 'optimize.population=4',
+                                            'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     # the NASA Glenn spur pair: the sweep every 1000 rpm with 40 recorded periods; the continuation
     # without the sweep its case names in results/ (the variant nasa-overlay draws it over)
     ('cases/guide/nasa-grc-spur-sweep.ini', ['sweep.points=15', 'run.record_periods=40']),

@@ -31,6 +31,7 @@ CASES = [
                                       'solver.ltca_positions_per_cycle=6', 'solver.ltca_face_slices=5']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=100', 'optimize.objective=sphere,rastrigin']),
+    ('cases/optimize/pareto-zdt1.ini', ['optimize.iterations=5']),
     ('cases/accuracy/period1-7000rpm.ini', ['workprecision.families=rk4,erk4', 'workprecision.rtol_tightest=1e-5',
                                             'workprecision.rk4_steps_max=32', 'workprecision.order_steps_max=32',
                                             'workprecision.repeats=1', 'workprecision.horizon_periods=5',
