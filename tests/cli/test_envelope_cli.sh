@@ -160,6 +160,29 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < "$work/cusp-checks.txt"
 
+# convergence: every codimension-two point of the curve cases (the cusp, from both fold curves; the
+# curves of kahraman-singh-curves.ini locate none) moves by less than 1e-7 relative in both
+# parameters between solver.rtol 1e-9 and 1e-11 (atol 1e-12 and the case's newton_tol 1e-9)
+for r in 1e-9 1e-11; do
+    "$G" run "$CU" --out "$work/cusp-$r" --quiet --set output.plots=off --set solver.rtol=$r > "$work/cusp-$r.txt" 2>&1
+    ok $? "the cusp case runs at solver.rtol = $r"
+done
+python3 - "$work/cusp-1e-9/codim2.csv" "$work/cusp-1e-11/codim2.csv" "$out/codim2.csv" <<'PY' > "$work/conv.txt"
+import csv, sys
+a, b, ks = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+print(("PASS " if len(a) == len(b) == 2 else "FAIL ") + "the cusp from both fold curves at both tolerances (%d, %d rows)"
+      % (len(a), len(b)))
+for ra, rb in zip(a, b):
+    d = [abs(float(ra[k]) - float(rb[k])) / abs(float(rb[k])) for k in ("speed_rpm", "ste_amplitude_um")]
+    same = ra["kind"] == rb["kind"] and ra["curve"] == rb["curve"]
+    print(("PASS " if same and max(d) < 1e-7 else "FAIL ") + "curve %s's %s moves %.2g in Omega, %.2g in F_a (relative) "
+          "from rtol 1e-9 to 1e-11" % (rb["curve"], rb["kind"], d[0], d[1]))
+print(("PASS " if len(ks) == 0 else "FAIL ") + "kahraman-singh-curves.ini locates no codimension-two point (%d)" % len(ks))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/conv.txt"
+
 # refusals: exit 2, file:line and key named, nothing written
 refuse() { # key=value, pattern of the message[, another key=value]
     local o="$work/bad"
