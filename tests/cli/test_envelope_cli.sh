@@ -183,6 +183,44 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < "$work/conv.txt"
 
+# a fold curve ending on a grazing curve (grazing-fold, GF): Kahraman & Singh at F_a 0.5 (5 um), Omega
+# 0.3 to 0.6, F_a 0.3 to 0.6. The fold curve from the fold at 1223.63 rpm, followed down in F_a, runs
+# into the grazing curve from the contact change at 1560.51 rpm, whose fold test changes sign there:
+# codim2.csv locates the GF on the grazing curve, and the fold curve's last point (its corrector fails
+# at the grazing, where the fold orbit's contact events change) lies on it to 1e-5 relative in both
+# parameters (the two curves' intersection, by two independent continuations)
+"$G" run "$KS" --out "$work/gf" --quiet --set output.plots=off --set excitation.ste_amplitude_um=5 \
+    --set operating.speed_rpm=954.93 --set continuation.from=954.93 --set continuation.to=1909.86 \
+    --set continuation.parameter2_from=3 --set continuation.parameter2_to=6 --set continuation.curve_max_points=100 \
+    > "$work/gf.txt" 2>&1
+ok $? "the (Omega, F_a) plane at F_a 0.3 to 0.6 runs ($(head -c 300 "$work/gf.txt"))"
+python3 - "$work/gf" <<'PY' > "$work/gf-checks.txt"
+import csv, sys
+d = sys.argv[1]
+last = {}
+for r in csv.DictReader(open(d + "/curves.csv")):
+    last[r["curve"]] = r
+gf = [r for r in csv.DictReader(open(d + "/codim2.csv"))
+      if r["curve_kind"] == "grazing" and r["kind"] == "grazing-fold" and r["location"] == "located"]
+best = None
+for g in gf:
+    for c, r in last.items():
+        if r["kind"] != "fold":
+            continue
+        e = max(abs(float(r[k]) - float(g[k])) / abs(float(g[k])) for k in ("speed_rpm", "ste_amplitude_um"))
+        if best is None or e < best[0]:
+            best = (e, g, c, r)
+print(("PASS " if gf else "FAIL ") + "codim2.csv: %d grazing-fold points located on grazing curves" % len(gf))
+if best:
+    e, g, c, r = best
+    print(("PASS " if e < 1e-5 else "FAIL ") + "the GF of grazing curve %s at (%s rpm, %s um) is where fold curve %s ends "
+          "(%s rpm, %s um): %.2g relative" % (g["curve"], g["speed_rpm"], g["ste_amplitude_um"], c, r["speed_rpm"],
+                                              r["ste_amplitude_um"], e))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/gf-checks.txt"
+
 # refusals: exit 2, file:line and key named, nothing written
 refuse() { # key=value, pattern of the message[, another key=value]
     local o="$work/bad"
