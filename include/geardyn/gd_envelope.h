@@ -143,7 +143,9 @@ typedef enum gd_curve_end {
     GD_CEND_CLOSED = 3,      /* back at its first point: a closed curve */
     GD_CEND_CONTACT = 4,     /* the orbit's contact-event sequence would change (a grazing met) */
     GD_CEND_RESONANCE = 5,   /* Neimark-Sacker: the pair met on the real axis (1:1 or 1:2) */
-    GD_CEND_INVALID = 6      /* the model is not valid beyond (a key out of its range) */
+    GD_CEND_INVALID = 6,     /* the model is not valid beyond (a key out of its range) */
+    GD_CEND_INADMISSIBLE = 7 /* grazing: beyond, the orbit crosses the grazed boundary inside the touch's held
+                              * window (another extremum past it, or the touch from the wrong side) */
 } gd_curve_end;
 GD_API const char *gd_curve_end_name(int end);
 

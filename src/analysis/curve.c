@@ -54,8 +54,9 @@ GD_API const char *gd_codim2_label(int kind)
 
 GD_API const char *gd_curve_end_name(int end)
 {
-    static const char *names[] = {"bound", "budget", "step", "closed", "contact", "resonance", "invalid"};
-    return end >= 0 && end <= GD_CEND_INVALID ? names[end] : "?";
+    static const char *names[] = {"bound", "budget", "step", "closed", "contact", "resonance", "invalid",
+                                  "inadmissible"};
+    return end >= 0 && end <= GD_CEND_INADMISSIBLE ? names[end] : "?";
 }
 
 GD_API void gd_curve_free(gd_curve *cv)
@@ -104,6 +105,7 @@ typedef struct cpt {
     int seq_changed;
     int gaps_ok;
     gd_gap_extrema g;
+    double xddg;             /* grazing: the clearance coordinate's acceleration at the touch */
     double v[GD_MAX_STATE], wl[GD_MAX_STATE], X[GD_MAX_STATE * 2], Psi[GD_MAX_STATE * 2]; /* its null vectors */
 } cpt;
 
@@ -359,6 +361,7 @@ static gd_status fill_point(ccont *C, cpt *q, int iters, double ds, gd_error *er
     p->ds = ds;
     q->seq_changed = S->seq_changed;
     q->gaps_ok = 0;
+    q->xddg = S->kind == GD_CURVE_GRAZING ? S->xddg : NAN;
     memcpy(q->v, S->v, sizeof q->v);
     memcpy(q->wl, S->wl, sizeof q->wl);
     memcpy(q->X, S->X, sizeof q->X);
@@ -442,7 +445,35 @@ static int own_touch(const ccont *C, const gd_gap_extrema *g, int c, int i, doub
 
 /* ---- location ---- */
 
-enum { T_TEST = 0, T_MODULUS = 1, T_GAP = 2, T_SEQ = 3 };
+/* Admissibility of a grazing orbit. Inside the touch's held window no crossing of the grazed boundary
+ * is located (the held mode is continued), so there the orbit must stay on the held mode's side: its
+ * touch an extremum of the grazing's kind (x_c'' of the other sign than the kind), and no other
+ * extremum of that kind of the clearance coordinate beyond the boundary (by more than the state's
+ * tolerance). Outside the window every crossing of every clearance's boundary is an event, and a
+ * change of the events ends the curve (end `contact`). 1: admissible; *bad the extremum beyond
+ * (-1: none, the touch's curvature is wrong). The gaps of q must be known. */
+static int admissible(const ccont *C, const cpt *q, int *bad)
+{
+    const csys *S = C->S;
+    const int c = S->gclr;
+    const double phi = q->u[S->N + 2] - floor(q->u[S->N + 2]), bnd = S->gside ? -q->g.h[c] : q->g.h[c];
+    double worst = C->tol;
+    *bad = -1;
+    for (int i = 0; i < q->g.n[c]; i++) {
+        if (q->g.kind[c][i] != S->gkind || own_touch(C, &q->g, c, i, phi))
+            continue;
+        double d = fabs(q->g.t[c][i] - phi);
+        d -= floor(d);
+        if (fmin(d, 1.0 - d) > S->ghalf)
+            continue;
+        double past = S->gkind * (q->g.x[c][i] - bnd);
+        if (past > worst)
+            worst = past, *bad = i;
+    }
+    return *bad < 0 && S->gkind * q->xddg < 0;
+}
+
+enum { T_TEST = 0, T_MODULUS = 1, T_GAP = 2, T_SEQ = 3, T_ADMIT = 4 };
 typedef struct tfn {
     int type;
     int index;               /* T_TEST: the test's index; T_MODULUS: the order statistic */
@@ -472,6 +503,11 @@ static double value_at(locx *L, cpt *q, double ref_phase, double *phase)
         return cont_modulus_test(&q->pt.orbit, L->tf.index);
     case T_SEQ:
         return q->seq_changed ? -1.0 : 1.0;
+    case T_ADMIT: {
+        int bad;
+        L->st = point_gaps(L->C, q, L->err);
+        return L->st != GD_OK ? NAN : admissible(L->C, q, &bad) ? 1.0 : -1.0;
+    }
     default: {
         L->st = point_gaps(L->C, q, L->err);
         if (L->st != GD_OK)
@@ -639,7 +675,7 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
     double lo = 0.0, hi = ds1;
     gd_status st = L.st;
     if (st == GD_OK)
-        st = tf->type == T_SEQ ? bisect(&L, fa, &lo, &hi) : brent(&L, &lo, &hi);
+        st = tf->type == T_SEQ || tf->type == T_ADMIT ? bisect(&L, fa, &lo, &hi) : brent(&L, &lo, &hi);
     int where = GD_LOC_LOCATED;
     const int soft = st != GD_OK && st != GD_ERR_NOMEM && st != GD_ERR_INTERNAL && st != GD_ERR_INTERRUPTED;
     if (st != GD_OK && !soft) {
@@ -659,11 +695,13 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
     if (tf->type == T_SEQ) {
         where = where == GD_LOC_BRACKET ? where : GD_LOC_EVENTS;
         best = ilo; /* the last point with the curve's sequence */
+    } else if (tf->type == T_ADMIT) {
+        best = ilo; /* the last admissible point */
     } else if (tf->type == T_GAP) {
         /* a grazing ends the curve: its point is the end on the curve's side of the boundary */
         best = (L.f[ilo] > 0) == (fa > 0) ? ilo : ihi;
     }
-    if (where == GD_LOC_LOCATED && tf->type != T_SEQ) {
+    if (where == GD_LOC_LOCATED && tf->type != T_SEQ && tf->type != T_ADMIT) {
         double shrink = sqrt((hi - lo) / ds1);
         if (!(fabs(L.f[ilo]) + fabs(L.f[ihi]) <= shrink * (fabs(fa) + fabs(fb))))
             where = GD_LOC_JUMP;
@@ -732,6 +770,40 @@ static gd_status locate_contact(ccont *C, const cpt *a, cpt *b, double ds, gd_co
             if (a->pt.orbit.events[c] != b->pt.orbit.events[c])
                 c2->clearance = c;
     }
+    return GD_OK;
+}
+
+/* b, a point of a grazing curve, is not admissible (a is): where it stops being so, located into *q;
+ * *c2_ok set with *c2 the double grazing when another extremum of the grazing's kind, followed from a,
+ * crossed the boundary (located on its distance to it), else bisected on the admissibility itself (the
+ * touch's curvature turned: a degenerate grazing, no codimension-two point of codim2.csv's kinds). */
+static gd_status locate_inadmissible(ccont *C, const cpt *a, cpt *b, double ds, int bad, int *c2_ok, gd_codim2 *c2,
+                                     cpt *q, gd_error *err)
+{
+    const csys *S = C->S;
+    const int c = S->gclr;
+    tfn tf = {.type = T_ADMIT};
+    *c2_ok = 0;
+    if (bad >= 0) {
+        gap_ref r = {c, S->gkind, b->g.t[c][bad], S->gside ? -b->g.h[c] : b->g.h[c]};
+        double pa, va = cont_gap_value(&a->g, &r, &pa);
+        int own = 0;
+        for (int j = 0; j < a->g.n[c]; j++)
+            if (a->g.t[c][j] == pa && own_touch(C, &a->g, c, j, a->u[S->N + 2]))
+                own = 1;
+        if (isfinite(va) && S->gkind * va < 0 && !own) {
+            tf.type = T_GAP;
+            tf.gap = r;
+            tf.gap.phase = pa;
+            *c2_ok = 1;
+        }
+    }
+    gd_status st = locate(C, &tf, a, b, ds, c2, q, err);
+    if (st != GD_OK)
+        return st;
+    c2->kind = GD_C2_DOUBLE_GRAZING;
+    c2->clearance = c;
+    c2->ends_curve = 1;
     return GD_OK;
 }
 
@@ -990,6 +1062,30 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                      c2.clearance >= 0 ? " of " : "", c2.clearance >= 0 ? S->m.clear[c2.clearance].name : "",
                      gd_bif_location_name(c2.location));
             goto done;
+        }
+        if (S->kind == GD_CURVE_GRAZING) { /* admissible? (a, the last accepted point, is) */
+            int bad;
+            st = point_gaps(C, b, err);
+            if (st == GD_OK)
+                st = point_gaps(C, a, err);
+            if (st != GD_OK)
+                goto done;
+            if (!admissible(C, b, &bad)) {
+                gd_codim2 c2;
+                int c2_ok;
+                st = locate_inadmissible(C, a, b, sb, bad, &c2_ok, &c2, q, err);
+                if (st == GD_OK && c2_ok)
+                    st = push_c2(C->cv, &c2, err);
+                if (st == GD_OK)
+                    st = push_point(C->cv, &q->pt, err);
+                end_with(C->cv, GD_CEND_INADMISSIBLE, "the grazing orbit is not admissible beyond %s (%s, location "
+                         "%s): inside the touch's window it would cross the boundary of %s unseen; the curve ends "
+                         "there", at_text(C, q->u[N], q->u[N + 1]).s,
+                         c2_ok ? "another extremum reaches the boundary: double grazing"
+                               : "the touch's curvature turns: a degenerate grazing",
+                         gd_bif_location_name(c2.location), S->m.clear[S->gclr].name);
+                goto done;
+            }
         }
         int res_end = 0;
         st = detect(C, a, b, sb, &res_end, q, err);

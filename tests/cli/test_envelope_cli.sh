@@ -160,6 +160,67 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < "$work/cusp-checks.txt"
 
+# convergence: every codimension-two point of the curve cases (the cusp, from both fold curves; the
+# curves of kahraman-singh-curves.ini locate none) moves by less than 1e-7 relative in both
+# parameters between solver.rtol 1e-9 and 1e-11 (atol 1e-12 and the case's newton_tol 1e-9)
+for r in 1e-9 1e-11; do
+    "$G" run "$CU" --out "$work/cusp-$r" --quiet --set output.plots=off --set solver.rtol=$r > "$work/cusp-$r.txt" 2>&1
+    ok $? "the cusp case runs at solver.rtol = $r"
+done
+python3 - "$work/cusp-1e-9/codim2.csv" "$work/cusp-1e-11/codim2.csv" "$out/codim2.csv" <<'PY' > "$work/conv.txt"
+import csv, sys
+a, b, ks = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+print(("PASS " if len(a) == len(b) == 2 else "FAIL ") + "the cusp from both fold curves at both tolerances (%d, %d rows)"
+      % (len(a), len(b)))
+for ra, rb in zip(a, b):
+    d = [abs(float(ra[k]) - float(rb[k])) / abs(float(rb[k])) for k in ("speed_rpm", "ste_amplitude_um")]
+    same = ra["kind"] == rb["kind"] and ra["curve"] == rb["curve"]
+    print(("PASS " if same and max(d) < 1e-7 else "FAIL ") + "curve %s's %s moves %.2g in Omega, %.2g in F_a (relative) "
+          "from rtol 1e-9 to 1e-11" % (rb["curve"], rb["kind"], d[0], d[1]))
+print(("PASS " if len(ks) == 0 else "FAIL ") + "kahraman-singh-curves.ini locates no codimension-two point (%d)" % len(ks))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/conv.txt"
+
+# a fold curve ending on a grazing curve (grazing-fold, GF): Kahraman & Singh at F_a 0.5 (5 um), Omega
+# 0.3 to 0.6, F_a 0.3 to 0.6. The fold curve from the fold at 1223.63 rpm, followed down in F_a, runs
+# into the grazing curve from the contact change at 1560.51 rpm, whose fold test changes sign there:
+# codim2.csv locates the GF on the grazing curve, and the fold curve's last point (its corrector fails
+# at the grazing, where the fold orbit's contact events change) lies on it to 1e-5 relative in both
+# parameters (the two curves' intersection, by two independent continuations)
+"$G" run "$KS" --out "$work/gf" --quiet --set output.plots=off --set excitation.ste_amplitude_um=5 \
+    --set operating.speed_rpm=954.93 --set continuation.from=954.93 --set continuation.to=1909.86 \
+    --set continuation.parameter2_from=3 --set continuation.parameter2_to=6 --set continuation.curve_max_points=100 \
+    > "$work/gf.txt" 2>&1
+ok $? "the (Omega, F_a) plane at F_a 0.3 to 0.6 runs ($(head -c 300 "$work/gf.txt"))"
+python3 - "$work/gf" <<'PY' > "$work/gf-checks.txt"
+import csv, sys
+d = sys.argv[1]
+last = {}
+for r in csv.DictReader(open(d + "/curves.csv")):
+    last[r["curve"]] = r
+gf = [r for r in csv.DictReader(open(d + "/codim2.csv"))
+      if r["curve_kind"] == "grazing" and r["kind"] == "grazing-fold" and r["location"] == "located"]
+best = None
+for g in gf:
+    for c, r in last.items():
+        if r["kind"] != "fold":
+            continue
+        e = max(abs(float(r[k]) - float(g[k])) / abs(float(g[k])) for k in ("speed_rpm", "ste_amplitude_um"))
+        if best is None or e < best[0]:
+            best = (e, g, c, r)
+print(("PASS " if gf else "FAIL ") + "codim2.csv: %d grazing-fold points located on grazing curves" % len(gf))
+if best:
+    e, g, c, r = best
+    print(("PASS " if e < 1e-5 else "FAIL ") + "the GF of grazing curve %s at (%s rpm, %s um) is where fold curve %s ends "
+          "(%s rpm, %s um): %.2g relative" % (g["curve"], g["speed_rpm"], g["ste_amplitude_um"], c, r["speed_rpm"],
+                                              r["ste_amplitude_um"], e))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/gf-checks.txt"
+
 # refusals: exit 2, file:line and key named, nothing written
 refuse() { # key=value, pattern of the message[, another key=value]
     local o="$work/bad"
