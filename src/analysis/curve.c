@@ -294,22 +294,6 @@ static gd_status tangent(ccont *C, const double *v, double *t, gd_error *err)
     return GD_OK;
 }
 
-/* det(M - I) as its sign times the smallest |mu - 1| (cont_pd_test's form for +1) */
-static double fold_test(const gd_po *po)
-{
-    double re = 1.0, im = 0.0, mmin = INFINITY;
-    for (int i = 0; i < po->n; i++) {
-        double a = po->mu_re[i] - 1.0, b = po->mu_im[i], m = hypot(a, b);
-        if (m == 0)
-            return 0.0;
-        double r2 = (re * a - im * b) / m;
-        im = (re * b + im * a) / m;
-        re = r2;
-        mmin = fmin(mmin, m);
-    }
-    return re > 0 ? mmin : -mmin;
-}
-
 /* What a point carries, from the last evaluation at q->u (with its Jacobian): the orbit, its
  * multipliers, the test functions. */
 static gd_status fill_point(ccont *C, cpt *q, int iters, double ds, gd_error *err)
@@ -342,7 +326,7 @@ static gd_status fill_point(ccont *C, cpt *q, int iters, double ds, gd_error *er
     if (S->kind == GD_CURVE_FOLD)
         p->test[GD_CT_CUSP] = S->cusp;
     if (S->kind != GD_CURVE_FOLD)
-        p->test[GD_CT_FOLD] = fold_test(o);
+        p->test[GD_CT_FOLD] = cont_det_test(o, 1.0);
     if (S->kind != GD_CURVE_PERIOD_DOUBLING)
         p->test[GD_CT_PD] = cont_pd_test(o);
     if (S->kind == GD_CURVE_NEIMARK_SACKER) {
