@@ -87,6 +87,9 @@ typedef struct gd_run_env {
     gd_draw_fn draw;
     /* the run's notes (gd_output.h: gd_note_fn): no pictures and why, pictures not drawn and why */
     gd_note_fn note;
+    /* optimize: after every evaluation recorded, those done of all its runs' budgets (a stop goes
+     * through the run's stop hook) */
+    void (*optimize_progress)(void *user, long done, long total);
 } gd_run_env;
 
 typedef struct gd_analysis_type {

@@ -58,6 +58,7 @@ typedef struct cli_progress {
     long last_pct;
     const cli_case_args *args;
     char note[GD_ERROR_MSG_MAX]; /* for the end of the run: why there are no pictures ("": none) */
+    double t0, last;             /* optimize: the first evaluation's time and the last line's (monotonic s) */
 } cli_progress;
 
 /* The command line's part of an analysis of the library's table: what it prints before the run
@@ -96,6 +97,8 @@ void cli_workprec_after_run(const cli_progress *p, gd_status st);
 void cli_workprec_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 
 void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r);
+void cli_optimize_progress(void *user, long done, long total);
+void cli_optimize_after_run(const cli_progress *p, gd_status st);
 void cli_optimize_report(const cli_case_args *a, const char *dir, const gd_case *c, const void *result);
 /* after an optimisation over load and speed: bta, the ranking, the Harris map's least (run_optpost.c) */
 void cli_optpost_report(const gd_case *c, const gd_optimize_outcome *o);

@@ -13,7 +13,7 @@ static const cli_row rows[] = {
     { GD_ANALYSIS_SWEEP, NULL, NULL, NULL, run_sweep },
     { GD_ANALYSIS_TCA, NULL, NULL, cli_tca_report, NULL },
     { GD_ANALYSIS_LTCA, NULL, NULL, cli_ltca_report, NULL },
-    { GD_ANALYSIS_OPTIMIZE, NULL, NULL, cli_optimize_report, NULL },
+    { GD_ANALYSIS_OPTIMIZE, NULL, cli_optimize_after_run, cli_optimize_report, NULL },
     { GD_ANALYSIS_COMPARE_OPTIMIZERS, NULL, NULL, cli_compare_report, NULL },
     { GD_ANALYSIS_WORK_PRECISION, cli_workprec_announce, cli_workprec_after_run, cli_workprec_report, NULL },
     { GD_ANALYSIS_CONTINUATION, NULL, NULL, cli_continuation_report, NULL },
@@ -67,7 +67,7 @@ void cli_publish_note(const cli_case_args *a, const gd_run_dir *out)
 
 void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
 {
-    *p = (cli_progress){a->quiet, !a->quiet && isatty(2), -1, a, ""};
+    *p = (cli_progress){a->quiet, !a->quiet && isatty(2), -1, a, "", 0, 0};
     memset(env, 0, sizeof *env);
     env->user = p;
     env->threads = a->threads;
@@ -76,6 +76,7 @@ void cli_run_env(cli_progress *p, const cli_case_args *a, gd_run_env *env)
     env->workprec.start = cli_workprec_start;
     env->workprec.done = cli_workprec_done;
     env->optimize_run = cli_optimize_run;
+    env->optimize_progress = cli_optimize_progress;
     env->compare_problem = cli_compare_problem;
     env->continuation_branch = cli_continuation_progress;
     env->draw = cli_gnuplot_drawer;

@@ -6,10 +6,56 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+
+static double now(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+/* On a terminal: the evaluations done of all the runs' budgets, their rate and the time left at that
+ * rate, at most four times a second (the objective's evaluations dominate an optimisation: what
+ * follows them, the flanks' LTE and for an objective over load and speed their report, is not
+ * counted). */
+void cli_optimize_progress(void *user, long done, long total)
+{
+    cli_progress *o = user;
+    if (!o->tty)
+        return;
+    double t = now();
+    if (o->t0 == 0) {
+        o->t0 = t;
+        o->last = t;
+    }
+    if (done < total && t - o->last < 0.25)
+        return;
+    o->last = t;
+    double el = t - o->t0, rate = el > 0 ? (double)done / el : 0;
+    char eta[64] = "";
+    if (done < total && rate > 0) {
+        double sec = (double)(total - done) / rate;
+        snprintf(eta, sizeof eta, sec < 90 ? ", about %.0f s left" : sec < 5400 ? ", about %.0f min left"
+                                                                                 : ", about %.1f h left",
+                 sec < 90 ? sec : sec < 5400 ? sec / 60 : sec / 3600);
+    }
+    fprintf(stderr, "\rgeardyn: optimize %ld/%ld evaluations (%ld%%), %.3g per s%s   %s", done, total,
+            total ? done * 100 / total : 100, rate, eta, done == total ? "\n" : "");
+    fflush(stderr);
+}
+
+void cli_optimize_after_run(const cli_progress *p, gd_status st)
+{
+    if (p->tty && st != GD_OK && p->t0 != 0)
+        fputc('\n', stderr);
+}
 
 void cli_optimize_run(void *user, int run, int runs, unsigned long seed, const gd_opt_result *r)
 {
     const cli_progress *o = user;
+    if (o->tty && !o->quiet && runs > 1 && run + 1 < runs) /* the run's line below the progress line */
+        fputc('\n', stderr);
     if (!o->quiet && runs > 1 && r->nobj == 2)
         printf("  run %d (seed %lu): %d non-dominated points, hypervolume %.8g after %ld evaluations, %.1f s\n",
                run + 1, seed, r->nfront, r->hv, r->evaluations, r->wall_s);

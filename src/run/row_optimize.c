@@ -183,14 +183,37 @@ static gd_status setup_problem(const gd_case *c, gd_stop_hook stop, gd_optimize_
 
 /* The runs, each from its own seed; the best kept in o->best, each run's best in run_f, their
  * wall time summed in *wall. */
+/* The evaluations of all the runs for the caller's progress (gd_run_env.optimize_progress): run r
+ * of runs, each of budget evaluations. */
+typedef struct opt_progress {
+    const gd_run_env *env;
+    long run, runs, budget;
+} opt_progress;
+
+static void on_evaluation(void *user, long evaluations, long budget)
+{
+    const opt_progress *q = user;
+    (void)budget;
+    q->env->optimize_progress(q->env->user, q->run * q->budget + evaluations, q->runs * q->budget);
+}
+
 static gd_status run_all(const gd_run_env *env, const gd_case *c, const gd_opt_problem *p, gd_opt_settings *s,
                          gd_optimize_outcome *o, double *run_f, double *wall, gd_error *err)
 {
+    opt_progress q = {env, 0, o->runs, s->budget};
+    if (env && env->optimize_progress) {
+        s->progress = on_evaluation;
+        s->progress_user = &q;
+    }
     for (int r = 0; r < o->runs; r++) {
+        q.run = r;
         s->seed = gd_opt_run_seed(c, r);
         gd_status st = gd_opt_run(p, s, &o->res[r], err);
-        if (st != GD_OK)
+        if (st != GD_OK) {
+            s->progress = NULL;
+            s->progress_user = NULL;
             return st;
+        }
         run_f[r] = o->res[r].f;
         *wall += o->res[r].wall_s;
         if (o->res[r].f < o->res[o->best].f)
@@ -198,6 +221,8 @@ static gd_status run_all(const gd_run_env *env, const gd_case *c, const gd_opt_p
         if (env && env->optimize_run)
             env->optimize_run(env->user, r, o->runs, s->seed, &o->res[r]);
     }
+    s->progress = NULL; /* q is this function's */
+    s->progress_user = NULL;
     return GD_OK;
 }
 

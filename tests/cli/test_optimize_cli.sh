@@ -364,5 +364,22 @@ cmp -s "$out/response_over_speed.csv" "$out-2/response_over_speed.csv" &&
 cmp -s "$out/lte_over_torque.csv" "$out-2/lte_over_torque.csv"
 ok $? "gear-dynamic: response_over_speed.csv and lte_over_torque.csv the same with 1 and 2 threads"
 
+# progress on a terminal (script(1) gives the run one): the evaluations of all the runs with the time left,
+# ending at the whole budget; none when stderr is not a terminal
+if command -v script > /dev/null; then
+    script -qec "\"$G\" run \"$SRC/cases/paper/optimize-alo.ini\" --out \"$work/tty\" --set optimize.iterations=3 \
+        --set optimize.population=10 --set optimize.runs=2 --set solver.ltca_positions_per_cycle=8 \
+        --set solver.ltca_face_slices=7 --set output.plots=off" /dev/null < /dev/null | tr '\r' '\n' > "$work/tty.txt"
+    grep -q "^geardyn: optimize [0-9]*/80 evaluations ([0-9]*%), .* per s, about [0-9]* s left" "$work/tty.txt" &&
+        grep -q "^geardyn: optimize 80/80 evaluations (100%)" "$work/tty.txt" &&
+        "$G" run "$SRC/cases/paper/optimize-alo.ini" --out "$work/notty" --set optimize.iterations=3 \
+            --set optimize.population=10 --set solver.ltca_positions_per_cycle=8 --set solver.ltca_face_slices=7 \
+            --set output.plots=off > /dev/null 2> "$work/notty.txt" &&
+        ! grep -q "evaluations (" "$work/notty.txt"
+    ok $? "progress on a terminal: evaluations of both runs with the time left, to 80/80"
+else
+    ok 0 "# SKIP script(1) is not installed"
+fi
+
 echo "1..$n"
 [ $bad -eq 0 ]
