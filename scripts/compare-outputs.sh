@@ -78,7 +78,8 @@ SHORTEN=(
 )
 
 # Allowed to differ. JSON keys (any depth): geardyn_version; wall_s (solver/optimiser/LTCA/TCA/
-# work-precision wall times), cpu_s and us_per_period (work-precision cost), wall_mean_s and
+# work-precision wall times), cpu_s and us_per_period (work-precision cost; cpu_s and cpu_s_in_loop
+# also the flanks' CPU an optimisation over load and speed reports after it), wall_mean_s and
 # wall_total_s (optimiser comparison), curve_cpu_s (the continuation's curves in two parameters); and `cheapest` of work-precision's cheapest_at_target[],
 # the label of the run with the least measured CPU time among those meeting an error target: it
 # is chosen by timing and changes between two runs of the same binary (its target, cpu_s and
