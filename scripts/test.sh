@@ -6,7 +6,7 @@
 # (scripts/compare-outputs.sh), build without MPI with ASan+UBSan and run the suites of the
 # library and the command line there (and the Python module's run of every analysis), build the
 # libFuzzer harnesses with clang and fuzz each for a minute (scripts/fuzz.sh), and end with the line
-# "N passed, N failed". On two cores it takes about 25 minutes (CI's budget is 30).
+# "N passed, N failed". On two cores it takes about 27 minutes (CI's budget is 30).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/deps.sh || { echo "0 passed, 1 failed"; exit 1; }
@@ -39,7 +39,12 @@ build_and_test() { # dir, meson options...
     if [ -d "$dir/meson-info" ]; then meson setup --reconfigure "$dir" "$@" >/dev/null
     else meson setup "$dir" "$@" >/dev/null; fi || { echo "meson setup $dir failed"; failed=$((failed + 1)); return 1; }
     ninja -C "$dir" || { echo "build $dir failed"; failed=$((failed + 1)); return 1; }
-    meson test -C "$dir" --print-errorlogs --num-processes "$jobs" "${TEST_ARGS[@]}"
+    local names=() # EXCLUDE: a regex of test names left out of the suites TEST_ARGS selects
+    if [ -n "${EXCLUDE:-}" ]; then
+        mapfile -t names < <(meson test -C "$dir" --list "${TEST_ARGS[@]}" 2>/dev/null | sed -n 's/^.* \/ //p' |
+            grep -vxE "$EXCLUDE")
+    fi
+    meson test -C "$dir" --print-errorlogs --num-processes "$jobs" "${TEST_ARGS[@]}" "${names[@]}"
     count_log "$dir"
 }
 
@@ -75,15 +80,17 @@ fi
 
 echo "== build without MPI, with ASan+UBSan, and run the suites of the library and the command line"
 echo "   again, and the Python module's run of every analysis (the other Python tests, the guide and"
-echo "   the examples call the same library functions as these)"
+echo "   the examples call the same library functions as these). Left out there: faults, publish and"
+echo "   dynamic_objective, 8 minutes under the sanitizers, whose library code optimize_cli, run and guards run"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 TEST_ARGS=(--timeout-multiplier 4 --no-suite python --no-suite docs --no-suite examples)
+EXCLUDE='faults|publish|dynamic_objective'
 if build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
         -Dwerror=true -Dmpi=disabled; then
     meson test -C build-asan --print-errorlogs --timeout-multiplier 4 python_runs
     count_log build-asan
 fi
-unset ASAN_OPTIONS UBSAN_OPTIONS
+unset ASAN_OPTIONS UBSAN_OPTIONS EXCLUDE
 
 echo "== fuzzing (clang, libFuzzer + ASan + UBSan): replay each harness's corpus, then fuzz it for 60 s"
 echo "   (scripts/fuzz.sh; a crash leaves its input in build-fuzz/fuzz-artifacts/)"
