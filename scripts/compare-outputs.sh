@@ -58,6 +58,10 @@ SHORTEN=(
   # optimiser comparison on the gear (9 optimisers x 10 runs x 400 LTCA): 2 runs x 40, coarse LTCA.
   'cases/paper/compare-optimizers.ini'
   'optimize.runs=2 optimize.budget_evals=40 optimize.population=10 solver.ltca_positions_per_cycle=8 solver.ltca_face_slices=7'
+  # two-objective optimisers on the gear (4 optimisers x 5 runs x 120 evaluations of an LTCA and a
+  # continuation over 3000-5500 rpm): 2 runs x 8, 2 subproblems, coarse LTCA.
+  'cases/paper/compare-two-objectives-gear.ini'
+  'optimize.runs=2 optimize.budget_evals=8 optimize.population=4 optimize.scalar_grid=2 solver.ltca_positions_per_cycle=8 solver.ltca_face_slices=7'
   # optimiser comparison on the test functions (5 functions x d = 6, 10; 15 runs x 10000): all
   # five functions at d = 6 only, 2 runs x 500. Its two gnuplot pictures cost about the square
   # of the number of problems (each panel rereads the whole CSV per optimiser): 29 s with 10

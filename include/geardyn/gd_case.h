@@ -202,6 +202,8 @@ typedef struct gd_case {
     double opt_speed_from_rpm, opt_speed_to_rpm, opt_dynamic_sweep_step_rpm;
     int opt_dynamic_response; /* gd_dyn_measure */
     int opt_dynamic_model;    /* gd_model_kind of the dynamics in the loop */
+    double opt_harris_from_nm, opt_harris_to_nm; /* the Harris map after the optimum: its torque grid */
+    int opt_harris_torques;
     int opt_robust, opt_robust_samples; /* the robust variant of the gear objectives */
     double opt_robust_quantile, opt_robust_tilt_arcmin, opt_robust_centre_distance_mm;
     double opt_robust_amount_um, opt_robust_length_mm;

@@ -23,9 +23,9 @@ extern "C" {
 
 /* The flanks compared: unmodified, the case's own modification, the optimum. */
 #define GD_OPTPOST_NFLANKS 3
-/* The Harris map's grid: GD_OPTPOST_HARRIS_GRID torques evenly from a tenth to 1.5 times the
- * largest torque of the objective, and the objective's own torques. */
-#define GD_OPTPOST_HARRIS_GRID 20
+/* The Harris map's grid: optimize.harris_torques (at most GD_OPTPOST_HARRIS_GRID) torques evenly
+ * from optimize.harris_torque_from_nm to harris_torque_to_nm, and the objective's own torques. */
+#define GD_OPTPOST_HARRIS_GRID 100
 #define GD_OPTPOST_MAX_HARRIS (GD_OPTPOST_HARRIS_GRID + GD_OPT_MAX_TORQUES)
 
 GD_API const char *gd_optpost_flank_name(int j); /* "unmodified", "case", "optimum" */

@@ -30,16 +30,15 @@ GD_API void gd_optpost_free(gd_optpost *p)
     memset(p, 0, sizeof *p);
 }
 
-/* The grid of the Harris map: GD_OPTPOST_HARRIS_GRID torques from 0.1 to 1.5 times the largest of
- * the objective's, and the objective's own (marked), increasing, without repeats. */
+/* The grid of the Harris map: optimize.harris_torques torques from harris_torque_from_nm to
+ * harris_torque_to_nm, and the objective's own (marked), increasing, without repeats. */
 static void harris_grid(const gd_case *c, gd_optpost *p)
 {
-    double tmax = 0;
-    for (int k = 0; k < c->n_opt_torques; k++)
-        tmax = fmax(tmax, c->opt_torques_nm[k]);
+    const int m = c->opt_harris_torques < 2 ? 2 : c->opt_harris_torques > GD_OPTPOST_HARRIS_GRID
+                                                  ? GD_OPTPOST_HARRIS_GRID : c->opt_harris_torques;
     int n = 0;
-    for (int i = 0; i < GD_OPTPOST_HARRIS_GRID; i++) {
-        p->harris_torque_nm[n] = tmax * (0.1 + 1.4 * i / (GD_OPTPOST_HARRIS_GRID - 1));
+    for (int i = 0; i < m; i++) {
+        p->harris_torque_nm[n] = c->opt_harris_from_nm + (c->opt_harris_to_nm - c->opt_harris_from_nm) * i / (m - 1);
         p->harris_objective[n++] = 0;
     }
     for (int k = 0; k < c->n_opt_torques; k++) {
@@ -52,7 +51,7 @@ static void harris_grid(const gd_case *c, gd_optpost *p)
             p->harris_objective[n++] = 1;
         }
     }
-    for (int i = 1; i < n; i++) /* insertion sort: at most 28 */
+    for (int i = 1; i < n; i++) /* insertion sort: at most 108 */
         for (int j = i; j > 0 && p->harris_torque_nm[j] < p->harris_torque_nm[j - 1]; j--) {
             double t = p->harris_torque_nm[j];
             int o = p->harris_objective[j];

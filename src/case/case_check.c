@@ -33,6 +33,26 @@ static int known_table(const char *list, const char *name)
     return strstr(list, key) != NULL;
 }
 
+/* Whether the comma-separated list names name (items trimmed of blanks). */
+static int listed(const char *list, const char *name)
+{
+    size_t n = strlen(name);
+    for (const char *p = list; *p;) {
+        while (*p == ' ' || *p == '\t' || *p == ',')
+            p++;
+        const char *e = p;
+        while (*e && *e != ',')
+            e++;
+        const char *f = e;
+        while (f > p && (f[-1] == ' ' || f[-1] == '\t'))
+            f--;
+        if ((size_t)(f - p) == n && strncmp(p, name, n) == 0)
+            return 1;
+        p = e;
+    }
+    return 0;
+}
+
 /* The analyses that integrate the dynamics need the speed and the load; those of the loaded
  * contact (LTCA, the optimisation of the gear's LTE) the load only; TCA and the test functions
  * neither. */
@@ -296,13 +316,22 @@ GD_API const char *gd_case_key_unused(const gd_case *c, size_t i, int *absent)
                      IS("optimize", "speed_to_rpm") || IS("optimize", "dynamic_response") ||
                      IS("optimize", "dynamic_model") || IS("optimize", "dynamic_sweep_step_rpm")))
             return "ignored: only optimize.objective = gear-dynamic uses it";
+        if ((c->opt_objective2[0] || (!dyn && !range)) && strncmp(k->key, "harris_", 7) == 0)
+            return "ignored: only optimize.objective = gear-lte-range or gear-dynamic, with one objective, draws the "
+                   "Harris map";
         if (!c->opt_robust && strncmp(k->key, "robust_", 7) == 0)
             return "ignored: optimize.robust = off";
-        if (c->opt_algorithm != 9 && IS("optimize", "archive")) /* GD_OPT_MOALO */
-            return "ignored: only optimize.algorithm = moalo uses it";
-        if (c->opt_algorithm != 10 && c->opt_algorithm != 11 && /* weighted-sum, eps-constraint */
-            (IS("optimize", "scalar_algorithm") || IS("optimize", "scalar_grid")))
-            return "ignored: only optimize.algorithm = weighted-sum or eps-constraint uses it";
+        /* MOALO and the scalarisations: optimize's algorithm, or one of compare-optimizers' list */
+        int compare = c->analysis == GD_ANALYSIS_COMPARE_OPTIMIZERS;
+        int moalo = compare ? listed(c->opt_optimizers, "moalo") : c->opt_algorithm == 9; /* GD_OPT_MOALO */
+        int scalar = compare ? listed(c->opt_optimizers, "weighted-sum") || listed(c->opt_optimizers, "eps-constraint")
+                             : c->opt_algorithm == 10 || c->opt_algorithm == 11;
+        if (!moalo && IS("optimize", "archive"))
+            return compare ? "ignored: only optimize.optimizers with moalo uses it"
+                           : "ignored: only optimize.algorithm = moalo uses it";
+        if (!scalar && (IS("optimize", "scalar_algorithm") || IS("optimize", "scalar_grid")))
+            return compare ? "ignored: only optimize.optimizers with weighted-sum or eps-constraint uses it"
+                           : "ignored: only optimize.algorithm = weighted-sum or eps-constraint uses it";
     }
 #undef IS
     return NULL;

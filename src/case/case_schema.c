@@ -533,6 +533,16 @@ static const gd_keyspec schema[] = {
     D("optimize", "dynamic_sweep_step_rpm", "rpm", opt_dynamic_sweep_step_rpm, 0, 100000, 1, 0, NAN,
       "gear-dynamic: the spacing of the short sweep where the period-1 orbit is unstable or lost (derived: a "
       "fiftieth of the speed range); its points run run.transient_periods and run.record_periods"),
+    D("optimize", "harris_torque_from_nm", "N m", opt_harris_from_nm, 0, 1e7, 1, 0, NAN,
+      "gear-lte-range, gear-dynamic: the least torque of the Harris map (the LTE amplitude over torque of the "
+      "unmodified flank, the case's own and the optimum) after the optimum (derived: a tenth of the largest of "
+      "torques_nm)"),
+    D("optimize", "harris_torque_to_nm", "N m", opt_harris_to_nm, 0, 1e7, 1, 0, NAN,
+      "gear-lte-range, gear-dynamic: the largest torque of the Harris map, above harris_torque_from_nm (derived: "
+      "1.5 times the largest of torques_nm)"),
+    I("optimize", "harris_torques", opt_harris_torques, 2, 100, 20,
+      "gear-lte-range, gear-dynamic: the torques of the Harris map, evenly spaced from harris_torque_from_nm to "
+      "harris_torque_to_nm (the objective's own torques are added)"),
     B("optimize", "robust", opt_robust, 0,
       "gear objectives: the robust variant, the robust_quantile of the objective over a Monte Carlo sample of "
       "misalignment and manufacturing deviations of the design variables (drawn from optimize.seed, the same for "

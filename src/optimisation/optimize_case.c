@@ -340,6 +340,21 @@ static gd_status resolve_load_speed(gd_case *c, const gd_pair *pair, int objecti
             return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.torque_weights: the weights sum to %g (valid: >= 0 "
                                 "each, a positive sum)", w, sum);
     }
+    double tmax = 0; /* the Harris map after the optimum */
+    for (int k = 0; k < c->n_opt_torques; k++)
+        tmax = fmax(tmax, c->opt_torques_nm[k]);
+    if (!isfinite(c->opt_harris_from_nm))
+        gd_case_key_derive(c, "optimize", "harris_torque_from_nm", &c->opt_harris_from_nm, 0.1 * tmax);
+    if (!isfinite(c->opt_harris_to_nm))
+        gd_case_key_derive(c, "optimize", "harris_torque_to_nm", &c->opt_harris_to_nm, 1.5 * tmax);
+    if (!(c->opt_harris_from_nm > 0 && c->opt_harris_from_nm < c->opt_harris_to_nm)) {
+        const char *k = gd_case_key_given(c, "optimize", "harris_torque_to_nm") ? "harris_torque_to_nm"
+                                                                                 : "harris_torque_from_nm";
+        gd_case_key_where(c, "optimize", k, w, sizeof w);
+        return gd_error_set(err, GD_ERR_INPUT, "%s: optimize.%s: the Harris map's torques %g to %g N m (valid: 0 < "
+                            "harris_torque_from_nm < harris_torque_to_nm)", w, k, c->opt_harris_from_nm,
+                            c->opt_harris_to_nm);
+    }
     if (objective != GD_OBJ_GEAR_DYNAMIC)
         return GD_OK;
     if (c->stiffness != GD_STIFF_LTCA) {

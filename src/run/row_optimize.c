@@ -18,19 +18,28 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A case for the optimum's own LTCA / TCA outputs: the optimum as its [modification], marked derived. */
-static gd_status optimum_case(const gd_case *c, const gd_opt_gear_vars *v, const double *x, int analysis,
-                              gd_case *out, gd_error *err)
+/* A case for a flank's own LTCA / TCA outputs: the flank j (gd_row_optimize_flank) as its
+ * [modification]; the unmodified flank's keys and the optimum's variables marked derived. */
+static gd_status flank_case(const gd_case *c, const gd_optimize_outcome *o, int j, int analysis, gd_case *out,
+                            gd_error *err)
 {
     gd_status st = gd_case_copy(out, c, err);
     if (st != GD_OK)
         return st;
-    gd_pair pair = gd_pair_from_case(out);
-    gd_opt_gear_apply(v, &pair, x);
+    const gd_pair pair = gd_row_optimize_flank(c, o, j);
     gd_pair_modification_to_case(&pair, out);
     out->analysis = analysis;
     size_t n;
     const gd_keyspec *s = gd_case_schema(&n);
+    static const char *const all[] = {"root_relief_amount_um", "root_relief_length_mm", "tip_relief_amount_um",
+                                      "tip_relief_length_mm", "lead_relief_inner_um", "lead_relief_outer_um",
+                                      "lead_unmodified_length_mm", "lead_unmodified_centre_mm", "helix_slope_um"};
+    if (j == 0)
+        for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+            out->src[gd_case_find_key("modification", all[k]) - s] = GD_SRC_DERIVED;
+    if (j != 2)
+        return GD_OK;
+    const gd_opt_gear_vars *v = &o->vars;
     for (int k = 0; k < v->n; k++)
         out->src[gd_case_find_key("modification", gd_opt_gear_variable(v->var[k], NULL, NULL)) - s] = GD_SRC_DERIVED;
     if (v->n > 0) { /* y6 follows y5 when only y5 is a variable */
@@ -107,14 +116,7 @@ static gd_status set_objective(const gd_case *c, gd_stop_hook stop, gd_optimize_
 static gd_status objective_of_flanks(const gd_case *c, gd_optimize_outcome *o, gd_error *err)
 {
     for (int j = 0; j < 3; j++) {
-        gd_pair t = gd_pair_from_case(c);
-        if (j == 0) {
-            t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
-            t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
-            t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
-        } else if (j == 2) {
-            gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
-        }
+        gd_pair t = gd_row_optimize_flank(c, o, j);
         gd_status st = opt_gear_value_of_pair_samples(o->gear_problem, &t, &o->objective_of[j], o->aux_of[j],
                                                       o->robust ? o->robust->values[j] : NULL, err);
         if (st != GD_OK)
@@ -232,18 +234,9 @@ static gd_status compute_lte(const gd_case *c, gd_stop_hook stop, gd_optimize_ou
 {
     gd_status st = GD_OK;
     for (int j = 0; j < (o->paper ? 4 : 3) && st == GD_OK; j++) {
-        gd_pair t = gd_pair_from_case(c);
+        gd_pair t = gd_row_optimize_flank(c, o, j);
         gd_ltca_settings set = gd_ltca_settings_from_case(c);
         set.stop = stop;
-        if (j == 0) { /* unmodified: every amount and length 0 */
-            t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
-            t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
-            t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
-        } else if (j == 2) {
-            gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
-        } else if (j == 3) {
-            gd_opt_gear_table2(&t);
-        }
         st = gd_ltca_run_opts(&t, &set, 0, 0, &o->lte[j], err);
     }
     return st;
@@ -289,13 +282,14 @@ static void assess_optimum(const gd_case *c, gd_optimize_outcome *o)
     o->converged = o->last_tenth_improvement <= 1e-3;
 }
 
-/* The optimum's own analysis (LTCA or TCA) in the directory sub of out, through that analysis's
- * row, quietly (no progress), with its pictures (env); sub joins out's files. */
-static gd_status optimum_outputs(const gd_case *c, const gd_run_env *env, const gd_opt_gear_vars *v, const double *y,
-                                 int analysis, const char *sub, gd_run_dir *out, gd_error *err)
+/* A flank's own analysis (LTCA or TCA; flank j of gd_row_optimize_flank) in the directory sub of
+ * out, through that analysis's row, quietly (no progress), with its pictures (env); sub joins out's
+ * files. */
+static gd_status flank_outputs(const gd_case *c, const gd_run_env *env, const gd_optimize_outcome *o, int j,
+                               int analysis, const char *sub, gd_run_dir *out, gd_error *err)
 {
     gd_case t;
-    gd_status st = optimum_case(c, v, y, analysis, &t, err);
+    gd_status st = flank_case(c, o, j, analysis, &t, err);
     if (st != GD_OK)
         return st;
     gd_run_env quiet = {0};
@@ -364,10 +358,15 @@ gd_status gd_row_optimize_run(const gd_case *cp, const gd_run_env *env, gd_run_d
         st = objective_of_flanks(&c, o, err);
     if (st == GD_OK && o->gear && o->objective != GD_OBJ_GEAR_LTE)
         st = gd_row_optimize_post(&c, env, o, err);
-    if (st == GD_OK && o->gear)
-        st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_LTCA, "optimum", out, err);
-    if (st == GD_OK && o->gear)
-        st = optimum_outputs(&c, env, &o->vars, o->res[o->best].y, GD_ANALYSIS_TCA, "optimum-tca", out, err);
+    /* each flank's loaded contact pattern (LTCA) and unloaded one (TCA), in unmodified/, case/,
+     * optimum/ and their -tca/ */
+    static const char *const sub[3][2] = {{"unmodified", "unmodified-tca"}, {"case", "case-tca"},
+                                          {"optimum", "optimum-tca"}};
+    for (int j = 0; j < 3 && o->gear && st == GD_OK; j++) {
+        st = flank_outputs(&c, env, o, j, GD_ANALYSIS_LTCA, sub[j][0], out, err);
+        if (st == GD_OK)
+            st = flank_outputs(&c, env, o, j, GD_ANALYSIS_TCA, sub[j][1], out, err);
+    }
     if (st != GD_OK) {
         gd_row_optimize_free(o);
         return st;

@@ -8,18 +8,26 @@
 
 #include <stdlib.h>
 
+gd_pair gd_row_optimize_flank(const gd_case *c, const gd_optimize_outcome *o, int j)
+{
+    gd_pair t = gd_pair_from_case(c);
+    if (j == 0) {
+        t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
+        t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
+        t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
+    } else if (j == 2) {
+        gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
+    } else if (j == 3) {
+        gd_opt_gear_table2(&t);
+    }
+    return t;
+}
+
 gd_status gd_row_optimize_post(const gd_case *c, const gd_run_env *env, gd_optimize_outcome *o, gd_error *err)
 {
     gd_pair pairs[GD_OPTPOST_NFLANKS];
     for (int j = 0; j < GD_OPTPOST_NFLANKS; j++) {
-        gd_pair t = gd_pair_from_case(c);
-        if (j == 0) {
-            t.root_relief_amount_um = t.root_relief_length_mm = t.tip_relief_amount_um = t.tip_relief_length_mm = 0;
-            t.lead_relief_inner_um = t.lead_relief_outer_um = t.lead_unmodified_length_mm = 0;
-            t.lead_unmodified_centre_mm = t.helix_slope_um = 0;
-        } else if (j == 2) {
-            gd_opt_gear_apply(&o->vars, &t, o->res[o->best].y);
-        }
+        gd_pair t = gd_row_optimize_flank(c, o, j);
         /* as gd_opt_gear_value_of_pair evaluates it: the variables read off the flank and put back */
         double y[GD_OPT_GEAR_NVARS];
         gd_opt_gear_from_pair(&o->vars, &t, y);

@@ -26,6 +26,9 @@ GD_ROW_DECLARE(optimize)
 /* optimize over load and speed: the three flanks' report (gd_optpost.h) into o->post, and its freeing */
 gd_status gd_row_optimize_post(const gd_case *c, const gd_run_env *env, gd_optimize_outcome *o, gd_error *err);
 void gd_row_optimize_post_free(gd_optimize_outcome *o);
+/* The flank j of an optimisation of the gear as a pair: 0 unmodified (every amount and length 0), 1
+ * the case's own modification, 2 the optimum, 3 the paper's Table 2; the rest is the case's. */
+gd_pair gd_row_optimize_flank(const gd_case *c, const gd_optimize_outcome *o, int j);
 GD_ROW_DECLARE(compare)
 GD_ROW_DECLARE(continuation)
 /* continuation's check_case: gd_contin_check_case, and the sweep's point with start = sweep */

@@ -257,36 +257,46 @@ static double opt_budget(const gd_case *c)
     return c->opt_budget_evals > 0 ? c->opt_budget_evals : (double)c->opt_population * (c->opt_iterations + 1);
 }
 
+/* The dynamic objective's part of an evaluation: per torque an LTCA and the period-1 orbits
+ * followed over the speed range (gear-dynamic: about 53 orbits over 2500 rpm on the paper's pair,
+ * each about 35 mesh periods of the model's steps with its monodromy, as a continuation's point;
+ * docs/optimisation.md section 12 measured 0.47-0.51 s of CPU for three torques). */
+static double dynamic_eval_seconds(const gd_case *c, const gd_model *m, double w, double ltca, int ntq)
+{
+    /* the orbits are those of optimize.dynamic_model at the middle of the speed range */
+    gd_case one = *c;
+    one.model = c->opt_dynamic_model;
+    one.speed_rpm = 0.5 * (c->opt_speed_from_rpm + c->opt_speed_to_rpm);
+    gd_model *dm = malloc(sizeof *dm);
+    gd_error e = {0};
+    if (dm && gd_model_build(&one, dm, &e) == GD_OK)
+        m = dm;
+    double per, step_s;
+    solver_steps(&one, m, m == dm ? highest_frequency(dm) : w, &per, &step_s);
+    double orbits = 53 * fmax(0.4, fabs(c->opt_speed_to_rpm - c->opt_speed_from_rpm) / 2500.0);
+    double s = ntq * (ltca + orbits * 35 * per * step_s * (1 + 0.4 * m->n));
+    free(dm);
+    return s;
+}
+
 /* One evaluation of a gear objective: an LTCA on a fresh workspace (gear-lte), one per torque
- * (gear-lte-range), or per torque an LTCA and the period-1 orbits followed over the speed range
- * (gear-dynamic: about 53 orbits over 2500 rpm on the paper's pair, each about 35 mesh periods of
- * the model's steps with its monodromy, as a continuation's point; docs/optimisation.md section 12
- * measured 0.47-0.51 s of CPU for three torques). 0 when the objective is not the gear's. */
+ * (gear-lte-range), or the dynamic objective's (gear-dynamic), and with two objectives
+ * (optimize.objective2 = gear-dynamic) the dynamic objective's besides. 0 when the objective is
+ * not the gear's. */
 static double gear_eval_seconds(const gd_case *c, const gd_model *m, double w)
 {
     double ltca = ltca_seconds(c, c->ltca_positions_per_cycle, 0) - 3e-3 + 2.6e-3;
     int ntq = c->n_opt_torques > 0 ? c->n_opt_torques : 1;
-    if (strstr(c->opt_objective, "gear-dynamic")) {
-        /* the orbits are those of optimize.dynamic_model at the middle of the speed range */
-        gd_case one = *c;
-        one.model = c->opt_dynamic_model;
-        one.speed_rpm = 0.5 * (c->opt_speed_from_rpm + c->opt_speed_to_rpm);
-        gd_model *dm = malloc(sizeof *dm);
-        gd_error e = {0};
-        if (dm && gd_model_build(&one, dm, &e) == GD_OK)
-            m = dm;
-        double per, step_s;
-        solver_steps(&one, m, m == dm ? highest_frequency(dm) : w, &per, &step_s);
-        double orbits = 53 * fmax(0.4, fabs(c->opt_speed_to_rpm - c->opt_speed_from_rpm) / 2500.0);
-        double s = ntq * (ltca + orbits * 35 * per * step_s * (1 + 0.4 * m->n));
-        free(dm);
-        return s;
-    }
-    if (strstr(c->opt_objective, "gear-lte-range"))
-        return ntq * ltca;
-    if (strstr(c->opt_objective, "gear-lte"))
-        return ltca;
-    return 0;
+    double s = 0;
+    if (strstr(c->opt_objective, "gear-dynamic"))
+        s = dynamic_eval_seconds(c, m, w, ltca, ntq);
+    else if (strstr(c->opt_objective, "gear-lte-range"))
+        s = ntq * ltca;
+    else if (strstr(c->opt_objective, "gear-lte"))
+        s = ltca;
+    if (s > 0 && strstr(c->opt_objective2, "gear-dynamic"))
+        s += dynamic_eval_seconds(c, m, w, ltca, ntq);
+    return s;
 }
 
 /* What optimize computes after the optimum over load and speed (docs/optimisation.md section 12):
@@ -314,9 +324,12 @@ static double optimize_seconds(const gd_case *c, const gd_model *m, double w, do
     if (c->analysis == GD_ANALYSIS_OPTIMIZE) {
         double runs = c->opt_runs > 0 ? c->opt_runs : 1, evals = runs * opt_budget(c);
         *parallel = c->opt_population;
-        *bytes = evals * 120 + 2e6;  /* convergence.csv, the optimum's LTCA and TCA with their pictures */
-        return evals * eval + optpost_seconds(c, m, w) + ltca_seconds(c, c->ltca_positions_per_cycle, 1) +
-               tca_seconds(c) + 6 * PICTURE_S;
+        /* convergence.csv; for the gear the three flanks' LTCA and TCA with their pictures */
+        int flanks = eval > 0 && !c->opt_objective2[0] ? 3 : 1;
+        *bytes = evals * 120 + flanks * 2e6;
+        return evals * eval + optpost_seconds(c, m, w) +
+               flanks * (ltca_seconds(c, c->ltca_positions_per_cycle, 1) + tca_seconds(c) + 4 * PICTURE_S) +
+               2 * PICTURE_S;
     }
     int gear = eval > 0;
     int objectives = list_items(c->opt_objective), nfun = objectives - gear;

@@ -216,38 +216,7 @@ PY
 ok $? "compare on gear-lte: f_ref is the best run, best points named by their [modification] keys"
 
 # ---- optimize: the objectives over load and speed on a spur pair ------------------------------------
-cat > "$work/spur-range.ini" <<'EOF'
-[scene]
-analysis = optimize
-model = torsional
-[gear]
-arrangement = spur
-normal_module_mm = 3
-teeth_pinion = 25
-teeth_gear = 60
-helix_angle_deg = 0
-profile_shift_pinion = 0.2
-profile_shift_gear = -0.2
-face_width_pinion_mm = 30
-face_width_gear_mm = 30
-bore_diameter_pinion_mm = 30
-bore_diameter_gear_mm = 60
-[operating]
-speed_rpm = 4000
-torque_nm = 120
-[clearance]
-backlash_um = 80
-[excitation]
-stiffness = ltca
-ste = ltca
-[modification]
-tip_relief_amount_um = 10
-tip_relief_length_mm = 2
-[solver]
-ltca_positions_per_cycle = 16
-[run]
-transient_periods = 300
-record_periods = 100
+{ cat "$SRC/tests/cli/spur-optimize.ini"; cat <<'EOF'; } > "$work/spur-range.ini"
 [optimize]
 algorithm = random
 objective = gear-lte-range
@@ -301,6 +270,41 @@ for flank in ("unmodified", "case", "optimum"):
     assert abs(h[flank]["least_lte_pp_arcsec"] - min(at.values())) <= 1e-11 * min(at.values())
 PY
 ok $? "gear-lte-range: lte_over_torque.csv, 20 torques from 12 to 180 N m and the objective's 60 and 120, there the objective's amplitudes"
+
+# the Harris map's grid from the case, and the three flanks' contact patterns
+out="$work/opt-range-grid"
+"$G" run "$work/spur-range.ini" --out "$out" --quiet --set optimize.harris_torques=5 \
+    --set optimize.harris_torque_from_nm=40 --set optimize.harris_torque_to_nm=240 > "$work/run.txt" 2>&1
+ok $? "optimize gear-lte-range with the Harris map's grid exits 0 ($(head -c 300 "$work/run.txt"))"
+python3 - "$out" "$work/opt-range" <<'PY'
+import csv, json, os, sys
+out, before = sys.argv[1], sys.argv[2]
+rows = list(csv.DictReader(open(os.path.join(out, "lte_over_torque.csv"))))
+t = [float(x["torque_nm"]) for x in rows]
+# 40, 90, 140, 190, 240 N m and the objective's 60 and 120
+assert t == [40, 60, 90, 120, 140, 190, 240], t
+assert [x["objective_torque"] for x in rows] == ["0", "1", "0", "1", "0", "0", "0"], rows
+# the same flanks at the objective's torques as with the default grid, bit for bit
+b = {x["torque_nm"]: x for x in csv.DictReader(open(os.path.join(before, "lte_over_torque.csv")))}
+for x in rows:
+    if x["objective_torque"] == "1":
+        assert all(x[k] == b[x["torque_nm"]][k] for k in x), (x, b[x["torque_nm"]])
+# each flank's own LTCA and TCA: its LTE amplitude at the case's torque is the LTE table's, and its
+# [modification] is the flank's
+r = json.load(open(os.path.join(out, "summary.json")))["results"]
+for flank, sub in (("unmodified", "unmodified"), ("case", "case"), ("optimum", "optimum")):
+    for f in ("load_distribution.csv", "lte.csv", "summary.json"):
+        assert os.path.isfile(os.path.join(out, sub, f)), (sub, f)
+    for f in ("contact_path.csv", "gte.csv", "summary.json"):
+        assert os.path.isfile(os.path.join(out, sub + "-tca", f)), (sub, f)
+    s = json.load(open(os.path.join(out, sub, "summary.json")))
+    a = s["results"]["lte_pp_arcsec"]
+    assert abs(a - r["lte_pp_arcsec"][flank]) <= 1e-9 * a, (flank, a, r["lte_pp_arcsec"][flank])
+    tip = s["case"]["parameters"]["modification"]["tip_relief_amount_um"]["value"]
+    want = {"unmodified": 0, "case": 10, "optimum": r["optimum"]["tip_relief_amount_um"]}[flank]
+    assert abs(tip - want) <= 1e-12 * max(1, want), (flank, tip, want)
+PY
+ok $? "gear-lte-range: the Harris map on the case's grid of 5 torques from 40 to 240 N m and the objective's, and the three flanks' LTCA and TCA in unmodified/, case/, optimum/ and their -tca/"
 
 out="$work/opt-dynamic"
 "$G" run "$work/spur-range.ini" --out "$out" --quiet --set optimize.objective=gear-dynamic \

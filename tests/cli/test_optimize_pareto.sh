@@ -75,39 +75,16 @@ assert r["best_run"] == 1 + r["run_hypervolumes"].index(r["hypervolume"])
 PY
 ok $? "two runs: the one with the larger hypervolume is kept"
 
+# check: compare-optimizers uses the keys of MOALO and of the scalarisations when its list names them
+"$G" check "$SRC/cases/optimize/compare-two-objectives.ini" > "$work/check2.txt" 2>&1 &&
+    grep -Eq "^scalar_grid = 8 +; default$" "$work/check2.txt" && grep -Eq "^archive = 100 +; default$" "$work/check2.txt" &&
+    "$G" check "$SRC/cases/paper/compare-optimizers.ini" > "$work/check1.txt" 2>&1 &&
+    grep -Eq "^archive = 100 +; default, ignored: only optimize.optimizers with moalo uses it" "$work/check1.txt" &&
+    grep -Eq "^scalar_grid = 8 +; default, ignored: only optimize.optimizers with weighted-sum or eps-constraint" "$work/check1.txt"
+ok $? "check: compare-optimizers' scalar_grid and archive used when optimizers names them, ignored when not"
+
 # ---- the gear: the LTE and the dynamic response --------------------------------------------------
-cat > "$work/spur.ini" <<'EOF'
-[scene]
-analysis = optimize
-model = torsional
-[gear]
-arrangement = spur
-normal_module_mm = 3
-teeth_pinion = 25
-teeth_gear = 60
-helix_angle_deg = 0
-profile_shift_pinion = 0.2
-profile_shift_gear = -0.2
-face_width_pinion_mm = 30
-face_width_gear_mm = 30
-bore_diameter_pinion_mm = 30
-bore_diameter_gear_mm = 60
-[operating]
-speed_rpm = 4000
-torque_nm = 120
-[clearance]
-backlash_um = 80
-[excitation]
-stiffness = ltca
-ste = ltca
-[modification]
-tip_relief_amount_um = 10
-tip_relief_length_mm = 2
-[solver]
-ltca_positions_per_cycle = 16
-[run]
-transient_periods = 300
-record_periods = 100
+{ cat "$SRC/tests/cli/spur-optimize.ini"; cat <<'EOF'; } > "$work/spur.ini"
 [optimize]
 algorithm = moalo
 objective = gear-lte

@@ -6,38 +6,7 @@
 # and gear-dynamic. TAP output.
 . "${GEARDYN_SOURCE:?}/tests/cli/tap.sh" # G, SRC, work, ok
 
-cat > "$work/spur.ini" <<'EOF'
-[scene]
-analysis = optimize
-model = torsional
-[gear]
-arrangement = spur
-normal_module_mm = 3
-teeth_pinion = 25
-teeth_gear = 60
-helix_angle_deg = 0
-profile_shift_pinion = 0.2
-profile_shift_gear = -0.2
-face_width_pinion_mm = 30
-face_width_gear_mm = 30
-bore_diameter_pinion_mm = 30
-bore_diameter_gear_mm = 60
-[operating]
-speed_rpm = 4000
-torque_nm = 120
-[clearance]
-backlash_um = 80
-[excitation]
-stiffness = ltca
-ste = ltca
-[modification]
-tip_relief_amount_um = 10
-tip_relief_length_mm = 2
-[solver]
-ltca_positions_per_cycle = 16
-[run]
-transient_periods = 300
-record_periods = 100
+{ cat "$SRC/tests/cli/spur-optimize.ini"; cat <<'EOF'; } > "$work/spur.ini"
 [optimize]
 algorithm = random
 objective = gear-lte-range

@@ -110,6 +110,11 @@ SHORTEN = [
     # two objectives on the gear: 8 evaluations of 4 ants, coarse LTCA
     ('cases/paper/pareto-lte-dynamic.ini', ['optimize.iterations=1', 'optimize.population=4',
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
+    # the two-objective optimisers on the gear: 2 runs of 8 evaluations, 2 subproblems, coarse LTCA
+    ('cases/paper/compare-two-objectives-gear.ini', ['optimize.runs=2', 'optimize.budget_evals=8',
+                                                     'optimize.population=4', 'optimize.scalar_grid=2',
+                                                     'solver.ltca_positions_per_cycle=8',
+                                                     'solver.ltca_face_slices=7']),
     # the NASA Glenn spur pair: the sweep every 1000 rpm with 40 recorded periods; the continuation
     # without the sweep its case names in results/ (the variant nasa-overlay draws it over)
     ('cases/guide/nasa-grc-spur-sweep.ini', ['sweep.points=15', 'run.record_periods=40']),

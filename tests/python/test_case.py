@@ -278,3 +278,7 @@ def test_cost_of_gear_objectives(work):
     assert dyn == pytest.approx(3 * dyn_one, rel=0.2)
     assert dyn_long == pytest.approx(2 * dyn, rel=0.1)
     assert 1.3 * dyn < dyn_wide <= 2 * dyn   # twice the orbits, each of fewer steps at higher speed
+    # two objectives at once: each evaluation computes both, the LTE and the dynamic response
+    two = seconds([('optimize.objective', 'gear-lte'), ('optimize.objective2', 'gear-dynamic'),
+                   ('optimize.algorithm', 'moalo')])
+    assert two > 0.8 * dyn and two > 3 * lte
