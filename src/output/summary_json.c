@@ -104,6 +104,30 @@ static json_t *response_derived_json(const gd_case *c, const gd_model *m)
     return der;
 }
 
+/* A fixed step (rk4, or erk with a fixed step) against its method's stability region on the model
+ * linearised at its static operating point (gd_sim_step_stability, as geardyn check and the note of
+ * geardyn run judge it): NULL for an adaptive or implicit solver, or where it cannot be judged. */
+static json_t *fixed_step_json(const gd_case *c, const gd_model *m)
+{
+    gd_solver_opts o;
+    gd_solver_opts_from_case(c, &o);
+    if (m->custom || !(o.method == GD_METHOD_RK4 || (o.method == GD_METHOD_ERK && o.fixed_step)))
+        return NULL;
+    double y[GD_MAX_STATE];
+    gd_modes md;
+    gd_step_stability sb;
+    gd_error e = {0};
+    if (gd_model_static_state(m, y, &md, &e) != GD_OK || gd_sim_step_stability(m, &o, y, &md, &sb, &e) != GD_OK)
+        return NULL;
+    json_t *f = json_object();
+    json_object_set_new(f, "steps_per_period", json_integer(c->steps_per_period));
+    json_object_set_new(f, "stable", json_boolean(!sb.unstable));
+    json_object_set_new(f, "amplification", gd_json_num(sb.amplification));
+    json_object_set_new(f, "mode_hz", gd_json_num(sb.freq_hz));
+    json_object_set_new(f, "stable_from_steps_per_period", json_integer(sb.min_steps_per_period));
+    return f;
+}
+
 /* "solver": the method and the statistics of the run. */
 static json_t *response_solver_json(const gd_case *c, const gd_model *m, const gd_response_result *r)
 {
@@ -116,6 +140,8 @@ static json_t *response_solver_json(const gd_case *c, const gd_model *m, const g
     json_object_set_new(sol, "rtol", gd_json_num(c->rtol));
     json_object_set_new(sol, "atol", gd_json_num(c->atol));
     json_object_set_new(sol, "root_finding", json_boolean(c->root_finding));
+    json_t *fixed = fixed_step_json(c, m);
+    json_object_set_new(sol, "fixed_step", fixed ? fixed : json_null());
     json_object_set_new(sol, "steps", json_integer(r->stats.steps));
     json_object_set_new(sol, "step_attempts", json_integer(r->stats.step_attempts));
     json_object_set_new(sol, "rhs_evals", json_integer(r->stats.rhs_evals));

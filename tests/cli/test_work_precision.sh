@@ -99,8 +99,26 @@ done
 grep -q "note: solver.steps_per_period = 16 is outside the stability region.*stable from 22 steps" "$work/rk4-16.txt" &&
     ! grep -q "stability region" "$work/rk4-32.txt"
 ok $? "run: a note when the fixed step is unstable (RK4 at 16 steps at 4000 rpm), none when stable (32)"
+python3 - "$work/rk4-16/summary.json" "$work/rk4-32/summary.json" "$work/rk4-16.txt" <<'PY'
+import json, re, sys
+a = json.load(open(sys.argv[1]))["solver"]["fixed_step"]
+b = json.load(open(sys.argv[2]))["solver"]["fixed_step"]
+note = open(sys.argv[3]).read()
+assert a["steps_per_period"] == 16 and a["stable"] is False and a["stable_from_steps_per_period"] == 22, a
+assert b["steps_per_period"] == 32 and b["stable"] is True and b["stable_from_steps_per_period"] == 22, b
+assert a["amplification"] > 1 >= b["amplification"] - 1e-9, (a, b)
+# the same numbers as the note of the run
+m = re.search(r"on the model's ([0-9.e+]+) Hz mode \(\|R\(h lambda\)\| = ([0-9.e+]+) per step\)", note)
+assert m and abs(float(m.group(1)) - a["mode_hz"]) <= 1e-4 * a["mode_hz"], (m and m.groups(), a)
+assert abs(float(m.group(2)) - a["amplification"]) <= 1e-2 * a["amplification"], (m.groups(), a)
+PY
+ok $? "run: summary.json's solver.fixed_step says whether the step is stable, from how many steps, as the note"
 "$G" check "$SRC/cases/accuracy/periodn-2000rpm.ini" > "$work/chk-adaptive.txt" 2>&1
 ! grep -q "step_amplification" "$work/chk-adaptive.txt"; ok $? "check: an adaptive step is not judged"
+"$G" run "$SRC/cases/quickstart.ini" --out "$work/adaptive" --set run.transient_periods=20 --set run.record_periods=5 \
+    --set output.plots=off > /dev/null 2>&1 &&
+    python3 -c "import json, sys; assert json.load(open(sys.argv[1]))['solver']['fixed_step'] is None" "$work/adaptive/summary.json"
+ok $? "run: an adaptive step has no fixed_step in summary.json"
 
 echo "1..$n"
 [ $bad -eq 0 ]
