@@ -25,8 +25,9 @@
 extern "C" {
 #endif
 
-/* The response measured: the RMS mesh acceleration (combined, as a sweep's rms_accel_mps2), or the
- * peak-to-peak dynamic transmission error (the larger of the halves'). */
+/* The response measured: the RMS mesh acceleration, or the peak-to-peak dynamic transmission error;
+ * of a herringbone's two meshes the larger (not the combined acceleration, which cancels where the
+ * halves vibrate in antiphase). */
 typedef enum gd_dyn_measure { GD_DYN_RMS_ACCEL = 0, GD_DYN_DTE_PP = 1 } gd_dyn_measure;
 /* How a torque's curve was obtained: the continuation alone, with a short sweep, or the sweep alone
  * (the start orbit was not found). */

@@ -83,12 +83,15 @@ static int stop_progress(void *user, long done, long total)
     return gd_stop_asked(user);
 }
 
-/* The measure of a response result on a model of nmesh meshes. */
+/* The measure of a response result on a model of nmesh meshes: of a herringbone's two halves the
+ * larger. Not the combined acceleration RMS((a_L + a_R) / 2): where the halves vibrate in antiphase
+ * it cancels while each mesh does not, and an optimiser finds such flanks (the paper's pair: the
+ * combined 5.8 m/s^2 at 5500 rpm, 500 N m, each half 267 and 272, as much as the unmodified pair's). */
 static double measure_of(const dyn_run *r, const gd_response_result *rr, int nmesh)
 {
     if (r->s->measure == GD_DYN_DTE_PP)
         return nmesh > 1 ? fmax(rr->dte_pp_um[0], rr->dte_pp_um[1]) : rr->dte_pp_um[0];
-    return rr->rms_accel_mps2[2];
+    return nmesh > 1 ? fmax(rr->rms_accel_mps2[0], rr->rms_accel_mps2[1]) : rr->rms_accel_mps2[0];
 }
 
 /* A response run at parameter p from the state y: transient periods, then record periods. The

@@ -525,8 +525,8 @@ static const gd_keyspec schema[] = {
     D("optimize", "speed_to_rpm", "rpm", opt_speed_to_rpm, 0, 100000, 1, 0, NAN,
       "gear-dynamic: the highest speed of the range, above speed_from_rpm (derived: 1.2 operating.speed_rpm)"),
     E("optimize", "dynamic_response", opt_dynamic_response, 0, "rms_accel|dte_pp",
-      "gear-dynamic: the response of the stable motion: the RMS mesh acceleration (combined), or the peak-to-peak "
-      "dynamic transmission error (the larger of the halves')"),
+      "gear-dynamic: the response of the stable motion: the RMS mesh acceleration, or the peak-to-peak dynamic "
+      "transmission error; of a herringbone's halves the larger"),
     E("optimize", "dynamic_model", opt_dynamic_model, 1, "torsional|torsional-lr|bta",
       "gear-dynamic: the model of the dynamics in the loop (derived: torsional-lr for a herringbone, torsional for "
       "a single pair)"),

@@ -54,14 +54,16 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
             g.W = (int)(20 + g.cols * g.pw + (g.legend_slot < 0 ? 230 : 0));
             g.H = (int)(60 + g.rows * g.ph);
             gd_fig_begin(&s, fi, g.W, g.H, pic ? "ecdf" : "convergence");
+            /* one panel is too narrow for the title on one line: two */
+            const char *brk = panels == 1 ? "\\n" : " ";
             if (pic == 0 && two)
-                gd_plot_printf(&s, "set multiplot title 'Convergence: the median over %d runs of the hypervolume of "
-                                      "the reference HV_{ref} minus that of the front found; bars: its quartiles at the "
-                                      "budget of %ld evaluations'\n", r0->runs, r0->budget);
+                gd_plot_printf(&s, "set multiplot title \"Convergence: the median over %d runs of the hypervolume of "
+                                      "the reference HV_{ref} minus that of the front found;%sbars: its quartiles at the "
+                                      "budget of %ld evaluations\"\n", r0->runs, brk, r0->budget);
             else if (pic == 0)
-                gd_plot_printf(&s, "set multiplot title 'Convergence: the median over %d runs of the best value found "
-                                      "minus the reference value f_{ref}; bars: its quartiles at the budget of %ld "
-                                      "evaluations'\n", r0->runs, r0->budget);
+                gd_plot_printf(&s, "set multiplot title \"Convergence: the median over %d runs of the best value found "
+                                      "minus the reference value f_{ref};%sbars: its quartiles at the budget of %ld "
+                                      "evaluations\"\n", r0->runs, brk, r0->budget);
             else
                 gd_plot_printf(&s, "set multiplot title 'Runtime distributions: the fraction of (run, target) pairs "
                                       "reached, %d runs, %ld evaluations each'\n", r0->runs, r0->budget);
@@ -114,6 +116,31 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
                                       q->shift > 0 ? ", shifted" : "", r->ntargets, r->targets[0],
                                       r->targets[r->ntargets - 1]);
                 if (pic == 0) {
+                    /* a logarithmic axis over less than a decade and a half labels one power of ten or
+                     * none: label 1, 2 and 5 times the powers of ten within the data's range */
+                    double ylo = INFINITY, yhi = 0, yq[3];
+                    for (int a = 0; a < r->nalgs; a++) {
+                        gd_opt_compare_quartiles(r, a, r->budget, yq);
+                        for (int k = 0; k < 3; k++)
+                            if (yq[k] > 0)
+                                ylo = fmin(ylo, yq[k]);
+                        gd_opt_compare_quartiles(r, a, 1, yq);
+                        yhi = fmax(yhi, yq[2]);
+                    }
+                    gd_plot_printf(&s, "set ytics autofreq\n");
+                    if (yhi > 0 && ylo < yhi && yhi / ylo < 30) {
+                        gd_plot_printf(&s, "set ytics add (");
+                        int first = 1;
+                        for (double d = pow(10, floor(log10(ylo))); d <= yhi * 1.0001; d *= 10)
+                            for (int m = 1; m <= 5; m += m == 1 ? 1 : 3) /* 1, 2, 5 */
+                                if (m * d >= ylo / 1.0001 && m * d <= yhi * 1.0001) {
+                                    gd_plot_printf(&s, "%s%.6g", first ? "" : ", ", m * d);
+                                    first = 0;
+                                }
+                        gd_plot_printf(&s, ")\n");
+                        if (first) /* none in the range: an empty list is a syntax error */
+                            gd_plot_printf(&s, "set ytics autofreq\n");
+                    }
                     /* the quartiles at the budget, each optimiser's bar a little to the right of the last */
                     gd_plot_printf(&s, "$IQR%d << EOD\nx,y,lo,hi\n", j);
                     for (int a = 0; a < r->nalgs; a++) {
