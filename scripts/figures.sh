@@ -79,6 +79,10 @@ if wanted continuation-curves-kahraman-singh-cusp; then
     run kahraman-singh-cusp cases/continuation/kahraman-singh-cusp.ini
     fig continuation-curves-kahraman-singh-cusp kahraman-singh-cusp/curves.png
 fi
+if wanted continuation-curves-kahraman-singh-mean-force; then
+    run kahraman-singh-mean-force cases/continuation/kahraman-singh-mean-force.ini
+    fig continuation-curves-kahraman-singh-mean-force kahraman-singh-mean-force/curves.png
+fi
 
 # docs/paper-reproduction.md: the speed sweeps, and the sweep beside its continuation
 if wanted paper-speed-100-8000rpm-modified; then
