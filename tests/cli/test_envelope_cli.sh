@@ -295,5 +295,27 @@ mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-ch
 refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a neimark-sacker, which has no curve"
 refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
 refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
+
+# the picture's overlays: a regime map of the same plane (a sweep with parameter2, 4 x 3 points both
+# ways) under the curves, and an earlier run's curves in the same keys beside them (the cusp case's:
+# another range of the same keys) are taken and drawn; a map of another model, curves in other keys,
+# a one-parameter run's output, are refused before any work (without parameter2: tests/bad-input/19-continuation-overlays.txt)
+"$G" run "$KS" --out "$work/map" --quiet --set output.plots=off --set scene.analysis=sweep \
+    --set sweep.parameter=operating.speed_rpm --set sweep.from=1591.5494309189 --set sweep.to=4774.6482927569 \
+    --set sweep.points=4 --set sweep.parameter2=excitation.ste_amplitude_um --set sweep.from2=0.5 --set sweep.to2=2 \
+    --set sweep.points2=3 --set sweep.direction=both --set run.lyapunov_exponents=0 > "$work/map.txt" 2>&1
+ok $? "a regime map of the plane runs ($(head -c 300 "$work/map.txt"))"
+"$G" run "$KS" --out "$work/over" --quiet --set output.plots=on --set continuation.overlay_map="$work/map" \
+    --set continuation.overlay_curves="$work/cusp" > "$work/over.txt" 2>&1
+ok $? "the curves over the map and beside the cusp case's curves run ($(head -c 300 "$work/over.txt"))"
+if command -v gnuplot > /dev/null; then
+    [ -s "$work/over/curves.png" ] && grep -q "over the regime map map" "$work/over/curves.svg" &&
+        grep -q "thin grey: the curves of cusp" "$work/over/curves.svg"
+    ok $? "curves.png drawn over the map, the cusp case's curves named in its key"
+fi
+refuse continuation.overlay_map="$work/map" "continuation.overlay_map: the sweep in .*map is of another model: damping.mesh_damping_ratio = 0.05 there, 0.07 here \(valid: a sweep of this case, which may differ in operating.speed_rpm and excitation.ste_amplitude_um only\)" damping.mesh_damping_ratio=0.07
+refuse continuation.overlay_map="$work/one-1.01" "continuation.overlay_map: .*one-1.01 holds the output of continuation, not of a sweep"
+refuse continuation.overlay_curves="$work/mf" "continuation.overlay_curves: the continuation in .*mf followed curves in operating.speed_rpm and operating.torque_nm \(valid: curves in continuation.parameter = operating.speed_rpm and parameter2 = excitation.ste_amplitude_um\)"
+refuse continuation.overlay_curves="$work/one-1.01" "continuation.overlay_curves: the continuation in .*one-1.01 followed no curves"
 echo "1..$n"
 [ $bad -eq 0 ]
