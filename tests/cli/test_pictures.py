@@ -4,7 +4,8 @@
 or shortened with --set where it is long (the table SHORTEN says how; the shortenings keep what
 the pictures show); the variants (VARIANTS) add the pictures no shipped case draws as written: a
 regime map, TCA and LTCA of single pairs, other response variables, the paper's 25-point speed
-sweep (its resonance off the Poincare panel's scale), a continuation with a sweep over it.
+sweep (its resonance off the Poincare panel's scale), a continuation with a sweep over it, curves over a
+regime map and beside another case's curves.
 
 The checks of every picture:
   frame     no drawn point on or beyond a panel's frame, unless a curve ends there because its
@@ -42,7 +43,9 @@ contact_pattern.png draws a path, not a scatter; continuation.png's markers each
 shape (a sweep's points are not bifurcations) and every row of bifurcations.csv drawn as a marker
 of its kind (branch points too), a marker of lines or an outline drawn over one of another kind
 (a branch point on its fold) 1.4 times its size so that both show; the optimiser comparison draws no overlapping
-translucent bands.
+translucent bands; curves.png over a regime map names in its key exactly the map's classes of motion, every
+region it names lies on cells of that motion's colour, and an earlier run's curves beside them are drawn
+with their key entry.
 
 The SVG is drawn with the PNG's font size in pixels (src/plot/figure.h), so its layout is the PNG's.
 
