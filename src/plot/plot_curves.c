@@ -288,9 +288,17 @@ static void region_labels(gd_plot_script *s, const gd_overlay_map *m, const grid
             if (d >= best)
                 continue;
             /* every cell the box touches is of the region */
-            int inside = 1;
-            for (int jj = 0; jj < g->ny && inside; jj++)
-                for (int ii = 0; ii < g->nx && inside; ii++) {
+            int inside = 1, i0 = i, i1 = i, j0 = j, j1 = j; /* the cells the box may touch */
+            while (i0 > 0 && to_px(f, g->xv[i0]) > bx0)
+                i0--;
+            while (i1 + 1 < g->nx && to_px(f, g->xv[i1]) < bx1)
+                i1++;
+            while (j0 > 0 && to_py(f, g->yv[j0]) < by1)
+                j0--;
+            while (j1 + 1 < g->ny && to_py(f, g->yv[j1]) > by0)
+                j1++;
+            for (int jj = j0; jj <= j1 && inside; jj++)
+                for (int ii = i0; ii <= i1 && inside; ii++) {
                     double cxl, cxh, cyl, cyh;
                     edges(g->xv, g->nx, ii, &cxl, &cxh);
                     edges(g->yv, g->ny, jj, &cyl, &cyh);
