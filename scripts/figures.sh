@@ -90,6 +90,14 @@ if wanted continuation-curves-kahraman-singh-map; then
         --set continuation.overlay_map="$W/kahraman-singh-map"
     fig continuation-curves-kahraman-singh-map kahraman-singh-curves-map/curves.png
 fi
+# the curves in (Omega, F_a) at mesh damping ratio 0.07 beside those at 0.05
+if wanted continuation-curves-kahraman-singh-damping; then
+    run kahraman-singh-curves-005 cases/continuation/kahraman-singh-curves.ini --set output.plots=off
+    run kahraman-singh-curves-007 cases/continuation/kahraman-singh-curves.ini --set damping.mesh_damping_ratio=0.07 \
+        --set continuation.overlay_curves="$W/kahraman-singh-curves-005" \
+        --set "scene.title=Kahraman & Singh oscillator: zeta 0.07 beside 0.05, F_m 0.1, constant stiffness, curves in (Omega, F_a)"
+    fig continuation-curves-kahraman-singh-damping kahraman-singh-curves-007/curves.png
+fi
 if wanted continuation-curves-kahraman-singh-mean-force; then
     run kahraman-singh-mean-force cases/continuation/kahraman-singh-mean-force.ini
     fig continuation-curves-kahraman-singh-mean-force kahraman-singh-mean-force/curves.png
