@@ -79,6 +79,29 @@ if wanted continuation-curves-kahraman-singh-cusp; then
     run kahraman-singh-cusp cases/continuation/kahraman-singh-cusp.ini
     fig continuation-curves-kahraman-singh-cusp kahraman-singh-cusp/curves.png
 fi
+# the curves in (Omega, F_a) over a regime map of the same plane, 41 x 31 points both ways
+if wanted continuation-curves-kahraman-singh-map; then
+    run kahraman-singh-map cases/continuation/kahraman-singh-curves.ini --set scene.analysis=sweep \
+        --set sweep.parameter=operating.speed_rpm --set sweep.from=1591.5494309189 --set sweep.to=4774.6482927569 \
+        --set sweep.points=41 --set sweep.parameter2=excitation.ste_amplitude_um --set sweep.from2=0.5 \
+        --set sweep.to2=2 --set sweep.points2=31 --set sweep.direction=both --set run.lyapunov_exponents=0 \
+        --set output.plots=off --threads 2
+    run kahraman-singh-curves-map cases/continuation/kahraman-singh-curves.ini \
+        --set continuation.overlay_map="$W/kahraman-singh-map"
+    fig continuation-curves-kahraman-singh-map kahraman-singh-curves-map/curves.png
+fi
+# the curves in (Omega, F_a) at mesh damping ratio 0.07 beside those at 0.05
+if wanted continuation-curves-kahraman-singh-damping; then
+    run kahraman-singh-curves-005 cases/continuation/kahraman-singh-curves.ini --set output.plots=off
+    run kahraman-singh-curves-007 cases/continuation/kahraman-singh-curves.ini --set damping.mesh_damping_ratio=0.07 \
+        --set continuation.overlay_curves="$W/kahraman-singh-curves-005" \
+        --set "scene.title=Kahraman & Singh oscillator: zeta 0.07 beside 0.05, F_m 0.1, constant stiffness, curves in (Omega, F_a)"
+    fig continuation-curves-kahraman-singh-damping kahraman-singh-curves-007/curves.png
+fi
+if wanted continuation-curves-kahraman-singh-mean-force; then
+    run kahraman-singh-mean-force cases/continuation/kahraman-singh-mean-force.ini
+    fig continuation-curves-kahraman-singh-mean-force kahraman-singh-mean-force/curves.png
+fi
 
 # docs/paper-reproduction.md: the speed sweeps, and the sweep beside its continuation
 if wanted paper-speed-100-8000rpm-modified; then

@@ -236,6 +236,8 @@ typedef struct gd_case {
     int cont_curve_max_points; /* points of one curve in one direction at most */
     char cont_curve_start[GD_PATH_MAX]; /* an earlier continuation's bifurcations.csv: one row's curve only ("": all) */
     int cont_curve_start_row; /* its data row, 1 the first */
+    char cont_overlay_map[GD_PATH_MAX]; /* a finished regime map in the two keys, under the curves ("": none) */
+    char cont_overlay_curves[GD_PATH_MAX]; /* an earlier continuation's curves in the two keys, beside them ("": none) */
 
     /* [basins] (analysis = basins; gd_basins.h, docs/basins.md) */
     char bas_x[32], bas_y[32];   /* the section's coordinates */

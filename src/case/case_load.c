@@ -32,6 +32,7 @@ static size_t string_cap(const gd_keyspec *k)
 {
     if (k->offset == offsetof(gd_case, directory) || k->offset == offsetof(gd_case, cont_overlay_sweep) ||
         k->offset == offsetof(gd_case, cont_curve_start) ||
+        k->offset == offsetof(gd_case, cont_overlay_map) || k->offset == offsetof(gd_case, cont_overlay_curves) ||
         k->offset == offsetof(gd_case, cont_start_sweep))
         return GD_PATH_MAX;
     if (k->offset == offsetof(gd_case, cont_state))

@@ -349,6 +349,12 @@ static const gd_keyspec schema[] = {
       "curve of its row curve_start_row is followed, both ways (\"\": every bifurcation of the branches)"),
     I("continuation", "curve_start_row", cont_curve_start_row, 1, 1000000, 1,
       "the row of curve_start whose bifurcation's curve is followed: 1 the first row after the header"),
+    S("continuation", "overlay_map", cont_overlay_map, "",
+      "a finished regime map (a sweep with parameter2) in parameter and parameter2 of this case's model, its "
+      "directory (relative to the working directory): its cells coloured by motion under the curves, its regions named"),
+    S("continuation", "overlay_curves", cont_overlay_curves, "",
+      "an earlier continuation's directory with curves in parameter and parameter2 (any model: the case before a "
+      "modification), its curves drawn thin and grey beside these, the keys where it differs in the key"),
 
     /* [basins] (analysis = basins; docs/basins.md) */
     S("basins", "x", bas_x, "lambda_L",

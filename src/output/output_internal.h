@@ -131,6 +131,47 @@ gd_status gd_contin_sweep_start(const gd_case *c, gd_contin_start *s, gd_error *
 struct json_t;
 gd_status gd_contin_same_model(const gd_case *c, struct json_t *their_case, const char *dir, const char *key,
                                const char *what, gd_error *err);
+/* The same, skipping skip2 too (continuation.overlay_map: a regime map in both keys). */
+gd_status gd_contin_same_model_but(const gd_case *c, struct json_t *their_case, const char *dir, const char *key,
+                                   const char *what, const char *skip2, gd_error *err);
+/* The model's keys (but the continued one and skip2) whose value in an earlier run's case differs
+ * from c's: their number, the first max of them into d (values as text: numbers as %.10g). */
+typedef struct gd_model_diff {
+    char key[128], mine[64], theirs[64];
+} gd_model_diff;
+int gd_contin_model_diff(const gd_case *c, struct json_t *their_case, const char *skip2, gd_model_diff *d, int max);
+
+/* The curves' picture's overlays (continuation.overlay_map, overlay_curves; docs/continuation.md
+ * section 8), checked before any work: overlay_map a finished sweep with parameter2 (a regime map) in
+ * continuation.parameter and parameter2, of this case's model but those two keys, its sweep.csv
+ * readable; overlay_curves an earlier continuation's output in the same two keys with its
+ * curves.csv (any model: the case before a modification). Refusals are GD_ERR_INPUT naming the file,
+ * line and key. */
+gd_status gd_contin_overlays_check(const gd_case *c, gd_error *err);
+/* A regime map's points read back (sweep.csv of continuation.overlay_map). */
+typedef struct gd_map_point {
+    double x, y;       /* the two keys' values */
+    int dir;           /* 0 up, 1 down, 2 independent */
+    int regime;        /* 0 no-impact (in contact), 1 single-sided, 2 double-sided; -1 not done */
+    int period;        /* the motion's period in mesh periods (period-n), 0 not periodic */
+    char motion[32];   /* sweep.csv's motion */
+} gd_map_point;
+typedef struct gd_overlay_map {
+    gd_map_point *pt;
+    int n;
+} gd_overlay_map;
+gd_status gd_contin_overlay_map_read(const gd_case *c, gd_overlay_map *m, gd_error *err);
+/* An earlier run's curves read back (curves.csv of continuation.overlay_curves): point i of curve
+ * curve[i] of kind kind[i] (gd_curve_kind) at (x[i], y[i]); the model keys where that run differs
+ * from this case (ndiff of them, the first 3 in diff). */
+typedef struct gd_overlay_curves {
+    double *x, *y;
+    int *curve, *kind;
+    int n, ndiff;
+    gd_model_diff diff[3];
+} gd_overlay_curves;
+gd_status gd_contin_overlay_curves_read(const gd_case *c, gd_overlay_curves *o, gd_error *err);
+void gd_contin_overlay_free(gd_overlay_map *m, gd_overlay_curves *o);
 /* continuation.curve_start: row curve_start_row of an earlier continuation's bifurcations.csv, checked
  * to be a fold, period doubling or grazing (a contact change of a clearance), located, in [from, to],
  * of this case's model and state (its summary.json beside it: a continuation in the same key, every

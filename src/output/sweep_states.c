@@ -115,9 +115,9 @@ static int derived(json_t *e)
 }
 
 /* The sweep's resolved case against this one, key by key over the model's keys, except the
- * continued key and the values derived from others. */
-gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char *dir, const char *key,
-                               const char *what, gd_error *err)
+ * continued key (and skip2, when not NULL) and the values derived from others. */
+gd_status gd_contin_same_model_but(const gd_case *c, json_t *sweep_case, const char *dir, const char *key,
+                                   const char *what, const char *skip2, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
     json_t *mine = gd_json_case(c);
@@ -127,7 +127,8 @@ gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char 
     for (size_t i = 0; i < n && st == GD_OK; i++) {
         char name[200];
         snprintf(name, sizeof name, "%s.%s", s[i].section, s[i].key);
-        if (!model_key(s[i].section, s[i].key) || strcmp(name, c->cont_parameter) == 0)
+        if (!model_key(s[i].section, s[i].key) || strcmp(name, c->cont_parameter) == 0 ||
+            (skip2 && strcmp(name, skip2) == 0))
             continue;
         json_t *a = json_object_get(json_object_get(mine, s[i].section), s[i].key);
         json_t *b = json_object_get(json_object_get(sweep_case, s[i].section), s[i].key);
@@ -137,15 +138,54 @@ gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char 
             char *va = value_text(json_object_get(a, "value"));
             char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
             st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.%s: the %s in %s is of another model: "
-                              "%s = %s there, %s here (valid: a %s of this case, which may differ in %s only)",
+                              "%s = %s there, %s here (valid: a %s of this case, which may differ in %s%s%s only)",
                               WHERE(key), key, what, dir, name, vb ? vb : "(absent)", va ? va : "?", what,
-                              c->cont_parameter);
+                              c->cont_parameter, skip2 ? " and " : "", skip2 ? skip2 : "");
             free(va);
             free(vb);
         }
     }
     json_decref(mine);
     return st;
+}
+
+gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char *dir, const char *key,
+                               const char *what, gd_error *err)
+{
+    return gd_contin_same_model_but(c, sweep_case, dir, key, what, NULL, err);
+}
+
+int gd_contin_model_diff(const gd_case *c, json_t *their_case, const char *skip2, gd_model_diff *d, int max)
+{
+    json_t *mine = gd_json_case(c);
+    size_t n;
+    const gd_keyspec *s = gd_case_schema(&n);
+    int nd = 0;
+    for (size_t i = 0; i < n; i++) {
+        char name[200];
+        snprintf(name, sizeof name, "%s.%s", s[i].section, s[i].key);
+        if (!model_key(s[i].section, s[i].key) || strcmp(name, c->cont_parameter) == 0 ||
+            (skip2 && strcmp(name, skip2) == 0))
+            continue;
+        json_t *a = json_object_get(json_object_get(mine, s[i].section), s[i].key);
+        json_t *b = json_object_get(json_object_get(their_case, s[i].section), s[i].key);
+        if (b && (derived(a) || derived(b)))
+            continue;
+        if (b && same_value(json_object_get(a, "value"), json_object_get(b, "value")))
+            continue;
+        if (nd < max) {
+            char *va = value_text(json_object_get(a, "value"));
+            char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
+            snprintf(d[nd].key, sizeof d[nd].key, "%s", name);
+            snprintf(d[nd].mine, sizeof d[nd].mine, "%s", va ? va : "?");
+            snprintf(d[nd].theirs, sizeof d[nd].theirs, "%s", vb ? vb : "?");
+            free(va);
+            free(vb);
+        }
+        nd++;
+    }
+    json_decref(mine);
+    return nd;
 }
 
 /* summary.json of DIR: a finished one-parameter sweep in the continued key, listing states.csv. */

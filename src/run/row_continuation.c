@@ -28,6 +28,8 @@ static int on_branch(void *user, int done, int planned)
 gd_status gd_row_continuation_check(gd_case *c, gd_error *err)
 {
     gd_status st = gd_contin_check_case(c, err);
+    if (st == GD_OK)
+        st = gd_contin_overlays_check(c, err);
     if (st == GD_OK && c->cont_curve_start[0]) {
         gd_contin_curve_row *row = malloc(sizeof *row);
         st = row ? gd_contin_curve_row_read(c, row, err) : gd_error_set(err, GD_ERR_NOMEM, "out of memory");

@@ -160,6 +160,56 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < "$work/cusp-checks.txt"
 
+# the (Omega, F_m) plane (cases/continuation/kahraman-singh-mean-force.ini: F_a 0.1, F_m 0.02 to 1.1
+# through operating.torque_nm, 140.95389311789 N m per unit of F_m): every grazing-curve point on
+# the closed form F_a Omega^2 = F_m sqrt((1 - Omega^2)^2 + (2 zeta Omega)^2) to 1e-8; and while the
+# orbit stays off the back flank the oscillator's equation is homogeneous in the deflection from the
+# contact boundary (the piecewise-linear force k max(x - 1, 0)), so its curves depend on F_a / F_m
+# only: the cusp this plane locates is the cusp of the (Omega, F_a) plane at F_m 0.1 (the cusp case
+# above), F_a,cusp / 0.1 = 0.1 / F_m,cusp, to 1e-8 in both
+MF="$SRC/cases/continuation/kahraman-singh-mean-force.ini"
+"$G" run "$MF" --out "$work/mf" --quiet --set output.plots=off > "$work/mf.txt" 2>&1
+ok $? "the (Omega, F_m) case runs ($(head -c 300 "$work/mf.txt"))"
+python3 - "$work/mf" "$work/cusp/codim2.csv" > "$work/mf-checks.txt" <<'PY'
+import csv, json, math, sys
+d = sys.argv[1]
+scale, fm_nm = 3183.0988618379, 140.95389311789  # rpm per unit of Omega, N m per unit of F_m
+zeta, fa = 0.05, 0.1
+cv = list(csv.DictReader(open(d + "/curves.csv")))
+s = json.load(open(d + "/summary.json"))["results"]
+def ok(c, msg):
+    print(("PASS " if c else "FAIL ") + msg)
+ok(s["parameter2"] == "operating.torque_nm" and s["unit2"] == "N m", "summary.json names parameter2 operating.torque_nm, N m")
+g = [r for r in cv if r["kind"] == "grazing"]
+worst = max((abs(fa * om * om - fm * math.sqrt((1 - om * om) ** 2 + (2 * zeta * om) ** 2))
+             for om, fm in ((float(r["speed_rpm"]) / scale, float(r["torque_nm"]) / fm_nm) for r in g)), default=1)
+ok(len(g) > 50 and worst < 1e-8, "(Omega, F_m): %d grazing-curve points on F_a Omega^2 = F_m sqrt((1 - Omega^2)^2 + "
+   "(2 zeta Omega)^2) (worst %.2g)" % (len(g), worst))
+top = max(float(r["torque_nm"]) / fm_nm for r in g) if g else 0
+peak = fa / (2 * zeta * math.sqrt(1 - zeta * zeta))  # at Omega^2 = 1 / (1 - 2 zeta^2)
+ok(abs(top - peak) < 1e-3, "the grazing curve's largest F_m %.6f near its peak F_a / (2 zeta sqrt(1 - zeta^2)) = %.6f"
+   % (top, peak))
+kinds = sorted(c["kind"] for c in s["curves"])
+ok(kinds == ["fold"] * 4 + ["grazing"] * 2 + ["period-doubling"] * 2, "eight curves (%s)" % kinds)
+mine = [r for r in csv.DictReader(open(d + "/codim2.csv")) if r["kind"] == "cusp"]
+theirs = [r for r in csv.DictReader(open(sys.argv[2])) if r["kind"] == "cusp"]
+ok(len(mine) == 2, "the cusp, from both fold curves (%d rows)" % len(mine))
+if mine and theirs:
+    om_t, fa_t = float(theirs[0]["speed_rpm"]) / scale, float(theirs[0]["ste_amplitude_um"]) / 10.0
+    for r in mine:
+        om, fm = float(r["speed_rpm"]) / scale, float(r["torque_nm"]) / fm_nm
+        e_om, e_r = abs(om - om_t) / om_t, abs(fa / fm - fa_t / 0.1) / (fa_t / 0.1)
+        ok(e_om < 1e-8 and e_r < 1e-8, "curve %s's cusp (Omega %.10f, F_m %.10f) is the (Omega, F_a) plane's (Omega "
+           "%.10f, F_a %.10f) with F_a / F_m alike: %.2g in Omega, %.2g in F_a / F_m" % (r["curve"], om, fm, om_t, fa_t,
+                                                                                      e_om, e_r))
+print("# (Omega, F_m) curves:", [(c["kind"], c["direction"], c["points"], round(c["last"][0], 3), c["last"][1])
+                                 for c in s["curves"]])
+PY
+grep '^#' "$work/mf-checks.txt"
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < <(grep -E '^(PASS|FAIL)' "$work/mf-checks.txt")
+
 # convergence: every codimension-two point of the curve cases (the cusp, from both fold curves; the
 # curves of kahraman-singh-curves.ini locate none) moves by less than 1e-7 relative in both
 # parameters between solver.rtol 1e-9 and 1e-11 (atol 1e-12 and the case's newton_tol 1e-9)
@@ -245,5 +295,27 @@ mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-ch
 refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a neimark-sacker, which has no curve"
 refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
 refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
+
+# the picture's overlays: a regime map of the same plane (a sweep with parameter2, 4 x 3 points both
+# ways) under the curves, and an earlier run's curves in the same keys beside them (the cusp case's:
+# another range of the same keys) are taken and drawn; a map of another model, curves in other keys,
+# a one-parameter run's output, are refused before any work (without parameter2: tests/bad-input/19-continuation-overlays.txt)
+"$G" run "$KS" --out "$work/map" --quiet --set output.plots=off --set scene.analysis=sweep \
+    --set sweep.parameter=operating.speed_rpm --set sweep.from=1591.5494309189 --set sweep.to=4774.6482927569 \
+    --set sweep.points=4 --set sweep.parameter2=excitation.ste_amplitude_um --set sweep.from2=0.5 --set sweep.to2=2 \
+    --set sweep.points2=3 --set sweep.direction=both --set run.lyapunov_exponents=0 > "$work/map.txt" 2>&1
+ok $? "a regime map of the plane runs ($(head -c 300 "$work/map.txt"))"
+"$G" run "$KS" --out "$work/over" --quiet --set output.plots=on --set continuation.overlay_map="$work/map" \
+    --set continuation.overlay_curves="$work/cusp" > "$work/over.txt" 2>&1
+ok $? "the curves over the map and beside the cusp case's curves run ($(head -c 300 "$work/over.txt"))"
+if command -v gnuplot > /dev/null; then
+    [ -s "$work/over/curves.png" ] && grep -q "over the regime map map" "$work/over/curves.svg" &&
+        grep -q "thin grey: the curves of cusp" "$work/over/curves.svg"
+    ok $? "curves.png drawn over the map, the cusp case's curves named in its key"
+fi
+refuse continuation.overlay_map="$work/map" "continuation.overlay_map: the sweep in .*map is of another model: damping.mesh_damping_ratio = 0.05 there, 0.07 here \(valid: a sweep of this case, which may differ in operating.speed_rpm and excitation.ste_amplitude_um only\)" damping.mesh_damping_ratio=0.07
+refuse continuation.overlay_map="$work/one-1.01" "continuation.overlay_map: .*one-1.01 holds the output of continuation, not of a sweep"
+refuse continuation.overlay_curves="$work/mf" "continuation.overlay_curves: the continuation in .*mf followed curves in operating.speed_rpm and operating.torque_nm \(valid: curves in continuation.parameter = operating.speed_rpm and parameter2 = excitation.ste_amplitude_um\)"
+refuse continuation.overlay_curves="$work/one-1.01" "continuation.overlay_curves: the continuation in .*one-1.01 followed no curves"
 echo "1..$n"
 [ $bad -eq 0 ]

@@ -4,7 +4,8 @@
 or shortened with --set where it is long (the table SHORTEN says how; the shortenings keep what
 the pictures show); the variants (VARIANTS) add the pictures no shipped case draws as written: a
 regime map, TCA and LTCA of single pairs, other response variables, the paper's 25-point speed
-sweep (its resonance off the Poincare panel's scale), a continuation with a sweep over it.
+sweep (its resonance off the Poincare panel's scale), a continuation with a sweep over it, curves over a
+regime map and beside another case's curves.
 
 The checks of every picture:
   frame     no drawn point on or beyond a panel's frame, unless a curve ends there because its
@@ -42,7 +43,9 @@ contact_pattern.png draws a path, not a scatter; continuation.png's markers each
 shape (a sweep's points are not bifurcations) and every row of bifurcations.csv drawn as a marker
 of its kind (branch points too), a marker of lines or an outline drawn over one of another kind
 (a branch point on its fold) 1.4 times its size so that both show; the optimiser comparison draws no overlapping
-translucent bands.
+translucent bands; curves.png over a regime map names in its key exactly the map's classes of motion, every
+region it names lies on cells of that motion's colour, and an earlier run's curves beside them are drawn
+with their key entry.
 
 The SVG is drawn with the PNG's font size in pixels (src/plot/figure.h), so its layout is the PNG's.
 
@@ -165,6 +168,16 @@ VARIANTS = [
     ('ks-fractions-continuation', 'cases/basins/ks-fractions.ini',
      ['basins.points=5', 'basins.samples=200', 'basins.continuation={before}'],
      ('cases/continuation/kahraman-singh.ini', ['output.plots=off'])),
+    # the curves in (Omega, F_a) over a coarse regime map of the same plane ({before}), beside the
+    # curves at another mesh damping ({before2}: the case before a modification)
+    ('ks-curves-overlays', 'cases/continuation/kahraman-singh-curves.ini',
+     ['continuation.overlay_map={before}', 'continuation.overlay_curves={before2}'],
+     [('cases/continuation/kahraman-singh-curves.ini',
+       ['scene.analysis=sweep', 'sweep.parameter=operating.speed_rpm', 'sweep.from=1591.5494309189',
+        'sweep.to=4774.6482927569', 'sweep.points=11', 'sweep.parameter2=excitation.ste_amplitude_um',
+        'sweep.from2=0.5', 'sweep.to2=2', 'sweep.points2=6', 'sweep.direction=both', 'run.lyapunov_exponents=0',
+        'output.plots=off']),
+      ('cases/continuation/kahraman-singh-curves.ini', ['damping.mesh_damping_ratio=0.07', 'output.plots=off'])]),
 ]
 
 # the sanitizer build: one run per kind of picture
@@ -197,16 +210,18 @@ def run_one(exe, src, work, item):
     name, case, sets, before = item
     out = os.path.join(work, out_name(name))
     pre = out + '-before'
-    if before:
-        args = [exe, 'run', os.path.join(src, before[0]), '--out', pre, '--quiet', '--threads', '1']
-        for s in before[1]:
+    befores = before if isinstance(before, list) else [before] if before else []
+    for i, b in enumerate(befores):   # {before}, {before2}, ...: WORK/NAME-before, WORK/NAME-before2
+        args = [exe, 'run', os.path.join(src, b[0]), '--out', pre + (str(i + 1) if i else ''), '--quiet',
+                '--threads', '1']
+        for s in b[1]:
             args += ['--set', s]
         p = subprocess.run(args, cwd=work, stdin=subprocess.DEVNULL, capture_output=True, timeout=900)
         if p.returncode != 0:
             return name, case, out, p.returncode, p.stderr.decode('utf-8', 'replace')
     args = [exe, 'run', os.path.join(src, case), '--out', out, '--quiet', '--threads', '1']
     for s in sets:
-        args += ['--set', s.replace('{before}', pre)]
+        args += ['--set', s.replace('{before2}', pre + '2').replace('{before}', pre)]
     p = subprocess.run(args, cwd=work, stdin=subprocess.DEVNULL, capture_output=True, timeout=900)
     return name, case, out, p.returncode, p.stderr.decode('utf-8', 'replace')
 
@@ -997,6 +1012,62 @@ def check_bands(fig, bad):
             return
 
 
+REGIMES = ['in contact', 'single-sided', 'double-sided']
+REGION_RGB = [(0xEE, 0xEE, 0xEE), (0xC6, 0xDF, 0xF4), (0xFB, 0xE6, 0xA8), (0xC4, 0xC4, 0xC4), (0x86, 0xB6, 0xE3),
+              (0xE8, 0xBE, 0x5A)]
+REGION_WORD = {'no-impact': 'in contact', 'single-sided': 'single-sided', 'double-sided': 'double-sided'}
+
+
+def region_colour(name):
+    """The background colour of a motion named in a region's label: 'single-sided, period 2'."""
+    regime, _, motion = name.partition(', ')
+    return REGION_RGB[REGIMES.index(regime) + (3 if motion else 0)]
+
+
+def check_curves_overlays(fig, outdir, summary, bad):
+    """curves.svg over a regime map (continuation.overlay_map): the key names every class of motion
+    the map's cells have, and only those; every region named inside the frame lies on cells of its
+    motion's colour (a name 'A or B': the cells split between the sweeps up and down); with
+    continuation.overlay_curves, the earlier run's curves are drawn and the key says where that run
+    differs."""
+    cont = summary.get('case', {}).get('parameters', {}).get('continuation', {})
+    mp = (cont.get('overlay_map') or {}).get('value') or ''
+    oc = (cont.get('overlay_curves') or {}).get('value') or ''
+    keytexts = [t.s for p in fig.plots.values() for t in p.key_texts]
+    if mp:
+        d = mp if os.path.isabs(mp) else os.path.join(os.path.dirname(outdir), mp)
+        want = set()
+        for r in csv.DictReader(open(os.path.join(d, 'sweep.csv'), encoding='utf-8')):
+            if r['status'] == 'done' and r['impact_regime'] in REGION_WORD:
+                want.add('%s, %s' % (REGION_WORD[r['impact_regime']],
+                                     'period 1' if r['motion'] == 'period-1' else 'other motion'))
+        got = {t for t in keytexts if re.match(r'^(in contact|single-sided|double-sided), ', t)}
+        if got != want:
+            bad.append('overlay: the key names the motions %s, the map has %s' % (sorted(got), sorted(want)))
+        fills = [(e.fill, list(e.points())) for p in fig.plots.values() for e in p.elements
+                 if e.kind == 'fill' and e.fill]
+        rx = re.compile(r'^(in contact|single-sided|double-sided)(, [a-z0-9 -]+?)?( or (in contact|single-sided|'
+                        r'double-sided)(, [a-z0-9 -]+?)?)?$')
+        frame = fig.panels[0].frame if fig.panels else None
+        named = [t for t in fig.texts if frame and frame.contains(t.x, t.y) and rx.match(t.s)]
+        if not named:
+            bad.append('overlay: no region of the map named inside the frame')
+        for t in named:
+            colours = {region_colour(n) for n in t.s.split(' or ')}
+            cx, cy = (t.box.x0 + t.box.x1) / 2, (t.box.y0 + t.box.y1) / 2
+            under = [f for f, pts in fills if pts and min(x for x, _ in pts) <= cx <= max(x for x, _ in pts) and
+                     min(y for _, y in pts) <= cy <= max(y for _, y in pts)]
+            if not under or under[-1] not in colours:
+                bad.append('overlay: the region named %r lies on rgb%r, not on its colour' %
+                           (t.s, under[-1] if under else None))
+    if oc:
+        grey = [p for p in fig.plots.values() if any(t.s.startswith('thin grey: ') for t in p.key_texts)]
+        drawn = [e for p in fig.plots.values() for e in p.elements if e.kind == 'path' and e.colour == (128, 128, 128)]
+        if len(grey) != 1 or not drawn:
+            bad.append('overlay: the earlier curves are %s, their key entry %s' %
+                       ('drawn' if drawn else 'not drawn', 'found' if len(grey) == 1 else 'missing'))
+
+
 def check_picture(path, outdir, keys, single, summary):
     fig = svgfig.Figure(path)
     bad = []
@@ -1046,6 +1117,8 @@ def check_picture(path, outdir, keys, single, summary):
         check_coincident_markers(fig, bad)
     if name in ('convergence.svg', 'ecdf.svg'):
         check_bands(fig, bad)
+    if name == 'curves.svg':
+        check_curves_overlays(fig, outdir, summary, bad)
     return bad
 
 
