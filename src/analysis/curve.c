@@ -994,6 +994,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
          * range: backlash 0): the point on the bound ends the curve, as for a step that crosses it */
         int qf = -1;
         double pf = NAN;
+        char bound_fail[GD_ERROR_MSG_MAX + 96] = "";
         if (st == GD_ERR_INPUT) {
             double frac = INFINITY;
             for (int k = 0; k < 2; k++) {
@@ -1011,8 +1012,13 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                 else if (sb2 == GD_ERR_NOMEM || sb2 == GD_ERR_INTERRUPTED) {
                     st = gd_error_set(err, sb2, "%s", e2.msg);
                     goto done;
-                } else
+                } else {
+                    snprintf(bound_fail, sizeof bound_fail, "; on the bound %s = %.10g: %s",
+                             co->words.bound_key[qf][pf >= co->p_max[qf]] ? co->words.bound_key[qf][pf >= co->p_max[qf]]
+                                                                          : qf ? "p2" : "p1",
+                             p_value(C, qf, pf), e2.msg);
                     qf = -1;
+                }
             }
         }
         double turn = st == GD_OK ? dot_w(C, a->t, b->t) : 0.0;
@@ -1023,7 +1029,8 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             turn = 1.0;
         if (st == GD_ERR_INPUT) { /* the model is not valid there */
             if (ds <= co->ds_min) {
-                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond %s: %s", PP(a->u), e1.msg);
+                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond %s: %s%s", PP(a->u), e1.msg,
+                         bound_fail);
                 st = GD_OK;
                 goto done;
             }
