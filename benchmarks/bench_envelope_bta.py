@@ -14,7 +14,7 @@ rectangle of the two points widened by one grid spacing in speed and in torque. 
 are listed with their classes.
 
   bench_envelope_bta.py GEARDYN SOURCE [N1 N2] [modified|unmodified]
-  bench_envelope_bta.py --check CURVES.csv SWEEP.csv N1 N2     (the comparison only, on finished runs)
+  bench_envelope_bta.py --check CURVES.csv SWEEP.csv     (the comparison only, on finished runs)
 
 Not a test: it times runs (tens of minutes of CPU).
 """
@@ -39,11 +39,13 @@ def run(geardyn, args, out):
 
 
 def polylines(path):
-    """the curves of curves.csv: {curve: (kind, [(speed, torque), ...])}"""
+    """the curves of curves.csv: {curve: (kind, [(speed, second key), ...])} (the second key: its 8th column)"""
     cv = {}
-    for r in csv.DictReader(open(path)):
+    rd = csv.DictReader(open(path))
+    k2 = rd.fieldnames[7]
+    for r in rd:
         cv.setdefault(r['curve'], (r['kind'] + ('' if r['clearance'] in ('', '-') else ' of ' + r['clearance']), []))
-        cv[r['curve']][1].append((float(r['speed_rpm']), float(r['torque_nm'])))
+        cv[r['curve']][1].append((float(r['speed_rpm']), float(r[k2])))
     return cv
 
 
@@ -57,17 +59,29 @@ def through(poly, x0, x1, y0, y1):
     return False
 
 
-def check(curves_csv, sweep_csv, n1, n2):
-    """every boundary of the map (sweep.csv, n1 x n2 points) on a curve of curves.csv within one grid spacing"""
-    s1, s2, t1, t2 = S1, S2, T1, T2
+def crosses(poly, x0, x1, y):
+    """whether the polyline crosses the segment [x0, x1] x {y}"""
+    for (a, b), (c, d) in zip(poly, poly[1:]):
+        if (b - y) * (d - y) <= 0 and b != d:
+            x = a + (c - a) * (y - b) / (d - b)
+            if x0 <= x <= x1:
+                return True
+    return False
+
+
+def check(curves_csv, sweep_csv):
+    """every boundary of the map (sweep.csv of a regular grid) on a curve of curves.csv within one grid spacing"""
     cv = polylines(curves_csv)
-    h1, h2 = (s2 - s1) / (n1 - 1), (t2 - t1) / (n2 - 1)
+    k2 = next(csv.reader(open(curves_csv)))[7]
     rows = list(csv.DictReader(open(sweep_csv)))
+    g1 = sorted({float(x['parameter']) for x in rows})
+    g2 = sorted({float(x['parameter2']) for x in rows})
+    h1, h2 = (g1[-1] - g1[0]) / (len(g1) - 1), (g2[-1] - g2[0]) / (len(g2) - 1)
     chains = {}
     for x in rows:
         chains.setdefault((x['direction'], float(x['parameter2'])), []).append(x)
     def boundaries(key):
-        n, missed = 0, []
+        n, strict, missed = 0, 0, []
         for (d, tq), ch in sorted(chains.items()):
             ch.sort(key=lambda x: float(x['parameter']))
             for a, b in zip(ch, ch[1:]):
@@ -76,24 +90,26 @@ def check(curves_csv, sweep_csv, n1, n2):
                     continue
                 n += 1
                 sa, sb = float(a['parameter']), float(b['parameter'])
+                strict += any(crosses(poly, min(sa, sb), max(sa, sb), tq) for kind, poly in cv.values())
                 if not any(through(poly, min(sa, sb) - h1, max(sa, sb) + h1, tq - h2, tq + h2)
                            for kind, poly in cv.values()):
-                    missed.append('%s at %.0f N m, %.0f rpm %s -> %.0f rpm %s' % (d, tq, sa, ka, sb, kb))
-        return n, missed
+                    missed.append('%s at %s = %.6g, %.0f rpm %s -> %.0f rpm %s' % (d, k2, tq, sa, ka, sb, kb))
+        return n, strict, missed
 
     motion = lambda x: 'period-%s' % x['period_n'] if x['motion'].startswith('period') else x['motion']
     for what, key in (('jumps of the map (the motion class changes between neighbouring speeds of a chain)', motion),
                       ('changes of the mesh\'s impact regime (no-impact, single-, double-sided)',
                        lambda x: x['impact_regime'])):
-        n, missed = boundaries(key)
-        print('%s: %d, on a curve within one grid spacing (%.0f rpm, %.0f N m): %d' % (what, n, h1, h2, n - len(missed)))
+        n, strict, missed = boundaries(key)
+        print('%s: %d; a curve crosses the row between the two points: %d; a curve passes within one grid spacing '
+              '(%.4g rpm, %.4g in %s) of them: %d' % (what, n, strict, h1, h2, k2, n - len(missed)))
         for m_ in missed:
             print('  not on a curve: ' + m_)
 
 
 def main(argv):
-    if argv[1] == '--check':  # the comparison only, on finished runs: --check CURVES.csv SWEEP.csv N1 N2
-        check(argv[2], argv[3], int(argv[4]), int(argv[5]))
+    if argv[1] == '--check':  # the comparison only, on finished runs: --check CURVES.csv SWEEP.csv
+        check(argv[2], argv[3])
         return 0
     geardyn, src = argv[1], argv[2]
     rest = argv[3:]
@@ -126,7 +142,7 @@ def main(argv):
         print('the regime map, %d x %d points both ways: CPU %.1f s, %.2f s per grid point; scaled to 101 x 101 '
               '(each boundary to 1 %% of each range): %.0f s; the envelope is %.3f of it (target < 0.1: %s)'
               % (n1, n2, cpu_m, cpu_m / (n1 * n2), full, cpu_e / full, 'met' if cpu_e < 0.1 * full else 'NOT met'))
-        check(os.path.join(tmp, 'env', 'curves.csv'), os.path.join(mp, 'sweep.csv'), n1, n2)
+        check(os.path.join(tmp, 'env', 'curves.csv'), os.path.join(mp, 'sweep.csv'))
     return 0
 
 
