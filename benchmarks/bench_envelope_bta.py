@@ -13,7 +13,7 @@ not-periodic) must lie on a curve to within the map's grid spacing, i.e. some cu
 rectangle of the two points widened by one grid spacing in speed and in torque. The jumps not on a curve
 are listed with their classes.
 
-  bench_envelope_bta.py GEARDYN SOURCE [N1 N2] [modified|unmodified]
+  bench_envelope_bta.py GEARDYN SOURCE [N1 N2] [modified|unmodified] [-- section.key=value ...]
   bench_envelope_bta.py --check CURVES.csv SWEEP.csv     (the comparison only, on finished runs)
 
 Not a test: it times runs (tens of minutes of CPU).
@@ -113,10 +113,14 @@ def main(argv):
         return 0
     geardyn, src = argv[1], argv[2]
     rest = argv[3:]
+    extra = []  # after '--': section.key=value set on both runs (a quick look: -- continuation.curve_max_points=3)
+    if '--' in rest:
+        extra = [x for kv in rest[rest.index('--') + 1:] for x in ('--set', kv)]
+        rest = rest[:rest.index('--')]
     variant = [a for a in rest if a in ('modified', 'unmodified')]
     nums = [int(a) for a in rest if a.isdigit()]
     n1, n2 = nums[:2] if len(nums) >= 2 else (11, 5)
-    mod = ['--set', 'modification.apply=off'] if variant == ['unmodified'] else []
+    mod = (['--set', 'modification.apply=off'] if variant == ['unmodified'] else []) + extra
     case = os.path.join(src, 'cases', 'continuation', 'paper-curves-torque.ini')
     with tempfile.TemporaryDirectory() as tmp:
         cpu_e, s = run(geardyn, [case] + mod, os.path.join(tmp, 'env'))
