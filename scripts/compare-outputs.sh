@@ -79,6 +79,10 @@ SHORTEN=(
   # a continuation drawn over another case's sweep, whose results a fresh tree lacks: without them.
   'cases/guide/*-continuation.ini'
   'continuation.overlay_sweep='
+  # the paper's pair's curves in two parameters (10-20 min of CPU in (speed, torque): an LTCA at every
+  # new torque): the branch to 3600 rpm and 3 points per curve.
+  'cases/continuation/paper-curves-*.ini'
+  'continuation.to=3600 continuation.curve_max_points=3'
 )
 
 # Allowed to differ. JSON keys (any depth): geardyn_version; wall_s (solver/optimiser/LTCA/TCA/

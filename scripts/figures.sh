@@ -102,6 +102,22 @@ if wanted continuation-curves-kahraman-singh-mean-force; then
     run kahraman-singh-mean-force cases/continuation/kahraman-singh-mean-force.ini
     fig continuation-curves-kahraman-singh-mean-force kahraman-singh-mean-force/curves.png
 fi
+# docs/continuation.md section 8: the paper's pair in (speed, torque) and (speed, backlash), modified and
+# unmodified (the torque planes are the long runs: LTCA at every new torque)
+for v in modified unmodified; do
+    set_mod=()
+    [ $v = unmodified ] && set_mod=(--set modification.apply=off)
+    if wanted continuation-curves-paper-torque-$v; then
+        run paper-curves-torque-$v cases/continuation/paper-curves-torque.ini "${set_mod[@]}" \
+            --set "scene.title=The paper's pair, $v: curves in speed and torque"
+        fig continuation-curves-paper-torque-$v paper-curves-torque-$v/curves.png
+    fi
+    if wanted continuation-curves-paper-backlash-$v; then
+        run paper-curves-backlash-$v cases/continuation/paper-curves-backlash.ini "${set_mod[@]}" \
+            --set "scene.title=The paper's pair, $v: curves in speed and backlash"
+        fig continuation-curves-paper-backlash-$v paper-curves-backlash-$v/curves.png
+    fi
+done
 
 # docs/paper-reproduction.md: the speed sweeps, and the sweep beside its continuation
 if wanted paper-speed-100-8000rpm-modified; then

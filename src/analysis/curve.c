@@ -990,13 +990,47 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             st = gd_error_set(err, st, "%s", e1.msg);
             goto done;
         }
+        /* the model is not valid at a prediction beyond the box (a bound of the box on the edge of the key's
+         * range: backlash 0): the point on the bound ends the curve, as for a step that crosses it */
+        int qf = -1;
+        double pf = NAN;
+        char bound_fail[GD_ERROR_MSG_MAX + 96] = "";
+        if (st == GD_ERR_INPUT) {
+            double frac = INFINITY;
+            for (int k = 0; k < 2; k++) {
+                double x0 = a->u[N + k], x1 = x0 + ds * a->t[N + k], lo = co->p_min[k], hi = co->p_max[k];
+                double bnd = x1 < lo ? lo : x1 > hi ? hi : NAN;
+                double f = isnan(bnd) || x1 == x0 ? INFINITY : (bnd - x0) / (x1 - x0);
+                if (f < frac)
+                    frac = f, qf = k, pf = bnd;
+            }
+            if (qf >= 0) {
+                gd_error e2 = {0};
+                gd_status sb2 = bound_point(C, a, qf, pf, b, &e2);
+                if (sb2 == GD_OK)
+                    st = GD_OK;
+                else if (sb2 == GD_ERR_NOMEM || sb2 == GD_ERR_INTERRUPTED) {
+                    st = gd_error_set(err, sb2, "%s", e2.msg);
+                    goto done;
+                } else {
+                    snprintf(bound_fail, sizeof bound_fail, "; on the bound %s = %.10g: %s",
+                             co->words.bound_key[qf][pf >= co->p_max[qf]] ? co->words.bound_key[qf][pf >= co->p_max[qf]]
+                                                                          : qf ? "p2" : "p1",
+                             p_value(C, qf, pf), e2.msg);
+                    qf = -1;
+                }
+            }
+        }
         double turn = st == GD_OK ? dot_w(C, a->t, b->t) : 0.0;
         int too_far = 0;
-        for (int k = 0; k < 2 && st == GD_OK; k++)
+        for (int k = 0; k < 2 && st == GD_OK && qf < 0; k++)
             too_far |= fabs(b->u[N + k] - a->u[N + k]) > C->dp_max[k];
+        if (qf >= 0)
+            turn = 1.0;
         if (st == GD_ERR_INPUT) { /* the model is not valid there */
             if (ds <= co->ds_min) {
-                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond %s: %s", PP(a->u), e1.msg);
+                end_with(C->cv, GD_CEND_INVALID, "the model is not valid beyond %s: %s%s", PP(a->u), e1.msg,
+                         bound_fail);
                 st = GD_OK;
                 goto done;
             }
@@ -1015,12 +1049,13 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             ds = fmax(st == GD_OK && turn >= 0.5 ? 0.5 * ds : 0.5 * ds, co->ds_min);
             continue;
         }
-        double pbnd = NAN;
-        int qb = crossed_bound(C, a, b, &pbnd);
+        double pbnd = pf;
+        int qb = qf >= 0 ? qf : crossed_bound(C, a, b, &pbnd);
         int ended = 0;
         double sb = ds;
         if (qb >= 0) { /* the point on the bound replaces b */
-            st = bound_point(C, a, qb, pbnd, b, &e1);
+            if (qf < 0)
+                st = bound_point(C, a, qb, pbnd, b, &e1);
             if (st != GD_OK) {
                 end_with(C->cv, GD_CEND_BOUND, "the curve leaves the box after %s (no point on the bound: "
                          "%s)", PP(a->u), e1.msg);

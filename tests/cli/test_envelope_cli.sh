@@ -271,6 +271,35 @@ while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
 done < "$work/gf-checks.txt"
 
+# a bound of the box on the edge of the key's range: in (Omega, zeta) with parameter2_from = 0 (zeta
+# below 0 is refused by the case) the curves followed down in zeta end on the bound zeta = 0, the
+# grazing curve where F_a Omega^2 = F_m |1 - Omega^2| (F_a = F_m: Omega^2 = 1/2), to 1e-8; not on a
+# model out of its range a step short of it
+"$G" run "$KS" --out "$work/z0" --quiet --set output.plots=off --set continuation.parameter2=damping.mesh_damping_ratio \
+    --set continuation.parameter2_from=0 --set continuation.parameter2_to=0.1 > "$work/z0.txt" 2>&1
+ok $? "the (Omega, zeta) plane down to zeta 0 runs ($(head -c 300 "$work/z0.txt"))"
+python3 - "$work/z0" <<'PY' > "$work/z0-checks.txt"
+import csv, json, math, sys
+d = sys.argv[1]
+curves = json.load(open(d + "/summary.json"))["results"]["curves"]
+down = [c for c in curves if c["direction"] == "down" and "continuation.from =" not in c["end_reason"]]  # not the lower fold's
+ends = [(c["kind"], c["end"], c["end_reason"][:80]) for c in down]
+print(("PASS " if len(down) == 3 and all(c["end"] == "bound" and "continuation.parameter2_from = 0 at" in c["end_reason"]
+                                          for c in down) else "FAIL ")
+      + "the grazing, upper fold and period-doubling curves down in zeta end on the bound zeta = 0 (%s)" % ends)
+last = {}
+for r in csv.DictReader(open(d + "/curves.csv")):
+    if r["direction"] == "down" and r["kind"] == "grazing":
+        last = r
+om = float(last["speed_rpm"]) / 3183.0988618379
+e = abs(om - math.sqrt(0.5)) / math.sqrt(0.5)
+print(("PASS " if float(last["mesh_damping_ratio"]) == 0 and e < 1e-8 else "FAIL ")
+      + "the grazing curve's end at zeta %s, Omega %.10f: 1/sqrt(2) to %.2g" % (last["mesh_damping_ratio"], om, e))
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/z0-checks.txt"
+
 # refusals: exit 2, file:line and key named, nothing written
 refuse() { # key=value, pattern of the message[, another key=value]
     local o="$work/bad"

@@ -110,6 +110,8 @@ SHORTEN = [
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
+    # the paper's pair's curves in two parameters: the branch to 3600 rpm and 3 points per curve
+    ('cases/continuation/paper-curves-*.ini', ['continuation.to=3600', 'continuation.curve_max_points=3']),
     # two objectives on the gear: 8 evaluations of 4 ants, coarse LTCA
     ('cases/paper/pareto-lte-dynamic.ini', ['optimize.iterations=1', 'optimize.population=4',
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
