@@ -196,8 +196,11 @@ gd_status gd_summary_write_compare(gd_run_dir *d, const gd_case *c, const gd_opt
         json_object_set_new(o, "objective", json_string(gd_opt_objective_name(pb[p].objective)));
         json_object_set_new(o, "dimension", json_integer(pb[p].dim));
         json_object_set_new(o, "shift", gd_json_num(pb[p].shift));
-        json_object_set_new(o, "objective_unit", json_string(pb[p].nobj == 2 ? "" : pb[p].objective == GD_OBJ_GEAR_LTE ?
-                                                             "arcsec" : ""));
+        /* two objectives: the hypervolume's, the product of the gear's two (LTE and the dynamic response) */
+        const char *two_unit = pb[p].objective != GD_OBJ_GEAR_LTE ? ""
+                               : c->opt_dynamic_response == GD_DYN_DTE_PP ? "arcsec um" : "arcsec m/s^2";
+        json_object_set_new(o, "objective_unit", json_string(pb[p].nobj == 2 ? two_unit
+                                                             : pb[p].objective == GD_OBJ_GEAR_LTE ? "arcsec" : ""));
         if (pb[p].nobj == 2) { /* two objectives: every value is a hypervolume shortfall (section 13) */
             json_object_set_new(o, "objectives", json_integer(2));
             json_object_set_new(o, "value", json_string("the hypervolume shortfall: the area of the reference box "

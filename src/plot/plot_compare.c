@@ -36,7 +36,7 @@ static void panel_box(const grid *g, int cell, double *l, double *r, double *b, 
     *b = 1 - (60 + (row + 1) * ph - 55) / g->H;
 }
 
-static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
+static void draw(const gd_plotter *pl, const gd_compare_outcome *C, const char *hv_unit)
 {
     const gd_opt_compare_result *r0 = &C->p[0].res;
     gd_plot_script s = {0};
@@ -71,7 +71,7 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
                               pic == 0 ? r0->budget * 1.8 : (double)r0->budget);
             if (pic == 0 && two)
                 gd_plot_printf(&s, "set logscale y\nset format y '%%g'\nset ylabel 'hypervolume below the "
-                                      "reference HV_{ref} - HV (%s)'\n", gear ? "arcsec m/s²" : "-");
+                                      "reference HV_{ref} - HV (%s)'\n", gear ? hv_unit : "-");
             else if (pic == 0)
                 gd_plot_printf(&s, "set logscale y\nset format y '%%g'\nset ylabel 'best value minus the reference "
                                       "f - f_{ref} (%s)'\n", gear ? "arcsec" : "-");
@@ -190,6 +190,6 @@ static void draw(const gd_plotter *pl, const gd_compare_outcome *C)
 }
 void gd_plot_compare(const gd_plotter *p, const gd_case *c, const gd_compare_outcome *o)
 {
-    if (gd_plot_wanted(p, c->plots))
-        draw(p, o);
+    if (gd_plot_wanted(p, c->plots)) /* the gear's hypervolume: the LTE times the dynamic response */
+        draw(p, o, c->opt_dynamic_response == GD_DYN_DTE_PP ? "arcsec µm" : "arcsec m/s²");
 }

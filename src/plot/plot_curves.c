@@ -428,12 +428,13 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
     if (o && o->n > 0)
         old_blocks(s, o, old_present);
     /* the codimension-two points' labels: one per point (the same point found from two curves, or
-     * points of different kinds at one place, share one label: "CP", "GF, DG") */
+     * points of different kinds at one place, share one label: "CP", "GF, DG"), and points closer
+     * than a label's size (7 % of the x range, 4 % of the y range) share one, which would overlap */
     static const char *c2_words[] = {"cusp", "fold-flip", "1:1", "1:2", "1:3", "1:4", "grazing on a fold",
                                      "grazing on a period doubling", "grazing on a Neimark-Sacker point",
                                      "double grazing"};
     int c2_present[GD_C2_DOUBLE_GRAZING + 1] = {0}, nc2 = 0, nl = 0;
-    double dx = 0.01 * (x1 - x0), dy = 0.01 * (y1 - y0);
+    double dx = 0.07 * (x1 - x0), dy = 0.04 * (y1 - y0);
     struct { double x, y; char text[40]; } lab[64];
     for (int i = 0; i < res->ncurves; i++)
         for (int j = 0; j < res->curve[i].cv.nc2; j++) {

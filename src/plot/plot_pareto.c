@@ -71,7 +71,9 @@ static void draw(const gd_plotter *pl, const gd_case *c, const gd_optimize_outco
                                "within (%.4g, %.4g), the true front's %.6g\"\n",
                            gd_optimizer_words(c->opt_algorithm), what, b->nfront, b->evaluations, b->hv,
                            P->hv_ref[0], P->hv_ref[1], P->true_front_hv);
-        gd_plot_printf(&s, "set xlabel '%s'\nset ylabel '%s'\nset xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n"
+        /* room for the tick labels, the axis label and the key's rows below (gnuplot's own margin
+         * lets the label touch the key) */
+        gd_plot_printf(&s, "set bmargin 7\nset xlabel '%s'\nset ylabel '%s'\nset xrange [%.10g:%.10g]\nset yrange [%.10g:%.10g]\n"
                            "set key outside below horizontal spacing %.3f\n",
                        P->label[0], P->label[1], xa, xb, ya, yb, GD_KEY_SPACING(fi, 1.2));
         /* the front's points (for a test problem with the boundary of what they dominate, a staircase:

@@ -371,16 +371,18 @@ ok $? "gear-dynamic: response_over_speed.csv and lte_over_torque.csv the same wi
 # progress on a terminal (script(1) gives the run one): the evaluations of all the runs with the time left,
 # ending at the whole budget; none when stderr is not a terminal
 if command -v script > /dev/null; then
-    script -qec "\"$G\" run \"$SRC/cases/paper/optimize-alo.ini\" --out \"$work/tty\" --set optimize.iterations=3 \
-        --set optimize.population=10 --set optimize.runs=2 --set solver.ltca_positions_per_cycle=8 \
-        --set solver.ltca_face_slices=7 --set output.plots=off" /dev/null < /dev/null | tr '\r' '\n' > "$work/tty.txt"
-    grep -q "^geardyn: optimize [0-9]*/80 evaluations ([0-9]*%), .* per s, about [0-9]* s left" "$work/tty.txt" &&
-        grep -q "^geardyn: optimize 80/80 evaluations (100%)" "$work/tty.txt" &&
+    # 200 evaluations on the case's own LTCA grid (a second or more: 80 on a coarse grid end within the
+    # first quarter of a second, before any line but the last)
+    script -qec "\"$G\" run \"$SRC/cases/paper/optimize-alo.ini\" --out \"$work/tty\" --set optimize.iterations=9 \
+        --set optimize.population=10 --set optimize.runs=2 --set output.plots=off" /dev/null < /dev/null |
+        tr '\r' '\n' > "$work/tty.txt"
+    grep -q "^geardyn: optimize [0-9]*/200 evaluations ([0-9]*%), .* per s, about [0-9]* s left" "$work/tty.txt" &&
+        grep -q "^geardyn: optimize 200/200 evaluations (100%)" "$work/tty.txt" &&
         "$G" run "$SRC/cases/paper/optimize-alo.ini" --out "$work/notty" --set optimize.iterations=3 \
             --set optimize.population=10 --set solver.ltca_positions_per_cycle=8 --set solver.ltca_face_slices=7 \
             --set output.plots=off > /dev/null 2> "$work/notty.txt" &&
         ! grep -q "evaluations (" "$work/notty.txt"
-    ok $? "progress on a terminal: evaluations of both runs with the time left, to 80/80"
+    ok $? "progress on a terminal: evaluations of both runs with the time left, to 200/200"
 else
     ok 0 "# SKIP script(1) is not installed"
 fi

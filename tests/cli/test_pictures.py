@@ -111,7 +111,11 @@ SHORTEN = [
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
     # the paper's pair's curves in two parameters: the branch to 3600 rpm and 3 points per curve
-    ('cases/continuation/paper-curves-*.ini', ['continuation.to=3600', 'continuation.curve_max_points=3']),
+    # the paper's pair's curves: the backlash plane whole (about 15 s of CPU); the torque plane (an LTCA at
+    # every new torque: 30 minutes whole) around the two bearing grazings at 3496 and 3510 rpm, 400-600 N m
+    ('cases/continuation/paper-curves-torque.ini', ['continuation.from=3300', 'continuation.to=3700',
+                                                    'continuation.parameter2_from=400',
+                                                    'continuation.parameter2_to=600']),
     # two objectives on the gear: 8 evaluations of 4 ants, coarse LTCA
     ('cases/paper/pareto-lte-dynamic.ini', ['optimize.iterations=1', 'optimize.population=4',
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
@@ -241,7 +245,8 @@ SUFFIX_UNITS = [  # column suffix -> the unit as a picture writes it (and its sc
 ]
 SUMMARY_UNITS = {'um': ['µm', 'mm'], 'mm': ['mm'], 'rpm': ['rpm'], 'kW': ['kW'], 'N m': ['N m'], 'N/m': ['N/m', 'N/µm'],
                  'deg': ['deg', '°'], 'per mesh period': ['per mesh period'], 'arcsec': ['arcsec'],
-                 'm/s^2': ['m/s²'], 'GPa': ['GPa'], 'arcmin': ['arcmin'], '': ['-']}
+                 'm/s^2': ['m/s²'], 'GPa': ['GPa'], 'arcmin': ['arcmin'], '': ['-'],
+                 'arcsec m/s^2': ['arcsec m/s²'], 'arcsec um': ['arcsec µm']}
 # words of a quantity with a dimension: its label may not say "(-)"
 DIMENSIONAL = re.compile(r'deflection|displacement|acceleration|speed|power|backlash|clearance|torque|stiffness|'
                          r'load|pressure|\btime\b|frequency|amplitude|transmission error|velocity|rate\b|'
