@@ -156,6 +156,26 @@ if wanted opt-gear3030-convergence; then
         --set optimize.budget_evals=3030 --set optimize.population=30 --threads 2
     fig opt-gear3030-convergence compare-optimizers-3030/convergence.png
 fi
+# docs/optimisation.md section 12: the dynamic objective over load and speed (1240 evaluations of
+# three LTCAs and continuations: tens of minutes of CPU), section 13: the two-objective optimisers
+# on the gear
+if wanted opt-dyn-convergence opt-dyn-response opt-dyn-harris opt-dyn-load-optimum opt-dyn-load-case; then
+    run optimize-dynamic cases/paper/optimize-dynamic.ini --threads 2
+    fig opt-dyn-convergence optimize-dynamic/convergence.png
+    fig opt-dyn-response optimize-dynamic/response_over_speed.png
+    fig opt-dyn-harris optimize-dynamic/lte_over_torque.png
+    fig opt-dyn-load-optimum optimize-dynamic/optimum/load_distribution.png
+    fig opt-dyn-load-case optimize-dynamic/case/load_distribution.png
+fi
+if wanted opt-pareto-gear; then
+    run pareto-lte-dynamic cases/paper/pareto-lte-dynamic.ini --threads 2
+    fig opt-pareto-gear pareto-lte-dynamic/pareto.png
+fi
+if wanted opt-two-gear-convergence opt-two-gear-ecdf; then
+    run compare-two-objectives-gear cases/paper/compare-two-objectives-gear.ini --threads 1
+    fig opt-two-gear-convergence compare-two-objectives-gear/convergence.png
+    fig opt-two-gear-ecdf compare-two-objectives-gear/ecdf.png
+fi
 if wanted opt-testfn-ecdf; then
     run compare-test-functions cases/optimize/compare-test-functions.ini --threads 2
     fig opt-testfn-ecdf compare-test-functions/ecdf.png
