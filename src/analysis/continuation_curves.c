@@ -78,6 +78,7 @@ static int curve_kind(const gd_bifurcation *bf)
         return -1;
     return bf->kind == GD_BIF_FOLD ? GD_CURVE_FOLD
          : bf->kind == GD_BIF_PERIOD_DOUBLING ? GD_CURVE_PERIOD_DOUBLING
+         : bf->kind == GD_BIF_NEIMARK_SACKER ? GD_CURVE_NEIMARK_SACKER
          : bf->kind == GD_BIF_CONTACT_CHANGE && bf->clearance >= 0 ? GD_CURVE_GRAZING : -1;
 }
 
@@ -198,11 +199,7 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
         for (int i = 0; i < res->branch[ib].br.nbif && st == GD_OK; i++) {
             const gd_bifurcation *bf = &res->branch[ib].br.bif[i];
             int kind = curve_kind(bf);
-            if (bf->kind == GD_BIF_NEIMARK_SACKER)
-                curve_note(res, "branch %d: the Neimark-Sacker point at %.10g is not continued in %s (curves of "
-                           "folds, period doublings and grazings only)", ib, gd_contin_value(res, bf->p),
-                           res->parameter2);
-            else if (kind < 0 && bf->kind != GD_BIF_BRANCH_POINT)
+            if (kind < 0 && bf->kind != GD_BIF_BRANCH_POINT)
                 curve_note(res, "branch %d: the %s at %.10g is not continued in %s: its location ended %s", ib,
                            gd_bif_kind_name(bf->kind), gd_contin_value(res, bf->p), res->parameter2,
                            gd_bif_location_name(bf->location));

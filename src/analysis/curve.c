@@ -635,6 +635,32 @@ static gd_status bisect(locx *L, double f_lo, double *lo, double *hi)
     return GD_OK;
 }
 
+/* A grazing that ends the curve, where Brent's method stopped on a trial point whose corrector failed:
+ * beyond the grazing the orbit's contact events are not the curve's, and the corrector of the curve's
+ * sequence fails there, so a failed trial point takes the side of b and the bisection goes on; *lo
+ * converges on the last point of the curve's side (its gap's sign is f_lo's), *hi_failed set when the
+ * upper end of the bracket is such a point (it has no corrected point). */
+static gd_status bisect_past_failures(locx *L, double f_lo, double *lo, double *hi, int *hi_failed)
+{
+    while (*hi - *lo > L->C->locate_tol) {
+        double mid = 0.5 * (*lo + *hi), f = loc_value(mid, L);
+        if (L->st == GD_OK) {
+            if ((f > 0) == (f_lo > 0))
+                *lo = mid;
+            else
+                *hi = mid, *hi_failed = 0;
+            continue;
+        }
+        if (L->st == GD_ERR_NOMEM || L->st == GD_ERR_INTERRUPTED || L->st == GD_ERR_INTERNAL || L->nc == LOC_MAX)
+            return L->st;
+        gd_error_clear(L->err); /* the corrector failed: beyond the grazing */
+        L->st = GD_OK;
+        *hi = mid;
+        *hi_failed = 1;
+    }
+    return GD_OK;
+}
+
 /* A sign change of tf between a and b (at arclength ds1): located into *out (kind, clearance set by
  * the caller) and its point into *q (may be NULL). */
 static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, double ds1, gd_codim2 *out, cpt *q,
@@ -660,6 +686,12 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
     gd_status st = L.st;
     if (st == GD_OK)
         st = tf->type == T_SEQ || tf->type == T_ADMIT ? bisect(&L, fa, &lo, &hi) : brent(&L, &lo, &hi);
+    int hi_failed = 0;
+    if (tf->type == T_GAP && st == GD_ERR_SOLVER && L.nc < LOC_MAX) {
+        gd_error_clear(err);
+        L.st = GD_OK;
+        st = bisect_past_failures(&L, fa, &lo, &hi, &hi_failed);
+    }
     int where = GD_LOC_LOCATED;
     const int soft = st != GD_OK && st != GD_ERR_NOMEM && st != GD_ERR_INTERNAL && st != GD_ERR_INTERRUPTED;
     if (st != GD_OK && !soft) {
@@ -670,7 +702,7 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
         gd_error_clear(err);
         where = GD_LOC_BRACKET;
     }
-    int ilo = find_s(&L, lo), ihi = find_s(&L, hi);
+    int ilo = find_s(&L, lo), ihi = hi_failed ? ilo : find_s(&L, hi);
     if (ilo < 0 || ihi < 0) {
         free(L.pt);
         return gd_error_set(err, GD_ERR_INTERNAL, "a location lost its bracket");
@@ -686,8 +718,11 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
         best = (L.f[ilo] > 0) == (fa > 0) ? ilo : ihi;
     }
     if (where == GD_LOC_LOCATED && tf->type != T_SEQ && tf->type != T_ADMIT) {
+        /* the test function shrinks with the bracket, as a continuous one does at its root (past failed
+         * trial points: its value at the bracket's lower end, against the one at a) */
         double shrink = sqrt((hi - lo) / ds1);
-        if (!(fabs(L.f[ilo]) + fabs(L.f[ihi]) <= shrink * (fabs(fa) + fabs(fb))))
+        if (hi_failed ? !(fabs(L.f[ilo]) <= shrink * fabs(fa))
+                      : !(fabs(L.f[ilo]) + fabs(L.f[ihi]) <= shrink * (fabs(fa) + fabs(fb))))
             where = GD_LOC_JUMP;
     }
     const cpt *r = &L.pt[best];
@@ -698,6 +733,12 @@ static gd_status locate(ccont *C, const tfn *tf, const cpt *a, const cpt *b, dou
     out->p2_lo = L.pt[ilo].u[N + 1];
     out->p1_hi = L.pt[ihi].u[N];
     out->p2_hi = L.pt[ihi].u[N + 1];
+    if (hi_failed) { /* not corrected: the predictor's point there */
+        double g[CMAX];
+        hermite(&L, hi, g);
+        out->p1_hi = g[N];
+        out->p2_hi = g[N + 1];
+    }
     out->kappa = r->pt.kappa;
     out->clearance = -1;
     out->location = where;
@@ -747,6 +788,12 @@ static gd_status locate_contact(ccont *C, const cpt *a, cpt *b, double ds, gd_co
         return st;
     static const int kinds[] = {GD_C2_GRAZING_FOLD, GD_C2_GRAZING_PD, GD_C2_GRAZING_NS, GD_C2_DOUBLE_GRAZING};
     c2->kind = kinds[C->S->kind];
+    /* the curve's own critical multiplier there: -1 on a period-doubling curve, the pair on the unit
+     * circle on a Neimark-Sacker curve (+1 on a fold curve, as located) */
+    if (C->S->kind == GD_CURVE_PERIOD_DOUBLING)
+        cont_critical_multiplier(&q->pt.orbit, -1.0, &c2->mu_re, &c2->mu_im);
+    else if (C->S->kind == GD_CURVE_NEIMARK_SACKER && !cont_ns_multiplier(&q->pt.orbit, &c2->mu_re, &c2->mu_im))
+        cont_critical_multiplier(&q->pt.orbit, 1.0, &c2->mu_re, &c2->mu_im);
     c2->clearance = clr;
     c2->ends_curve = 1;
     if (!found) { /* which clearance's events changed */

@@ -131,10 +131,10 @@ static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_err
             "graze_phase,stable,mu_max", key_column(res), k2);
     for (int j = 0; j < res->n; j++)
         fprintf(fp, ",mu%d_re,mu%d_im", j + 1, j + 1);
-    fprintf(fp, ",test_fold,test_period_doubling,test_cusp");
+    fprintf(fp, ",test_fold,test_period_doubling,test_cusp,kappa");
     for (int j = 0; j < res->nclear; j++)
         fprintf(fp, ",events_%s", res->clear_name[j]);
-    fprintf(fp, ",residual,ds");
+    fprintf(fp, ",newton_iterations,residual,ds");
     for (int j = 0; j < res->n; j++)
         fprintf(fp, ",%s", res->state_name[j]);
     fprintf(fp, "\n");
@@ -157,9 +157,10 @@ static gd_status write_curves(gd_run_dir *d, const gd_contin_result *res, gd_err
             num(fp, pt->test[GD_CT_FOLD]);
             num(fp, pt->test[GD_CT_PD]);
             num(fp, pt->test[GD_CT_CUSP]);
+            num(fp, pt->kappa);
             for (int j = 0; j < res->nclear; j++)
                 fprintf(fp, ",%ld", o->events[j]);
-            fprintf(fp, ",%.3g,%.6g", o->residual, pt->ds);
+            fprintf(fp, ",%d,%.3g,%.6g", o->iterations, o->residual, pt->ds);
             for (int j = 0; j < res->n; j++)
                 fprintf(fp, ",%.17g", o->y[0][j]);
             fprintf(fp, "\n");

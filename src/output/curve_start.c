@@ -75,6 +75,8 @@ static gd_status parse_row(const gd_case *c, const gd_model *mp, char names[][16
         row->kind = GD_CURVE_FOLD;
     else if (strcmp(kind, "period-doubling") == 0)
         row->kind = GD_CURVE_PERIOD_DOUBLING;
+    else if (strcmp(kind, "neimark-sacker") == 0)
+        row->kind = GD_CURVE_NEIMARK_SACKER;
     else if (strcmp(kind, "contact-change") == 0 && clr[0]) {
         row->kind = GD_CURVE_GRAZING;
         for (int i = 0; i < m.nclear; i++)
@@ -86,7 +88,7 @@ static gd_status parse_row(const gd_case *c, const gd_model *mp, char names[][16
                                 WHERE(rowkey), c->cont_curve_start_row, path, clr);
     } else
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start_row: row %d of %s is a %s%s, which has no "
-                            "curve (valid: a row of kind fold, period-doubling, or contact-change of a clearance)",
+                            "curve (valid: a row of kind fold, period-doubling, neimark-sacker, or contact-change of a clearance)",
                             WHERE(rowkey), c->cont_curve_start_row, path, kind,
                             strcmp(kind, "contact-change") == 0 ? " of no clearance" : "");
     if (strcmp(f[cl], "located") != 0)

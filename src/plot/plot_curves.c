@@ -505,8 +505,22 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
         snprintf(sub, sizeof sub, "' . \"\\n\" . 'over the regime map %s (a cell split in two: the sweep up, left, and "
                  "down, right, end on different motions)", dt);
     }
-    gd_plot_printf(s, "set title '%s%sfolds, period doublings and grazings against the %s and the %s%s'\n", title,
-                      title[0] ? "' . \"\\n\" . '" : "", n1, n2, sub);
+    /* the kinds drawn, in the order of gd_curve_kind, named in the title */
+    static const char *kind_plural[4] = {"folds", "period doublings", "Neimark-Sacker points", "grazings"};
+    int kind_present[4] = {0}, nkinds = 0;
+    for (int i = 0; i < res->ncurves; i++)
+        if (res->curve[i].cv.kind >= 0 && res->curve[i].cv.kind < 4 && !kind_present[res->curve[i].cv.kind]++)
+            nkinds++;
+    char kinds_text[120] = "";
+    for (int k = 0, seen = 0; k < 4; k++)
+        if (kind_present[k]) {
+            size_t n = strlen(kinds_text);
+            snprintf(kinds_text + n, sizeof kinds_text - n, "%s%s", seen == 0 ? "" : seen == nkinds - 1 ? " and " : ", ",
+                     kind_plural[k]);
+            seen++;
+        }
+    gd_plot_printf(s, "set title '%s%s%s against the %s and the %s%s'\n", title, title[0] ? "' . \"\\n\" . '" : "",
+                   kinds_text, n1, n2, sub);
     gd_plot_printf(s, "set xlabel '%s'\nset ylabel '%s'\nset offsets 0, 0, 0, 0\n"
                          "set xrange [%.12g:%.12g]\nset yrange [%.12g:%.12g]\n",
                       xl, yl, x0, x1, y0, y1);
@@ -524,9 +538,10 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                          "'#999999' dt 3 lw 1\n",
                       fmin(c->cont_from, c->cont_to), fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from, c->cont_to),
                       fmax(c->cont_from2, c->cont_to2), m && m->n > 0 ? "front" : "behind");
-    /* fold: orange, solid; period doubling: blue, dashed; grazing: bluish green, dotted (Okabe-Ito) */
-    static const struct { const char *label; int colour, dt; } kinds[] = {
-        {"fold", 1, 1}, {"period doubling", 4, 2}, {"grazing", 3, 3}};
+    /* by gd_curve_kind: fold: orange, solid; period doubling: blue, dashed; Neimark-Sacker: vermillion,
+     * dash-dot; grazing: bluish green, dotted (Okabe-Ito) */
+    static const struct { const char *label; int colour, dt; } kinds[4] = {
+        {"fold", 1, 1}, {"period doubling", 4, 2}, {"Neimark-Sacker", 5, 4}, {"grazing", 3, 3}};
     gd_plot_printf(s, "plot ");
     const char *sep = "";
     /* under the curves: the map's cells, then the earlier run's curves */
@@ -553,15 +568,12 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
             sep = ", \\\n  ";
         }
     for (int i = 0; i < res->ncurves; i++) {
-        int k = res->curve[i].cv.kind == GD_CURVE_FOLD ? 0 : res->curve[i].cv.kind == GD_CURVE_PERIOD_DOUBLING ? 1 : 2;
+        int k = res->curve[i].cv.kind >= 0 && res->curve[i].cv.kind < 4 ? res->curve[i].cv.kind : GD_CURVE_GRAZING;
         gd_plot_printf(s, "%s'curves.csv' using 7:($1 == %d ? $8 : 1/0) with lines lw 2.2 dt %d lc rgb '%s' notitle",
                           sep, i, kinds[k].dt, gd_colour[kinds[k].colour]);
         sep = ", \\\n  ";
     }
-    int kind_present[3] = {0};
-    for (int i = 0; i < res->ncurves; i++)
-        kind_present[res->curve[i].cv.kind == GD_CURVE_FOLD ? 0 : res->curve[i].cv.kind == GD_CURVE_PERIOD_DOUBLING ? 1 : 2] = 1;
-    for (int k = 0; k < 3; k++)
+    for (int k = 0; k < 4; k++)
         if (kind_present[k]) /* the key names the kinds drawn */
             gd_plot_printf(s, "%s1/0 with lines lw 2.2 dt %d lc rgb '%s' title '%s'", sep, kinds[k].dt,
                           gd_colour[kinds[k].colour], kinds[k].label);

@@ -320,8 +320,8 @@ refuse continuation.curve_max_points=1 "continuation.curve_max_points"
 # a row that is not a bifurcation of this case with a curve: refused before any work
 refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start_row: 9, but .*bifurcations.csv has 4 rows \(valid: 1 to 4\)" continuation.curve_start_row=9
 refuse continuation.curve_start="$work/cusp/bifurcations.csv" "continuation.curve_start: the continuation in .*cusp is of another model: excitation.ste_amplitude_um = 0.2 there, 1 here"
-mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-change,/,neimark-sacker,/' "$out/bifurcations.csv" > "$work/ns/bifurcations.csv"
-refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a neimark-sacker, which has no curve"
+mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-change,/,branch-point,/' "$out/bifurcations.csv" > "$work/ns/bifurcations.csv"
+refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a branch-point, which has no curve"
 refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
 refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
 
