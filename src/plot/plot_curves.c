@@ -430,7 +430,8 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
     /* the codimension-two points' labels: one per point (the same point found from two curves, or
      * points of different kinds at one place, share one label: "CP", "GF, DG"), and points closer
      * than a label's size (7 % of the x range, 4 % of the y range) share one, which would overlap */
-    static const char *c2_words[] = {"cusp", "fold-flip", "1:1", "1:2", "1:3", "1:4", "grazing on a fold",
+    static const char *c2_words[] = {"cusp", "fold-flip", "resonance 1:1", "resonance 1:2", "resonance 1:3",
+                                     "resonance 1:4", "grazing on a fold",
                                      "grazing on a period doubling", "grazing on a Neimark-Sacker point",
                                      "double grazing"};
     int c2_present[GD_C2_DOUBLE_GRAZING + 1] = {0}, nc2 = 0, nl = 0;
@@ -529,10 +530,17 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                           "set tmargin at screen %.4f\nset key at screen %.4f, screen %.4f left top vertical Left reverse "
                           "samplen 3 spacing %.4f width -2\nset grid front\n",
                        OX0, OX1, OY0, OY1, OX1 + 0.02, OY1, GD_KEY_SPACING(svg, 1.25));
-    else
-        gd_plot_printf(s, "set lmargin 12\nset rmargin 4\nset tmargin 5\nset bmargin 8\n"
-                          "set key at screen 0.5, screen 0.02 center bottom horizontal samplen 3 spacing %.4f\n",
-                       GD_KEY_SPACING(svg, 1.2));
+    else {
+        /* the key under the axes in three columns, the bottom margin as deep as its rows */
+        int nkey = nkinds + 1;
+        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
+            nkey += c2_present[k];
+        int rows = (nkey + 2) / 3;
+        gd_plot_printf(s, "set lmargin 12\nset rmargin 4\nset tmargin 5\nset bmargin %.1f\n"
+                          "set key at screen 0.5, screen 0.02 center bottom horizontal maxcols 3 samplen 3 "
+                          "spacing %.4f\n",
+                       4.5 + 1.3 * rows, GD_KEY_SPACING(svg, 1.2));
+    }
     /* the box of the two ranges, where the curves end */
     gd_plot_printf(s, "set object 1 rect from %.12g, %.12g to %.12g, %.12g %s fs empty border lc rgb "
                          "'#999999' dt 3 lw 1\n",
@@ -578,20 +586,23 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
             gd_plot_printf(s, "%s1/0 with lines lw 2.2 dt %d lc rgb '%s' title '%s'", sep, kinds[k].dt,
                           gd_colour[kinds[k].colour], kinds[k].label);
     gd_plot_printf(s, "%s'curves.csv' using 7:($6 == 0 ? $8 : 1/0) with points pt 7 ps 1.1 lc rgb '%s' "
-                         "title 'start: a bifurcation of a one-parameter branch'",
+                         "title 'start: a bifurcation of a branch'",
                       sep, gd_colour[0]);
     if (nc2 > 0) {
-        /* the codimension-two points: an open diamond larger than the starts, drawn after them */
-        char key[600];
-        int n = snprintf(key, sizeof key, "codimension-two point:"), first = 1;
-        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING && n < (int)sizeof key; k++)
+        /* the codimension-two points: an open diamond larger than the starts, drawn after them; the key
+         * names each kind present in an entry of its own, so that no entry outgrows the picture */
+        int first = 1;
+        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
             if (c2_present[k]) {
-                n += snprintf(key + n, sizeof key - (size_t)n, "%s %s %s", first ? "" : ",", gd_codim2_label(k),
-                              c2_words[k]);
+                if (first)
+                    gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title "
+                                      "'%s: %s'", sep, gd_colour[0], gd_codim2_label(k),
+                                   c2_words[k]);
+                else
+                    gd_plot_printf(s, "%s1/0 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title '%s: %s'", sep,
+                                   gd_colour[0], gd_codim2_label(k), c2_words[k]);
                 first = 0;
             }
-        gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title '%s'", sep,
-                          gd_colour[0], key);
     }
     gd_plot_printf(s, "\n");
     gd_fig_end(s, 0);
