@@ -462,6 +462,30 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
         gd_plot_printf(s, "set label %d '%s' at %.12g, %.12g offset character 1.2, 0.9 left front\n", l + 1,
                           lab[l].text, lab[l].x, lab[l].y);
     int nlabel = nl;
+    /* the codimension-two points' names: beside the map, one per line in the key entry (a vertical
+     * key); else lines of text under the horizontal key, as many as the picture's width needs (one
+     * long key entry would outgrow the picture) */
+    char key[800] = "codimension-two point", names[4][240] = {{0}};
+    int nnames = 0;
+    if (nc2 > 0 && over) {
+        int n = snprintf(key, sizeof key, "codimension-two point:");
+        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING && n < (int)sizeof key; k++)
+            if (c2_present[k])
+                n += snprintf(key + n, sizeof key - (size_t)n, "\\n%s %s", gd_codim2_label(k), c2_words[k]);
+    } else if (nc2 > 0) {
+        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
+            if (c2_present[k]) {
+                char item[80], trial[sizeof names[0] + sizeof item];
+                snprintf(item, sizeof item, "%s %s", gd_codim2_label(k), c2_words[k]);
+                snprintf(trial, sizeof trial, "%s, %s", nnames ? names[nnames - 1] : "", item);
+                if (nnames == 0 || (gd_text_width(trial, GD_FIG_PX) > 0.85 * CW && nnames < 4)) {
+                    snprintf(names[nnames], sizeof names[0], "%s%s", nnames == 0 ? "codimension-two points: " : "",
+                             item);
+                    nnames++;
+                } else
+                    snprintf(names[nnames - 1], sizeof names[0], "%s", trial);
+            }
+    }
     if (m && m->n > 0) {
         /* the regions' names, clear of every curve (this run's and the earlier one's), start and
          * codimension-two point with its label */
@@ -532,14 +556,15 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                        OX0, OX1, OY0, OY1, OX1 + 0.02, OY1, GD_KEY_SPACING(svg, 1.25));
     else {
         /* the key under the axes in three columns, the bottom margin as deep as its rows */
-        int nkey = nkinds + 1;
-        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
-            nkey += c2_present[k];
-        int rows = (nkey + 2) / 3;
+        int nkey = nkinds + 1 + (nc2 > 0), rows = (nkey + 2) / 3;
+        const double line = 1.4 * GD_FIG_PX / CH; /* a line of text, in screen units */
+        for (int i = 0; i < nnames; i++)
+            gd_plot_printf(s, "set label %d '%s' at screen 0.5, screen %.4f center front\n", nlabel + 1 + i,
+                           names[i], 0.02 + (nnames - 1 - i) * line + 0.4 * line);
         gd_plot_printf(s, "set lmargin 12\nset rmargin 4\nset tmargin 5\nset bmargin %.1f\n"
-                          "set key at screen 0.5, screen 0.02 center bottom horizontal maxcols 3 samplen 3 "
+                          "set key at screen 0.5, screen %.4f center bottom horizontal maxcols 3 samplen 3 "
                           "spacing %.4f\n",
-                       4.5 + 1.3 * rows, GD_KEY_SPACING(svg, 1.2));
+                       4.5 + 1.3 * (rows + nnames), 0.02 + (nnames + 0.3) * line, GD_KEY_SPACING(svg, 1.2));
     }
     /* the box of the two ranges, where the curves end */
     gd_plot_printf(s, "set object 1 rect from %.12g, %.12g to %.12g, %.12g %s fs empty border lc rgb "
@@ -589,20 +614,9 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                          "title 'start: a bifurcation of a branch'",
                       sep, gd_colour[0]);
     if (nc2 > 0) {
-        /* the codimension-two points: an open diamond larger than the starts, drawn after them; the key
-         * names each kind present in an entry of its own, so that no entry outgrows the picture */
-        int first = 1;
-        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
-            if (c2_present[k]) {
-                if (first)
-                    gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title "
-                                      "'%s: %s'", sep, gd_colour[0], gd_codim2_label(k),
-                                   c2_words[k]);
-                else
-                    gd_plot_printf(s, "%s1/0 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title '%s: %s'", sep,
-                                   gd_colour[0], gd_codim2_label(k), c2_words[k]);
-                first = 0;
-            }
+        /* the codimension-two points: an open diamond larger than the starts, drawn after them */
+        gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title \"%s\"", sep,
+                       gd_colour[0], key);
     }
     gd_plot_printf(s, "\n");
     gd_fig_end(s, 0);
