@@ -49,7 +49,7 @@ void gd_sweep_responses(const gd_sweep_plan *p, const gd_model *m, double t_s, c
  * direction up, to with down, the middle with both. */
 double gd_contin_start_value(const gd_case *c);
 /* continuation_curves.c: the keys of the curves (continuation.parameter2), and the curves of the
- * folds, period doublings and grazings of res's branches in (parameter, parameter2) (work: the run's
+ * folds, period doublings, Neimark-Sacker points and grazings of res's branches in (parameter, parameter2) (work: the run's
  * case, left with parameter2 at its value; co: the branches' options; row: only its curve, or NULL) */
 gd_status gd_contin_check_curves(const gd_case *c, gd_error *err);
 gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts *o, const gd_cont_opts *co,

@@ -1,5 +1,5 @@
 /* The curves of the `continuation` analysis (continuation.parameter2; docs/continuation.md section
- * 8): the keys checked, and every fold, period doubling and grazing of the branches continued in
+ * 8): the keys checked, and every fold, period doubling, Neimark-Sacker point and grazing of the branches continued in
  * (parameter, parameter2) both ways by gd_curve_follow (gd_envelope.h), each bifurcation once, or
  * only the curve of one row of an earlier run's bifurcations.csv (continuation.curve_start, read by
  * src/output/curve_start.c); the end reasons in the keys' names and units. */

@@ -336,8 +336,8 @@ static const gd_keyspec schema[] = {
       "deflection lambda_L (um) on the orbit, lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv), "
       "or the dynamic load factor (the largest mesh force on the orbit over the static one, of the more loaded mesh)"),
     S("continuation", "parameter2", cont_parameter2, "",
-      "a second numeric key, section.key: every fold, period doubling and grazing of the branches is continued in "
-      "(parameter, parameter2), both ways, into curves.csv (\"\": none; docs/continuation.md section 8)"),
+      "a second numeric key, section.key: every fold, period doubling, Neimark-Sacker point and grazing of the "
+      "branches is continued in (parameter, parameter2), both ways, into curves.csv (\"\": none; docs/continuation.md section 8)"),
     D("continuation", "parameter2_from", "", cont_from2, -1e30, 1e30, 0, 0, NAN,
       "lower bound of parameter2, in the unit of its key: a curve ends there"),
     D("continuation", "parameter2_to", "", cont_to2, -1e30, 1e30, 0, 0, NAN,
