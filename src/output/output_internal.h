@@ -137,7 +137,7 @@ gd_status gd_contin_same_model_but(const gd_case *c, struct json_t *their_case, 
 /* The model's keys (but the continued one and skip2) whose value in an earlier run's case differs
  * from c's: their number, the first max of them into d (values as text: numbers as %.10g). */
 typedef struct gd_model_diff {
-    char key[128], mine[64], theirs[64];
+    char key[128], mine[256], theirs[256];
 } gd_model_diff;
 int gd_contin_model_diff(const gd_case *c, struct json_t *their_case, const char *skip2, gd_model_diff *d, int max);
 

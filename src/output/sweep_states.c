@@ -120,33 +120,12 @@ gd_status gd_contin_same_model_but(const gd_case *c, json_t *sweep_case, const c
                                    const char *what, const char *skip2, gd_error *err)
 {
     char w[GD_PATH_MAX + 32];
-    json_t *mine = gd_json_case(c);
-    size_t n;
-    const gd_keyspec *s = gd_case_schema(&n);
-    gd_status st = GD_OK;
-    for (size_t i = 0; i < n && st == GD_OK; i++) {
-        char name[200];
-        snprintf(name, sizeof name, "%s.%s", s[i].section, s[i].key);
-        if (!model_key(s[i].section, s[i].key) || strcmp(name, c->cont_parameter) == 0 ||
-            (skip2 && strcmp(name, skip2) == 0))
-            continue;
-        json_t *a = json_object_get(json_object_get(mine, s[i].section), s[i].key);
-        json_t *b = json_object_get(json_object_get(sweep_case, s[i].section), s[i].key);
-        if (b && (derived(a) || derived(b)))
-            continue;
-        if (!b || !same_value(json_object_get(a, "value"), json_object_get(b, "value"))) {
-            char *va = value_text(json_object_get(a, "value"));
-            char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
-            st = gd_error_set(err, GD_ERR_INPUT, "%s: continuation.%s: the %s in %s is of another model: "
-                              "%s = %s there, %s here (valid: a %s of this case, which may differ in %s%s%s only)",
-                              WHERE(key), key, what, dir, name, vb ? vb : "(absent)", va ? va : "?", what,
-                              c->cont_parameter, skip2 ? " and " : "", skip2 ? skip2 : "");
-            free(va);
-            free(vb);
-        }
-    }
-    json_decref(mine);
-    return st;
+    gd_model_diff d;
+    if (gd_contin_model_diff(c, sweep_case, skip2, &d, 1) == 0)
+        return GD_OK;
+    return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.%s: the %s in %s is of another model: %s = %s there, %s "
+                        "here (valid: a %s of this case, which may differ in %s%s%s only)", WHERE(key), key, what, dir,
+                        d.key, d.theirs, d.mine, what, c->cont_parameter, skip2 ? " and " : "", skip2 ? skip2 : "");
 }
 
 gd_status gd_contin_same_model(const gd_case *c, json_t *sweep_case, const char *dir, const char *key,
@@ -178,7 +157,7 @@ int gd_contin_model_diff(const gd_case *c, json_t *their_case, const char *skip2
             char *vb = b ? value_text(json_object_get(b, "value")) : NULL;
             snprintf(d[nd].key, sizeof d[nd].key, "%s", name);
             snprintf(d[nd].mine, sizeof d[nd].mine, "%s", va ? va : "?");
-            snprintf(d[nd].theirs, sizeof d[nd].theirs, "%s", vb ? vb : "?");
+            snprintf(d[nd].theirs, sizeof d[nd].theirs, "%s", b ? (vb ? vb : "?") : "(absent)");
             free(va);
             free(vb);
         }
