@@ -24,6 +24,7 @@ typedef struct gd_contin_measure {
     double lambda_min_um[2], lambda_max_um[2]; /* mesh deflections of the left and right half */
     double lambda_poincare;      /* lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv) */
     double dynamic_load_factor[2]; /* left, right: the largest mesh force on the orbit over the static one */
+    int impact_regime;           /* the meshes' worst gd_impact_regime on the orbit (a sweep's impact_regime) */
 } gd_contin_measure;
 
 typedef struct gd_contin_branch {
