@@ -21,24 +21,45 @@ static int cmp_double(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-/* The words of a motion: "in contact", "single-sided (period 2)". */
-static void motion_words(int nper, int regime, char *out, size_t len)
-{
-    static const char *const words[3] = {"in contact", "single-sided", "double-sided"};
-    if (nper == 1)
-        snprintf(out, len, "%s", words[regime]);
-    else
-        snprintf(out, len, "%s (period %d)", words[regime], nper);
-}
-
 typedef struct motion {
     int nper, regime, count;
+    unsigned bearings;           /* the clearances other than the meshes' with contact events on the orbit */
 } motion;
+
+/* The clearances that are not a mesh's (bearings) with events on orbit o. */
+static unsigned bearing_events(const gd_contin_result *res, const gd_po *o)
+{
+    unsigned b = 0;
+    for (int j = 0; j < res->nclear && j < 32; j++)
+        if (strncmp(res->clear_name[j], "mesh", 4) != 0 && o->events[j] > 0)
+            b |= 1u << j;
+    return b;
+}
+
+/* The words of a motion: "in contact", "single-sided (period 2)", "double-sided; bearing
+ * impacts 1L 2L" (no comma: regions.csv quotes nothing). */
+static void motion_words(const gd_contin_result *res, const motion *m, char *out, size_t len)
+{
+    static const char *const words[3] = {"in contact", "single-sided", "double-sided"};
+    size_t n = (size_t)snprintf(out, len, "%s", words[m->regime]);
+    if (m->nper != 1 && n < len)
+        n += (size_t)snprintf(out + n, len - n, " (period %d)", m->nper);
+    for (int j = 0, first = 1; j < res->nclear && j < 32 && n < len; j++)
+        if (m->bearings & (1u << j)) {
+            const char *w = res->clear_name[j];
+            if (strncmp(w, "bearing-", 8) == 0)
+                w += 8;
+            n += (size_t)snprintf(out + n, len - n, "%s%s", first ? "; bearing impacts " : " ", w);
+            first = 0;
+        }
+}
 
 static int cmp_motion(const void *a, const void *b)
 {
     const motion *x = a, *y = b;
-    return x->regime != y->regime ? x->regime - y->regime : x->nper - y->nper;
+    return x->regime != y->regime ? x->regime - y->regime
+           : x->nper != y->nper   ? x->nper - y->nper
+                                  : (x->bearings > y->bearings) - (x->bearings < y->bearings);
 }
 
 /* The stable orbits of every branch over parameter pm (the middle of an interval): into mo (their
@@ -55,26 +76,47 @@ static int orbits_at(const gd_contin_result *res, double pm, motion *mo, int *nm
             double a = br->br.pt[i].orbit.p, c = br->br.pt[i + 1].orbit.p;
             if (!(pm >= fmin(a, c) && pm <= fmax(a, c)))
                 continue;
+            /* the bifurcations between the two points: the motion at pm is the point's on its side of
+             * them, unknown when pm lies between two of them */
+            int before = 0, after = 0;
+            for (int q = 0; q < br->br.nbif; q++)
+                if (br->br.bif[q].after == i + 1) {
+                    double t = (br->br.bif[q].p - a) / (c - a), u = (pm - a) / (c - a);
+                    if (t < u)
+                        before++;
+                    else
+                        after++;
+                }
+            if (before > 0 && after > 0)
+                return 0;
+            int i0 = before > 0 ? i + 1 : i, i1 = after > 0 ? i : i + 1;
             covered = 1;
             if (!br->meas)
                 return 0;
-            int s0 = br->br.pt[i].orbit.stable, s1 = br->br.pt[i + 1].orbit.stable;
-            int r0 = br->meas[i].impact_regime, r1 = br->meas[i + 1].impact_regime;
-            if (s0 != s1 || r0 != r1 || r0 < 0 || r0 > 2)
+            int s0 = br->br.pt[i0].orbit.stable, s1 = br->br.pt[i1].orbit.stable;
+            int r0 = br->meas[i0].impact_regime, r1 = br->meas[i1].impact_regime;
+            unsigned e0 = bearing_events(res, &br->br.pt[i0].orbit), e1 = bearing_events(res, &br->br.pt[i1].orbit);
+            if (s0 != s1 || r0 != r1 || r0 < 0 || r0 > 2 || e0 != e1)
                 return 0;
+            if (k < evlen && i0 == i1)
+                k += (size_t)snprintf(ev + k, evlen - k, "%sbranch %d point %d at %.8g", k ? "; " : "", b, i0,
+                                      gd_contin_value(res, br->br.pt[i0].orbit.p));
+            else if (k < evlen)
+                k += (size_t)snprintf(ev + k, evlen - k, "%sbranch %d points %d-%d at %.8g to %.8g", k ? "; " : "", b,
+                                      i0, i1, gd_contin_value(res, br->br.pt[i0].orbit.p),
+                                      gd_contin_value(res, br->br.pt[i1].orbit.p));
             if (k < evlen)
-                k += (size_t)snprintf(ev + k, evlen - k, "%sbranch %d points %d-%d at %.8g to %.8g: %s %s period %d",
-                                      k ? "; " : "", b, i, i + 1, gd_contin_value(res, a), gd_contin_value(res, c),
-                                      s0 ? "stable" : "unstable", gd_impact_regime_name(r0), br->nper);
+                k += (size_t)snprintf(ev + k, evlen - k, ": %s %s period %d%s", s0 ? "stable" : "unstable",
+                                      gd_impact_regime_name(r0), br->nper, e0 ? " bearing events" : "");
             if (!s0)
                 continue;
             int j = 0;
-            while (j < n && !(mo[j].nper == br->nper && mo[j].regime == r0))
+            while (j < n && !(mo[j].nper == br->nper && mo[j].regime == r0 && mo[j].bearings == e0))
                 j++;
             if (j == n) {
                 if (n == 8)
                     continue;
-                mo[n++] = (motion){br->nper, r0, 0};
+                mo[n++] = (motion){br->nper, r0, 0, e0};
             }
             mo[j].count++;
         }
@@ -115,15 +157,23 @@ void gd_contin_regions_name(const gd_contin_result *res, double from, double to,
         gd_curve_region r = {0};
         size_t n = 0, q = 0;
         for (int j = 0; j < nmo; j++) {
-            char w[64];
-            motion_words(mo[j].nper, mo[j].regime, w, sizeof w);
+            char w[160];
+            motion_words(res, &mo[j], w, sizeof w);
             if (n < sizeof r.label)
                 n += (size_t)snprintf(r.label + n, sizeof r.label - n, "%s%s", j ? " or " : "", w);
             if (mo[j].count > 1 && n < sizeof r.label)
                 n += (size_t)snprintf(r.label + n, sizeof r.label - n, " (%d orbits)", mo[j].count);
             if (q < sizeof r.orbits)
-                q += (size_t)snprintf(r.orbits + q, sizeof r.orbits - q, "%s%d:%s:%d", j ? ";" : "", mo[j].nper,
+            {
+                q += (size_t)snprintf(r.orbits + q, sizeof r.orbits - q, "%s%d:%s:%d:", j ? ";" : "", mo[j].nper,
                                       gd_impact_regime_name(mo[j].regime), mo[j].count);
+                for (int cl = 0, first = 1; cl < res->nclear && cl < 32 && q < sizeof r.orbits; cl++)
+                    if (mo[j].bearings & (1u << cl)) {
+                        q += (size_t)snprintf(r.orbits + q, sizeof r.orbits - q, "%s%s", first ? "" : "+",
+                                              res->clear_name[cl]);
+                        first = 0;
+                    }
+            }
         }
         r.from = a;
         r.to = c;

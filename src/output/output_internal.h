@@ -182,7 +182,7 @@ void gd_contin_overlay_free(gd_overlay_map *m, gd_overlay_curves *o);
  * branch points that tell. */
 #define GD_REGIONS_MAX 48
 typedef struct gd_curve_region {
-    char label[160], orbits[160];
+    char label[256], orbits[256];
     double x, y, from, to;
     int drawn;
     char evidence[1024];

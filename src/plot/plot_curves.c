@@ -506,8 +506,8 @@ static void curve_obstacles(const gd_contin_result *res, const gd_overlay_curves
     }
 }
 
-/* A region's name in one line, or in two (split at the " or " nearest its middle, else before its
- * parenthesis): into a and b ("" for one line). */
+/* A region's name in one line, or in two (split at the " or " nearest its middle, else after its
+ * ";" or before its parenthesis): into a and b ("" for one line). */
 static void split_name(const char *t, int two, char *a, char *b, size_t len)
 {
     snprintf(a, len, "%s", t);
@@ -521,10 +521,12 @@ static void split_name(const char *t, int two, char *a, char *b, size_t len)
             best = at;
     }
     if (best == 0) {
-        const char *p = strchr(t, '(');
+        const char *p = strstr(t, "; ");
+        if (!p)
+            p = strchr(t, '(');
         if (!p || p == t)
             return;
-        best = (size_t)(p - t) - 1;
+        best = (size_t)(p - t) + (*p == ';') - (*p == '(');
     }
     snprintf(a, len, "%.*s", (int)best, t);
     snprintf(b, len, "%s", t + best + 1);
@@ -551,7 +553,7 @@ static void place_regions(const gd_contin_result *res, const frame_px *f, obstac
             pb = t;
         }
         for (int two = 0; two < 2 && !r->drawn; two++) {
-            char a[160], b[160];
+            char a[256], b[256];
             split_name(r->label, two, a, b, sizeof a);
             if (two && !b[0])
                 break;
@@ -667,7 +669,7 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
         const gd_curve_region *r = &rg->r[i];
         if (!r->drawn)
             continue;
-        char a[160], b[160], ta[400], tb[400];
+        char a[256], b[256], ta[600], tb[600];
         split_name(r->label, r->drawn == 2, a, b, sizeof a);
         gd_gp_text(a, ta, sizeof ta);
         gd_gp_text(b, tb, sizeof tb);
