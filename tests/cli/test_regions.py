@@ -83,7 +83,7 @@ def main():
             x, y = float(r[c1]), float(r[c2])
             want = set()
             for o in r['orbits'].split(';'):
-                per, regime, _ = o.split(':')
+                per, regime = o.split(':')[:2]
                 want.add((int(per), regime))
             got = set()
             for direction, frm, to in (('up', lo, x), ('down', x, hi)):
