@@ -5,7 +5,8 @@
  * orbit integrated with samples gives (RMS mesh acceleration, extremes of the mesh deflections).
  *
  * gd_contin_run computes (case -> result), gd_contin_result_free frees; the row `continuation` of
- * the table of analyses (gd_analysis.h) writes branch.csv, bifurcations.csv and summary.json. */
+ * the table of analyses (gd_analysis.h) writes branch.csv, bifurcations.csv and summary.json (with
+ * continuation.parameter2 also curves.csv, codim2.csv and regions.csv). */
 #ifndef GD_CONTINUATION_H
 #define GD_CONTINUATION_H
 

@@ -6,8 +6,11 @@
  * With continuation.overlay_map a finished regime map's cells go under the curves, coloured by the
  * motion (in contact, single-sided, double-sided; period 1 or not), each cell split in two where the
  * sweeps up and down end on different motions, and each region of one motion large enough for its
- * name is named inside it; with continuation.overlay_curves an earlier run's curves are drawn thin
- * and grey beside these, the keys where that run differs named in the key. */
+ * name is named inside it; without a map the regions the run names (output/curve_regions.c: the
+ * stable orbits of the branches between consecutive bifurcations on their line) are named on that
+ * line, and placed here for regions.csv too (gd_plot_curve_regions); with
+ * continuation.overlay_curves an earlier run's curves are drawn thin and grey beside these, the keys
+ * where that run differs named in the key. */
 #include "figure.h"
 #include "../output/output_internal.h"
 
@@ -542,7 +545,7 @@ static double name_width(const char *a, const char *b)
  * two, where its box lies inside the frame and its interval and covers no curve, start,
  * codimension-two point or other name; nearest the interval's middle. A name with no such place is
  * not drawn (drawn 0). */
-static void place_regions(const gd_contin_result *res, const frame_px *f, obstacles *ob, gd_curve_regions *rg)
+static void place_regions(const frame_px *f, obstacles *ob, gd_curve_regions *rg)
 {
     for (int i = 0; i < rg->n; i++) {
         gd_curve_region *r = &rg->r[i];
@@ -578,7 +581,6 @@ static void place_regions(const gd_contin_result *res, const frame_px *f, obstac
             }
         }
     }
-    (void)res;
 }
 
 /* The value of parameter2 on the branches' line: the case's, where every curve starts. */
@@ -606,7 +608,7 @@ static void regions_of(const gd_case *c, const gd_contin_result *res, const gd_o
     int nc2, nl = c2_labels(res, &f, lab, NULL, &nc2);
     obstacles ob = {0};
     curve_obstacles(res, o, &f, lab, nl, &ob);
-    place_regions(res, &f, &ob, rg);
+    place_regions(&f, &ob, rg);
     free(ob.x);
     free(ob.y);
 }
