@@ -161,8 +161,8 @@ void gd_contin_regions_name(const gd_contin_result *res, double from, double to,
             motion_words(res, &mo[j], w, sizeof w);
             if (n < sizeof r.label)
                 n += (size_t)snprintf(r.label + n, sizeof r.label - n, "%s%s", j ? " or " : "", w);
-            if (mo[j].count > 1 && n < sizeof r.label)
-                n += (size_t)snprintf(r.label + n, sizeof r.label - n, " (%d orbits)", mo[j].count);
+            /* no count of orbits in the words: two branches switched to at one period doubling, both
+             * ways, may follow one orbit and its image shifted by a mesh period */
             if (q < sizeof r.orbits)
             {
                 q += (size_t)snprintf(r.orbits + q, sizeof r.orbits - q, "%s%d:%s:%d:", j ? ";" : "", mo[j].nper,
