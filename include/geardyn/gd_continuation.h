@@ -5,7 +5,8 @@
  * orbit integrated with samples gives (RMS mesh acceleration, extremes of the mesh deflections).
  *
  * gd_contin_run computes (case -> result), gd_contin_result_free frees; the row `continuation` of
- * the table of analyses (gd_analysis.h) writes branch.csv, bifurcations.csv and summary.json. */
+ * the table of analyses (gd_analysis.h) writes branch.csv, bifurcations.csv and summary.json (with
+ * continuation.parameter2 also curves.csv, codim2.csv and regions.csv). */
 #ifndef GD_CONTINUATION_H
 #define GD_CONTINUATION_H
 
@@ -24,6 +25,7 @@ typedef struct gd_contin_measure {
     double lambda_min_um[2], lambda_max_um[2]; /* mesh deflections of the left and right half */
     double lambda_poincare;      /* lambda_L at mesh phase 0 (dimensionless, as a sweep's bifurcation.csv) */
     double dynamic_load_factor[2]; /* left, right: the largest mesh force on the orbit over the static one */
+    int impact_regime;           /* the meshes' worst gd_impact_regime on the orbit (a sweep's impact_regime) */
 } gd_contin_measure;
 
 typedef struct gd_contin_branch {

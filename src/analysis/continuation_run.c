@@ -211,6 +211,7 @@ static gd_status measure(crun *r, double p, const double *y, int nper, gd_contin
     memcpy(out->lambda_min_um, rr.lambda_min_um, sizeof out->lambda_min_um);
     memcpy(out->lambda_max_um, rr.lambda_max_um, sizeof out->lambda_max_um);
     memcpy(out->dynamic_load_factor, rr.dynamic_load_factor, sizeof out->dynamic_load_factor);
+    out->impact_regime = rr.impact_regime[2];
     double x, xd;
     gd_model_clearance(&m, m.mesh_clear[0], 0.0, y, &md, &x, &xd);
     out->lambda_poincare = x;

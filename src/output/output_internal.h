@@ -172,6 +172,30 @@ typedef struct gd_overlay_curves {
 } gd_overlay_curves;
 gd_status gd_contin_overlay_curves_read(const gd_case *c, gd_overlay_curves *o, gd_error *err);
 void gd_contin_overlay_free(gd_overlay_map *m, gd_overlay_curves *o);
+/* The regions of the curves' plane named from the run, without a regime map (curve_regions.c;
+ * docs/continuation.md section 8): the intervals of the branches' line parameter2 = value2 between
+ * consecutive bifurcations of any branch, each named by the stable orbits of the branches over it
+ * ("in contact or single-sided", "single-sided (period 2)"); an interval where a branch's points
+ * disagree in stability or impact regime, or with no stable orbit, is not among them. x, y: where
+ * the label's centre goes (the picture places it, on the line: y = value2; drawn 0 when it found no
+ * room), from, to: the interval (keys' units); orbits: "period:regime:count;..."; evidence: the
+ * branch points that tell. */
+#define GD_REGIONS_MAX 48
+typedef struct gd_curve_region {
+    char label[256], orbits[256];
+    double x, y, from, to;
+    int drawn;
+    char evidence[1024];
+} gd_curve_region;
+typedef struct gd_curve_regions {
+    int n;
+    gd_curve_region r[GD_REGIONS_MAX];
+} gd_curve_regions;
+/* from, to: the range of the parameter (continuation.from, to) */
+void gd_contin_regions_name(const gd_contin_result *res, double from, double to, double value2, gd_curve_regions *rg);
+/* regions.csv: one row per named region (docs/continuation.md section 8) */
+gd_status gd_contin_write_regions(gd_run_dir *d, const gd_contin_result *res, const gd_curve_regions *rg,
+                                  gd_error *err);
 /* continuation.curve_start: row curve_start_row of an earlier continuation's bifurcations.csv, checked
  * to be a fold, period doubling or grazing (a contact change of a clearance), located, in [from, to],
  * of this case's model and state (its summary.json beside it: a continuation in the same key, every

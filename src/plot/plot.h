@@ -68,6 +68,11 @@ void gd_plot_continuation(const gd_plotter *p, const gd_case *c, const gd_contin
 void gd_plot_basins(const gd_plotter *p, const gd_case *c, const gd_basins_result *r);
 /* the continuation's curves in two parameters (curves.png, .svg; plot_curves.c), drawn by gd_plot_continuation */
 void gd_plot_curves(const gd_plotter *p, const gd_case *c, const gd_contin_result *res);
+/* The regions of the curves' plane named from the run (without continuation.overlay_map; with it
+ * none), placed as curves.png draws them (plot_curves.c): what regions.csv writes. */
+struct gd_curve_regions;
+gd_status gd_plot_curve_regions(const gd_case *c, const gd_contin_result *res, struct gd_curve_regions *rg,
+                                gd_error *err);
 
 /* The four-panel figure of the local analysis (response.png, response.svg; plot_local.c). */
 void gd_plot_local_draw(const gd_plotter *p, const gd_case *c, const gd_response_outcome *r);

@@ -6,8 +6,11 @@
  * With continuation.overlay_map a finished regime map's cells go under the curves, coloured by the
  * motion (in contact, single-sided, double-sided; period 1 or not), each cell split in two where the
  * sweeps up and down end on different motions, and each region of one motion large enough for its
- * name is named inside it; with continuation.overlay_curves an earlier run's curves are drawn thin
- * and grey beside these, the keys where that run differs named in the key. */
+ * name is named inside it; without a map the regions the run names (output/curve_regions.c: the
+ * stable orbits of the branches between consecutive bifurcations on their line) are named on that
+ * line, and placed here for regions.csv too (gd_plot_curve_regions); with
+ * continuation.overlay_curves an earlier run's curves are drawn thin and grey beside these, the keys
+ * where that run differs named in the key. */
 #include "figure.h"
 #include "../output/output_internal.h"
 
@@ -396,8 +399,234 @@ static void old_words(const gd_overlay_curves *o, const char *dir, char *out, si
         snprintf(out + n, len - (size_t)n, " and %d more key%s", o->ndiff - 1, o->ndiff == 2 ? "" : "s");
 }
 
+/* The layout without an overlay: the frame at fixed fractions too (the regions' names are placed in
+ * pixels), the key and the codimension-two points' words below it. */
+#define NX0 0.08
+#define NX1 0.975
+#define NY0 0.20
+#define NY1 0.87
+
+/* The picture's size, data ranges and frame: over (a map or an earlier run's curves) the wider
+ * layout with the key beside the frame. */
+static void layout(const gd_case *c, const gd_overlay_map *m, const grid *g, int over, frame_px *f, int *W, int *H)
+{
+    double x0, x1, y0, y1;
+    gd_pad(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), 0.03, 0, &x0, &x1);
+    gd_pad(fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from2, c->cont_to2), 0.04, 0, &y0, &y1);
+    if (m && m->n > 0) { /* the map's cells fill the frame where they reach */
+        x0 = fmin(x0, fmax(g->xv[0], x0 - 0.5 * (x1 - x0)));
+        x1 = fmax(x1, fmin(g->xv[g->nx - 1], x1 + 0.5 * (x1 - x0)));
+        y0 = fmin(y0, fmax(g->yv[0], y0 - 0.5 * (y1 - y0)));
+        y1 = fmax(y1, fmin(g->yv[g->ny - 1], y1 + 0.5 * (y1 - y0)));
+    }
+    *W = over ? OW : CW;
+    *H = over ? OH : CH;
+    if (over)
+        *f = (frame_px){x0, x1, y0, y1, OX0 * OW, OX1 * OW, (1 - OY1) * OH, (1 - OY0) * OH};
+    else
+        *f = (frame_px){x0, x1, y0, y1, NX0 * CW, NX1 * CW, (1 - NY1) * CH, (1 - NY0) * CH};
+}
+
+/* The codimension-two points' labels: one per point (the same point found from two curves, or
+ * points of different kinds at one place, share one label: "CP", "GF, DG"), and points closer than
+ * a label's size (7 % of the x range, 4 % of the y range) share one, which would overlap. */
+typedef struct c2_label {
+    double x, y;
+    char text[40];
+} c2_label;
+#define C2_LABELS 64
+
+static int c2_labels(const gd_contin_result *res, const frame_px *f, c2_label *lab, int *present, int *nc2)
+{
+    int nl = 0;
+    double dx = 0.07 * (f->x1 - f->x0), dy = 0.04 * (f->y1 - f->y0);
+    *nc2 = 0;
+    for (int i = 0; i < res->ncurves; i++)
+        for (int j = 0; j < res->curve[i].cv.nc2; j++) {
+            const gd_codim2 *c2 = &res->curve[i].cv.c2[j];
+            double x = gd_contin_value(res, c2->p1), y = c2->p2 * res->scale2;
+            const char *t = gd_codim2_label(c2->kind);
+            (*nc2)++;
+            if (present)
+                present[c2->kind] = 1;
+            int l = 0;
+            while (l < nl && !(fabs(lab[l].x - x) < dx && fabs(lab[l].y - y) < dy))
+                l++;
+            if (l == nl) {
+                if (nl == C2_LABELS)
+                    continue;
+                lab[nl].x = x;
+                lab[nl].y = y;
+                snprintf(lab[nl++].text, sizeof lab[0].text, "%s", t);
+            } else if (!strstr(lab[l].text, t) && strlen(lab[l].text) + strlen(t) + 3 < sizeof lab[l].text) {
+                strcat(lab[l].text, ", ");
+                strcat(lab[l].text, t);
+            }
+        }
+    return nl;
+}
+
+/* A box (pixels) as obstacles: its four sides and two diagonals (another box overlaps it exactly
+ * when one of them enters that box). */
+static void obs_box(obstacles *ob, double x0, double y0, double x1, double y1)
+{
+    double cx[5] = {x0, x1, x1, x0, x0}, cy[5] = {y0, y0, y1, y1, y0};
+    for (int k = 0; k < 5; k++)
+        obs_add(ob, cx[k], cy[k]);
+    obs_add(ob, NAN, NAN);
+    obs_add(ob, x0, y0);
+    obs_add(ob, x1, y1);
+    obs_add(ob, NAN, NAN);
+    obs_add(ob, x0, y1);
+    obs_add(ob, x1, y0);
+    obs_add(ob, NAN, NAN);
+}
+
+/* What a region's name must not cover: every curve drawn (this run's and the earlier one's), each
+ * start's dot and each codimension-two point with its label. */
+static void curve_obstacles(const gd_contin_result *res, const gd_overlay_curves *o, const frame_px *f,
+                            const c2_label *lab, int nl, obstacles *ob)
+{
+    for (int i = 0; i < res->ncurves; i++) {
+        const gd_curve *cv = &res->curve[i].cv;
+        for (int j = 0; j < cv->npoints; j++)
+            obs_add(ob, to_px(f, gd_contin_value(res, cv->pt[j].orbit.p)), to_py(f, cv->pt[j].p2 * res->scale2));
+        obs_add(ob, NAN, NAN);
+        if (cv->npoints > 0) { /* the start's dot */
+            double px = to_px(f, gd_contin_value(res, cv->pt[0].orbit.p)), py = to_py(f, cv->pt[0].p2 * res->scale2);
+            obs_box(ob, px - 6, py - 6, px + 6, py + 6);
+        }
+    }
+    for (int i = 0; o && i < o->n; i++) {
+        if (i > 0 && (o->curve[i] != o->curve[i - 1] || o->kind[i] != o->kind[i - 1]))
+            obs_add(ob, NAN, NAN);
+        obs_add(ob, to_px(f, o->x[i]), to_py(f, o->y[i]));
+    }
+    obs_add(ob, NAN, NAN);
+    for (int l = 0; l < nl; l++) { /* the marker and its label */
+        double px = to_px(f, lab[l].x), py = to_py(f, lab[l].y);
+        obs_box(ob, px - 14, py - 28, px + 14 + gd_text_width(lab[l].text, GD_FIG_PX) + 10, py + 14);
+    }
+}
+
+/* A region's name in one line, or in two (split at the " or " nearest its middle, else after its
+ * ";" or before its parenthesis): into a and b ("" for one line). */
+static void split_name(const char *t, int two, char *a, char *b, size_t len)
+{
+    snprintf(a, len, "%s", t);
+    b[0] = 0;
+    if (!two)
+        return;
+    size_t n = strlen(t), best = 0;
+    for (const char *p = strstr(t, " or "); p; p = strstr(p + 1, " or ")) {
+        size_t at = (size_t)(p - t) + 3; /* after "or" */
+        if (best == 0 || fabs((double)at - 0.5 * (double)n) < fabs((double)best - 0.5 * (double)n))
+            best = at;
+    }
+    if (best == 0) {
+        const char *p = strstr(t, "; ");
+        if (!p)
+            p = strchr(t, '(');
+        if (!p || p == t)
+            return;
+        best = (size_t)(p - t) + (*p == ';') - (*p == '(');
+    }
+    snprintf(a, len, "%.*s", (int)best, t);
+    snprintf(b, len, "%s", t + best + 1);
+}
+
+static double name_width(const char *a, const char *b)
+{
+    return fmax(gd_text_width(a, GD_FIG_PX), b[0] ? gd_text_width(b, GD_FIG_PX) : 0) + 10;
+}
+
+/* The regions named from the run (no map; curve_regions.c) placed: each name centred on the
+ * branches' line inside its interval (the stable orbits are known there exactly), in one line or
+ * two, where its box lies inside the frame and its interval and covers no curve, start,
+ * codimension-two point or other name; nearest the interval's middle. A name with no such place is
+ * not drawn (drawn 0). */
+static void place_regions(const frame_px *f, obstacles *ob, gd_curve_regions *rg)
+{
+    for (int i = 0; i < rg->n; i++) {
+        gd_curve_region *r = &rg->r[i];
+        double pa = to_px(f, r->from), pb = to_px(f, r->to), py = to_py(f, r->y);
+        if (pa > pb) {
+            double t = pa;
+            pa = pb;
+            pb = t;
+        }
+        for (int two = 0; two < 2 && !r->drawn; two++) {
+            char a[256], b[256];
+            split_name(r->label, two, a, b, sizeof a);
+            if (two && !b[0])
+                break;
+            double w = name_width(a, b), h = (b[0] ? 2.6 : 1.5) * GD_FIG_PX;
+            double lo = fmax(pa + 3, f->px0 + 4) + w / 2, hi = fmin(pb - 3, f->px1 - 4) - w / 2;
+            if (lo > hi || py - h / 2 < f->py0 + 4 || py + h / 2 > f->py1 - 4)
+                continue;
+            double mid = 0.5 * (lo + hi);
+            for (int s = 0; s <= (int)((hi - lo) / 2) + 1; s++) {
+                int found = 0;
+                for (int sign = -1; sign <= 1 && !found; sign += 2) {
+                    double px = fmin(hi, fmax(lo, mid + sign * 2.0 * s));
+                    if (!obs_hit(ob, px - w / 2, py - h / 2, px + w / 2, py + h / 2)) {
+                        r->x = f->x0 + (px - f->px0) / (f->px1 - f->px0) * (f->x1 - f->x0);
+                        r->drawn = 1 + two;
+                        obs_box(ob, px - w / 2, py - h / 2, px + w / 2, py + h / 2);
+                        found = 1;
+                    }
+                }
+                if (found)
+                    break;
+            }
+        }
+    }
+}
+
+/* The value of parameter2 on the branches' line: the case's, where every curve starts. */
+static double line_value2(const gd_case *c, const gd_contin_result *res)
+{
+    for (int i = 0; i < res->ncurves; i++)
+        if (res->curve[i].cv.npoints > 0 && res->curve[i].branch >= 0)
+            return res->curve[i].cv.pt[0].p2 * res->scale2;
+    return res->ncurves > 0 && res->curve[0].cv.npoints > 0 ? res->curve[0].cv.pt[0].p2 * res->scale2
+                                                           : 0.5 * (c->cont_from2 + c->cont_to2);
+}
+
+/* The regions named from the run, placed as the picture draws them (no map; with one, none). */
+static void regions_of(const gd_case *c, const gd_contin_result *res, const gd_overlay_curves *o,
+                       gd_curve_regions *rg)
+{
+    memset(rg, 0, sizeof *rg);
+    if (c->cont_overlay_map[0] || res->ncurves == 0)
+        return;
+    frame_px f;
+    int W, H;
+    layout(c, NULL, NULL, o && o->n > 0, &f, &W, &H);
+    gd_contin_regions_name(res, c->cont_from, c->cont_to, line_value2(c, res), rg);
+    c2_label lab[C2_LABELS];
+    int nc2, nl = c2_labels(res, &f, lab, NULL, &nc2);
+    obstacles ob = {0};
+    curve_obstacles(res, o, &f, lab, nl, &ob);
+    place_regions(&f, &ob, rg);
+    free(ob.x);
+    free(ob.y);
+}
+
+gd_status gd_plot_curve_regions(const gd_case *c, const gd_contin_result *res, gd_curve_regions *rg, gd_error *err)
+{
+    memset(rg, 0, sizeof *rg);
+    gd_overlay_curves o;
+    gd_status st = gd_contin_overlay_curves_read(c, &o, err);
+    if (st != GD_OK)
+        return st;
+    regions_of(c, res, &o, rg);
+    gd_contin_overlay_free(NULL, &o);
+    return GD_OK;
+}
+
 static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_contin_result *res,
-                     const gd_overlay_map *m, const grid *g, const gd_overlay_curves *o)
+                     const gd_overlay_map *m, const grid *g, const gd_overlay_curves *o, const gd_curve_regions *rg)
 {
     int over = (m && m->n > 0) || (o && o->n > 0);
     gd_qty q1, q2;
@@ -410,116 +639,46 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
     gd_gp_text(q2.name, n2, sizeof n2);
     if (c->title[0])
         gd_gp_title(c->title, title, sizeof title);
-    double x0, x1, y0, y1;
-    gd_pad(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), 0.03, 0, &x0, &x1);
-    gd_pad(fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from2, c->cont_to2), 0.04, 0, &y0, &y1);
-    if (m && m->n > 0) { /* the map's cells fill the frame where they reach */
-        x0 = fmin(x0, fmax(g->xv[0], x0 - 0.5 * (x1 - x0)));
-        x1 = fmax(x1, fmin(g->xv[g->nx - 1], x1 + 0.5 * (x1 - x0)));
-        y0 = fmin(y0, fmax(g->yv[0], y0 - 0.5 * (y1 - y0)));
-        y1 = fmax(y1, fmin(g->yv[g->ny - 1], y1 + 0.5 * (y1 - y0)));
-    }
-    int W = over ? OW : CW, H = over ? OH : CH;
-    frame_px f = {x0, x1, y0, y1, OX0 * OW, OX1 * OW, (1 - OY1) * OH, (1 - OY0) * OH};
+    frame_px f;
+    int W, H;
+    layout(c, m, g, over, &f, &W, &H);
     gd_fig_begin(s, svg, W, H, "curves");
     int rg_present[RG_N] = {0}, old_present[4] = {0};
     if (m && m->n > 0)
         map_blocks(s, m, g, rg_present);
     if (o && o->n > 0)
         old_blocks(s, o, old_present);
-    /* the codimension-two points' labels: one per point (the same point found from two curves, or
-     * points of different kinds at one place, share one label: "CP", "GF, DG"), and points closer
-     * than a label's size (7 % of the x range, 4 % of the y range) share one, which would overlap */
     static const char *c2_words[] = {"cusp", "fold-flip", "resonance 1:1", "resonance 1:2", "resonance 1:3",
                                      "resonance 1:4", "grazing on a fold",
                                      "grazing on a period doubling", "grazing on a Neimark-Sacker point",
                                      "double grazing"};
-    int c2_present[GD_C2_DOUBLE_GRAZING + 1] = {0}, nc2 = 0, nl = 0;
-    double dx = 0.07 * (x1 - x0), dy = 0.04 * (y1 - y0);
-    struct { double x, y; char text[40]; } lab[64];
-    for (int i = 0; i < res->ncurves; i++)
-        for (int j = 0; j < res->curve[i].cv.nc2; j++) {
-            const gd_codim2 *c2 = &res->curve[i].cv.c2[j];
-            double x = gd_contin_value(res, c2->p1), y = c2->p2 * res->scale2;
-            const char *t = gd_codim2_label(c2->kind);
-            nc2++;
-            c2_present[c2->kind] = 1;
-            int l = 0;
-            while (l < nl && !(fabs(lab[l].x - x) < dx && fabs(lab[l].y - y) < dy))
-                l++;
-            if (l == nl) {
-                if (nl == 64)
-                    continue;
-                lab[nl].x = x;
-                lab[nl].y = y;
-                snprintf(lab[nl++].text, sizeof lab[0].text, "%s", t);
-            } else if (!strstr(lab[l].text, t) && strlen(lab[l].text) + strlen(t) + 3 < sizeof lab[l].text) {
-                strcat(lab[l].text, ", ");
-                strcat(lab[l].text, t);
-            }
-        }
+    int c2_present[GD_C2_DOUBLE_GRAZING + 1] = {0}, nc2 = 0;
+    c2_label lab[C2_LABELS];
+    int nl = c2_labels(res, &f, lab, c2_present, &nc2);
     for (int l = 0; l < nl; l++)
         gd_plot_printf(s, "set label %d '%s' at %.12g, %.12g offset character 1.2, 0.9 left front\n", l + 1,
                           lab[l].text, lab[l].x, lab[l].y);
     int nlabel = nl;
-    /* the codimension-two points' names: beside the map, one per line in the key entry (a vertical
-     * key); else lines of text under the horizontal key, as many as the picture's width needs (one
-     * long key entry would outgrow the picture) */
-    char key[800] = "codimension-two point", names[4][240] = {{0}};
-    int nnames = 0;
-    if (nc2 > 0 && over) {
-        int n = snprintf(key, sizeof key, "codimension-two point:");
-        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING && n < (int)sizeof key; k++)
-            if (c2_present[k])
-                n += snprintf(key + n, sizeof key - (size_t)n, "\\n%s %s", gd_codim2_label(k), c2_words[k]);
-    } else if (nc2 > 0) {
-        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING; k++)
-            if (c2_present[k]) {
-                char item[80], trial[sizeof names[0] + sizeof item];
-                snprintf(item, sizeof item, "%s %s", gd_codim2_label(k), c2_words[k]);
-                snprintf(trial, sizeof trial, "%s, %s", nnames ? names[nnames - 1] : "", item);
-                if (nnames == 0 || (gd_text_width(trial, GD_FIG_PX) > 0.85 * CW && nnames < 4)) {
-                    snprintf(names[nnames], sizeof names[0], "%s%s", nnames == 0 ? "codimension-two points: " : "",
-                             item);
-                    nnames++;
-                } else
-                    snprintf(names[nnames - 1], sizeof names[0], "%s", trial);
-            }
-    }
     if (m && m->n > 0) {
-        /* the regions' names, clear of every curve (this run's and the earlier one's), start and
-         * codimension-two point with its label */
+        /* the regions' names from the map's cells */
         obstacles ob = {0};
-        for (int i = 0; i < res->ncurves; i++) {
-            const gd_curve *cv = &res->curve[i].cv;
-            for (int j = 0; j < cv->npoints; j++)
-                obs_add(&ob, to_px(&f, gd_contin_value(res, cv->pt[j].orbit.p)), to_py(&f, cv->pt[j].p2 * res->scale2));
-            obs_add(&ob, NAN, NAN);
-            if (cv->npoints > 0) { /* the start's dot */
-                double px = to_px(&f, gd_contin_value(res, cv->pt[0].orbit.p)), py = to_py(&f, cv->pt[0].p2 * res->scale2);
-                obs_add(&ob, px - 6, py - 6);
-                obs_add(&ob, px + 6, py + 6);
-                obs_add(&ob, NAN, NAN);
-            }
-        }
-        for (int i = 0; o && i < o->n; i++) {
-            if (i > 0 && (o->curve[i] != o->curve[i - 1] || o->kind[i] != o->kind[i - 1]))
-                obs_add(&ob, NAN, NAN);
-            obs_add(&ob, to_px(&f, o->x[i]), to_py(&f, o->y[i]));
-        }
-        obs_add(&ob, NAN, NAN);
-        for (int l = 0; l < nl; l++) { /* the marker and its label, as a diagonal across their box */
-            double px = to_px(&f, lab[l].x), py = to_py(&f, lab[l].y);
-            obs_add(&ob, px - 14, py + 14);
-            obs_add(&ob, px + 14 + gd_text_width(lab[l].text, GD_FIG_PX) + 10, py - 28);
-            obs_add(&ob, NAN, NAN);
-            obs_add(&ob, px - 14, py - 28);
-            obs_add(&ob, px + 14 + gd_text_width(lab[l].text, GD_FIG_PX) + 10, py + 14);
-            obs_add(&ob, NAN, NAN);
-        }
+        curve_obstacles(res, o, &f, lab, nl, &ob);
         region_labels(s, m, g, &f, &ob, &nlabel);
         free(ob.x);
         free(ob.y);
+    }
+    int named = 0;
+    for (int i = 0; rg && i < rg->n; i++) {
+        const gd_curve_region *r = &rg->r[i];
+        if (!r->drawn)
+            continue;
+        char a[256], b[256], ta[600], tb[600];
+        split_name(r->label, r->drawn == 2, a, b, sizeof a);
+        gd_gp_text(a, ta, sizeof ta);
+        gd_gp_text(b, tb, sizeof tb);
+        gd_plot_printf(s, "set label %d '%s%s%s' at %.12g, %.12g center front tc rgb '#222222'%s\n", ++nlabel,
+                       ta, b[0] ? "' . \"\\n\" . '" : "", tb, r->x, r->y, b[0] ? " offset 0, 0.5" : "");
+        named++;
     }
     char sub[600] = "";
     if (m && m->n > 0) {
@@ -529,6 +688,12 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
         gd_gp_text(d, dt, sizeof dt);
         snprintf(sub, sizeof sub, "' . \"\\n\" . 'over the regime map %s (a cell split in two: the sweep up, left, and "
                  "down, right, end on different motions)", dt);
+    } else if (named > 0) {
+        char v[64], u[64];
+        snprintf(v, sizeof v, "%.6g", rg->r[0].y);
+        gd_gp_text(q2.unit[0] && strcmp(q2.unit, "-") != 0 ? q2.unit : "", u, sizeof u);
+        snprintf(sub, sizeof sub, "' . \"\\n\" . 'regions named on the line of the branch at %s = %s%s%s, by its stable "
+                 "orbits", n2, v, u[0] ? " " : "", u);
     }
     /* the kinds drawn, in the order of gd_curve_kind, named in the title */
     static const char *kind_plural[4] = {"folds", "period doublings", "Neimark-Sacker points", "grazings"};
@@ -548,23 +713,30 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                    kinds_text, n1, n2, sub);
     gd_plot_printf(s, "set xlabel '%s'\nset ylabel '%s'\nset offsets 0, 0, 0, 0\n"
                          "set xrange [%.12g:%.12g]\nset yrange [%.12g:%.12g]\n",
-                      xl, yl, x0, x1, y0, y1);
+                      xl, yl, f.x0, f.x1, f.y0, f.y1);
     if (over)
         gd_plot_printf(s, "set lmargin at screen %.4f\nset rmargin at screen %.4f\nset bmargin at screen %.4f\n"
                           "set tmargin at screen %.4f\nset key at screen %.4f, screen %.4f left top vertical Left reverse "
                           "samplen 3 spacing %.4f width -2\nset grid front\n",
                        OX0, OX1, OY0, OY1, OX1 + 0.02, OY1, GD_KEY_SPACING(svg, 1.25));
-    else {
-        /* the key under the axes in three columns, the bottom margin as deep as its rows */
-        int nkey = nkinds + 1 + (nc2 > 0), rows = (nkey + 2) / 3;
-        const double line = 1.4 * GD_FIG_PX / CH; /* a line of text, in screen units */
-        for (int i = 0; i < nnames; i++)
-            gd_plot_printf(s, "set label %d '%s' at screen 0.5, screen %.4f center front\n", nlabel + 1 + i,
-                           names[i], 0.02 + (nnames - 1 - i) * line + 0.4 * line);
-        gd_plot_printf(s, "set lmargin 12\nset rmargin 4\nset tmargin 5\nset bmargin %.1f\n"
-                          "set key at screen 0.5, screen %.4f center bottom horizontal maxcols 3 samplen 3 "
-                          "spacing %.4f\n",
-                       4.5 + 1.3 * (rows + nnames), 0.02 + (nnames + 0.3) * line, GD_KEY_SPACING(svg, 1.2));
+    else
+        gd_plot_printf(s, "set lmargin at screen %.4f\nset rmargin at screen %.4f\nset bmargin at screen %.4f\n"
+                          "set tmargin at screen %.4f\n"
+                          "set key at screen 0.5, screen 0.045 center bottom horizontal samplen 3 spacing %.4f\n",
+                       NX0, NX1, NY0, NY1, GD_KEY_SPACING(svg, 1.2));
+    if (nc2 > 0) {
+        /* the codimension-two points' abbreviations, a line of their own under the key (in the key
+         * they made its rows longer than the picture) */
+        char words[600];
+        int n = 0, first = 1;
+        for (int k = 0; k <= GD_C2_DOUBLE_GRAZING && n < (int)sizeof words; k++)
+            if (c2_present[k]) {
+                n += snprintf(words + n, sizeof words - (size_t)n, "%s%s %s", first ? "" : ", ", gd_codim2_label(k),
+                              c2_words[k]);
+                first = 0;
+            }
+        gd_plot_printf(s, "set label %d '%s' at screen %.4f, screen 0.012 %s front\n", ++nlabel, words,
+                       over ? OX0 : 0.5, over ? "left" : "center");
     }
     /* the box of the two ranges, where the curves end */
     gd_plot_printf(s, "set object 1 rect from %.12g, %.12g to %.12g, %.12g %s fs empty border lc rgb "
@@ -613,11 +785,9 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
     gd_plot_printf(s, "%s'curves.csv' using 7:($6 == 0 ? $8 : 1/0) with points pt 7 ps 1.1 lc rgb '%s' "
                          "title 'start: a bifurcation of a branch'",
                       sep, gd_colour[0]);
-    if (nc2 > 0) {
-        /* the codimension-two points: an open diamond larger than the starts, drawn after them */
-        gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title \"%s\"", sep,
-                       gd_colour[0], key);
-    }
+    if (nc2 > 0) /* the codimension-two points: an open diamond larger than the starts, drawn after them */
+        gd_plot_printf(s, "%s'codim2.csv' using 6:7 with points pt 12 ps 2.2 lw 2 lc rgb '%s' title "
+                          "'codimension-two point'", sep, gd_colour[0]);
     gd_plot_printf(s, "\n");
     gd_fig_end(s, 0);
 }
@@ -643,9 +813,13 @@ void gd_plot_curves(const gd_plotter *p, const gd_case *c, const gd_contin_resul
         gd_plot_fail(p, "pictures not drawn", &e);
         return;
     }
+    gd_curve_regions *rg = malloc(sizeof *rg);
+    if (rg)
+        regions_of(c, res, &o, rg);
     gd_plot_script s = {0};
-    plot_one(&s, 0, c, res, &m, &g, &o);
-    plot_one(&s, 1, c, res, &m, &g, &o);
+    plot_one(&s, 0, c, res, &m, &g, &o, rg);
+    plot_one(&s, 1, c, res, &m, &g, &o, rg);
+    free(rg);
     grid_free(&g);
     gd_contin_overlay_free(&m, &o);
     static const char *names[] = {"curves"};

@@ -73,8 +73,19 @@ gd_status gd_row_continuation_run(const gd_case *c, const gd_run_env *env, gd_ru
 
 gd_status gd_row_continuation_write(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)
 {
-    (void)c;
-    return gd_contin_write_tables(out, &((const contin_outcome *)result)->res, err);
+    const gd_contin_result *res = &((const contin_outcome *)result)->res;
+    gd_status st = gd_contin_write_tables(out, res, err);
+    if (st != GD_OK || !res->parameter2[0] || res->ncurves == 0 || c->cont_overlay_map[0])
+        return st;
+    /* the regions named from the run, where curves.png names them (regions.csv) */
+    gd_curve_regions *rg = malloc(sizeof *rg);
+    if (!rg)
+        return gd_error_set(err, GD_ERR_NOMEM, "out of memory naming the regions of the curves");
+    st = gd_plot_curve_regions(c, res, rg, err);
+    if (st == GD_OK)
+        st = gd_contin_write_regions(out, res, rg, err);
+    free(rg);
+    return st;
 }
 
 gd_status gd_row_continuation_summary(const gd_case *c, const void *result, gd_run_dir *out, gd_error *err)

@@ -1075,6 +1075,73 @@ def check_curves_overlays(fig, outdir, summary, bad):
                        ('drawn' if drawn else 'not drawn', 'found' if len(grey) == 1 else 'missing'))
 
 
+def axis_map(ticks, attr):
+    """The linear map from data to pixels along an axis, fitted through its numbered ticks."""
+    pts = [(t.number, getattr(t, attr)) for t in ticks if t.number is not None]
+    if len(pts) < 2:
+        return None
+    (a0, p0), (a1, p1) = min(pts), max(pts)
+    if a1 == a0:
+        return None
+    return lambda v: p0 + (v - a0) * (p1 - p0) / (a1 - a0)
+
+
+def check_curves_regions(fig, outdir, summary, bad):
+    """curves.svg without a regime map: every region of regions.csv marked drawn is named there,
+    its words (one line, or two split as written) centred on its row's point (to 2 px in x and
+    half a line in y), inside the frame, crossing no curve; and every region's name inside the
+    frame is a row of regions.csv (no region named that the run did not name)."""
+    cont = summary.get('case', {}).get('parameters', {}).get('continuation', {})
+    if (cont.get('overlay_map') or {}).get('value'):
+        return
+    path = os.path.join(outdir, 'regions.csv')
+    if not os.path.exists(path):
+        bad.append('regions: no regions.csv beside curves.svg')
+        return
+    rows = list(csv.DictReader(open(path, encoding='utf-8')))
+    res = summary.get('results', {})
+    c1, c2 = res.get('parameter', '').split('.')[-1], res.get('parameter2', '').split('.')[-1]
+    panel = fig.panels[0] if fig.panels else None
+    if panel is None or panel.frame is None:
+        bad.append('regions: no frame')
+        return
+    fx, fy = axis_map(panel.ticks['bottom'], 'x'), axis_map(panel.ticks['left'], 'y')
+    if fx is None or fy is None:
+        bad.append('regions: the axes have no numbered ticks')
+        return
+    words = re.compile(r'^(in contact|single-sided|double-sided)\b')
+    inside = [t for t in fig.texts if panel.frame.contains(t.x, t.y) and not t.rotated]
+    paths = [e for p in fig.plots.values() for e in p.elements if e.kind == 'path']
+    used = set()
+    for r in rows:
+        if r['drawn'] == '0':
+            continue
+        x, y = fx(float(r[c1])), fy(float(r[c2]))
+        label = r['label']
+        near = [t for t in inside if abs((t.box.x0 + t.box.x1) / 2 - x) < 2.0 and abs(t.y - y) < 2.5 * t.size]
+        lines = sorted(near, key=lambda t: t.y)
+        text = ' '.join(t.s for t in lines)
+        if text != label:
+            bad.append('regions: %r not named at its point (%.0f, %.0f): %r there' % (label, x, y, text))
+            continue
+        used.update(id(t) for t in lines)
+        top, bot = min(t.box.y0 for t in lines), max(t.box.y1 for t in lines)
+        if not top < y < bot:
+            bad.append('regions: %r drawn beside its point, not on it (%.0f to %.0f, the point %.0f)' %
+                       (label, top, bot, y))
+        for t in lines:
+            if not all(panel.frame.contains(px, py) for px in (t.box.x0, t.box.x1) for py in (t.box.y0, t.box.y1)):
+                bad.append('regions: %r runs over the frame' % label)
+            for e in paths:
+                for pts, _ in e.subpaths:
+                    if any(segment_hits(pts[i], pts[i + 1], t.box) for i in range(len(pts) - 1)):
+                        bad.append('regions: %r crosses a curve' % label)
+                        break
+    for t in inside:
+        if words.match(t.s) and id(t) not in used:
+            bad.append('regions: %r named inside the frame, not a region of regions.csv' % t.s)
+
+
 def check_picture(path, outdir, keys, single, summary):
     fig = svgfig.Figure(path)
     bad = []
@@ -1126,6 +1193,7 @@ def check_picture(path, outdir, keys, single, summary):
         check_bands(fig, bad)
     if name == 'curves.svg':
         check_curves_overlays(fig, outdir, summary, bad)
+        check_curves_regions(fig, outdir, summary, bad)
     return bad
 
 
