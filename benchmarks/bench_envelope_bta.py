@@ -7,11 +7,12 @@ sweep (both directions) of 101 x 101 points over the same plane. That map is tim
 (N1 x N2 points, both directions) and its CPU per point scaled to 101 x 101 points (each row's LTCA at
 its torque is a small part of a row's CPU). The target is a tenth of the map's CPU.
 
-The coarse map is also the brute-force check: every jump of the map (two neighbouring speeds of one
-chain, up or down, at one torque, in different motion classes: period-n, quasi-periodic, chaotic,
-not-periodic) must lie on a curve to within the map's grid spacing, i.e. some curve passes through the
-rectangle of the two points widened by one grid spacing in speed and in torque. The jumps not on a curve
-are listed with their classes.
+The coarse map is also compared with the curves (tests/cli/envelope_jumps.py): every jump of the map (two
+neighbouring speeds of one chain, up or down, at one torque, in different motion classes: period-n,
+quasi-periodic, chaotic, not-periodic) is checked to lie on a curve to within the map's grid spacing, i.e.
+some curve passes through the rectangle of the two points widened by one grid spacing in speed and in
+torque. The jumps not on a curve are listed with their classes (the test of this on the (speed, backlash)
+plane: tests/cli/test_envelope_map.sh).
 
   bench_envelope_bta.py GEARDYN SOURCE [N1 N2] [modified|unmodified] [-- section.key=value ...]
   bench_envelope_bta.py --check CURVES.csv SWEEP.csv     (the comparison only, on finished runs)
@@ -26,6 +27,9 @@ import subprocess
 import sys
 import tempfile
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tests', 'cli'))
+import envelope_jumps  # noqa: E402  (the curves against the map's jumps, shared with tests/cli/test_envelope_map.sh)
+
 S1, S2, T1, T2 = 3000.0, 5500.0, 25.0, 4800.0  # the plane: rpm, N m
 
 
@@ -38,73 +42,21 @@ def run(geardyn, args, out):
         return r1.ru_utime - r0.ru_utime + r1.ru_stime - r0.ru_stime, json.load(f)
 
 
-def polylines(path):
-    """the curves of curves.csv: {curve: (kind, [(speed, second key), ...])} (the second key: its 8th column)"""
-    cv = {}
-    rd = csv.DictReader(open(path))
-    k2 = rd.fieldnames[7]
-    for r in rd:
-        cv.setdefault(r['curve'], (r['kind'] + ('' if r['clearance'] in ('', '-') else ' of ' + r['clearance']), []))
-        cv[r['curve']][1].append((float(r['speed_rpm']), float(r[k2])))
-    return cv
-
-
-def through(poly, x0, x1, y0, y1):
-    """whether the polyline passes through the rectangle [x0, x1] x [y0, y1]"""
-    for (a, b), (c, d) in zip(poly, poly[1:] or poly):
-        for k in range(101):
-            x, y = a + (c - a) * k / 100, b + (d - b) * k / 100
-            if x0 <= x <= x1 and y0 <= y <= y1:
-                return True
-    return False
-
-
-def crosses(poly, x0, x1, y):
-    """whether the polyline crosses the segment [x0, x1] x {y}"""
-    for (a, b), (c, d) in zip(poly, poly[1:]):
-        if (b - y) * (d - y) <= 0 and b != d:
-            x = a + (c - a) * (y - b) / (d - b)
-            if x0 <= x <= x1:
-                return True
-    return False
-
-
 def check(curves_csv, sweep_csv):
     """every boundary of the map (sweep.csv of a regular grid) on a curve of curves.csv within one grid spacing"""
-    cv = polylines(curves_csv)
     k2 = next(csv.reader(open(curves_csv)))[7]
-    rows = list(csv.DictReader(open(sweep_csv)))
-    g1 = sorted({float(x['parameter']) for x in rows})
-    g2 = sorted({float(x['parameter2']) for x in rows})
-    h1, h2 = (g1[-1] - g1[0]) / (len(g1) - 1), (g2[-1] - g2[0]) / (len(g2) - 1)
-    chains = {}
-    for x in rows:
-        chains.setdefault((x['direction'], float(x['parameter2'])), []).append(x)
-    def boundaries(key):
-        n, strict, missed = 0, 0, []
-        for (d, tq), ch in sorted(chains.items()):
-            ch.sort(key=lambda x: float(x['parameter']))
-            for a, b in zip(ch, ch[1:]):
-                ka, kb = key(a), key(b)
-                if ka == kb:
-                    continue
-                n += 1
-                sa, sb = float(a['parameter']), float(b['parameter'])
-                strict += any(crosses(poly, min(sa, sb), max(sa, sb), tq) for kind, poly in cv.values())
-                if not any(through(poly, min(sa, sb) - h1, max(sa, sb) + h1, tq - h2, tq + h2)
-                           for kind, poly in cv.values()):
-                    missed.append('%s at %s = %.6g, %.0f rpm %s -> %.0f rpm %s' % (d, k2, tq, sa, ka, sb, kb))
-        return n, strict, missed
-
-    motion = lambda x: 'period-%s' % x['period_n'] if x['motion'].startswith('period') else x['motion']
-    for what, key in (('jumps of the map (the motion class changes between neighbouring speeds of a chain)', motion),
+    for what, key in (('jumps of the map (the motion class changes between neighbouring speeds of a chain)',
+                       envelope_jumps.motion),
                       ('changes of the mesh\'s impact regime (no-impact, single-, double-sided)',
                        lambda x: x['impact_regime'])):
-        n, strict, missed = boundaries(key)
+        js, (h1, h2) = envelope_jumps.jumps(curves_csv, sweep_csv, key)
+        missed = [j for j in js if not j['near']]
         print('%s: %d; a curve crosses the row between the two points: %d; a curve passes within one grid spacing '
-              '(%.4g rpm, %.4g in %s) of them: %d' % (what, n, strict, h1, h2, k2, n - len(missed)))
-        for m_ in missed:
-            print('  not on a curve: ' + m_)
+              '(%.4g rpm, %.4g in %s) of them: %d' % (what, len(js), sum(j['crossed'] for j in js), h1, h2, k2,
+                                                       len(js) - len(missed)))
+        for j in missed:
+            print('  not on a curve: %s at %s = %.6g, %.0f rpm %s -> %.0f rpm %s'
+                  % (j['direction'], k2, j['p2'], j['p1a'], j['ka'], j['p1b'], j['kb']))
 
 
 def main(argv):

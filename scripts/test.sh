@@ -81,11 +81,12 @@ fi
 echo "== build without MPI, with ASan+UBSan, and run the suites of the library and the command line"
 echo "   again, and the Python module's run of every analysis (the other Python tests, the guide and"
 echo "   the examples call the same library functions as these). Left out there: faults, publish,"
-echo "   dynamic_objective, optimize_robust and envelope_ns, 12 minutes under the sanitizers, whose"
-echo "   library code optimize_cli, optimize_objectives, run, guards and envelope run"
+echo "   dynamic_objective, optimize_robust, envelope_ns and envelope_bta, 12 minutes under the"
+echo "   sanitizers, whose library code optimize_cli, optimize_objectives, run, guards, envelope and"
+echo "   envelope_cli run (envelope_ns and envelope_bta: the paper's pair's curves and a regime map)"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 TEST_ARGS=(--timeout-multiplier 4 --no-suite python --no-suite docs --no-suite examples)
-EXCLUDE='faults|publish|dynamic_objective|optimize_robust|envelope_ns'
+EXCLUDE='faults|publish|dynamic_objective|optimize_robust|envelope_ns|envelope_bta'
 if build_and_test build-asan -Db_sanitize=address,undefined -Db_lundef=false -Dbuildtype=debugoptimized \
         -Dwerror=true -Dmpi=disabled; then
     meson test -C build-asan --print-errorlogs --timeout-multiplier 4 python_runs
