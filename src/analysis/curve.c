@@ -1134,8 +1134,9 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         st = push_point(C->cv, &b->pt, err);
         if (st != GD_OK)
             goto done;
-        /* no progress: points in a row at the smallest step (below twice ds_min: the step could not grow) */
-        stalled = ds < 2.0 * co->ds_min ? stalled + 1 : 0;
+        /* no progress: points in a row at the smallest step (below twice ds_min: the step could not grow;
+         * not when ds_max itself allows no more) */
+        stalled = ds < 2.0 * co->ds_min && co->ds_max >= 2.0 * co->ds_min ? stalled + 1 : 0;
         if (!ended && stalled >= GD_CURVE_STALL_POINTS) {
             const int k0 = C->cv->npoints - GD_CURVE_STALL_POINTS;
             const gd_curve_point *p0 = &C->cv->pt[k0 > 0 ? k0 - 1 : 0];
