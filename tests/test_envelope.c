@@ -25,7 +25,9 @@
  *    in p2 0 .. 0.7: p1 = p2^2 and kappa to 1e-8 at every point, and the strong resonances 1:4
  *    (w = 1/4, p2 = 0.1) and 1:3 (w = 1/3, p2 = 0.2667) located there to 1e-8. (At w = 1/2, p2 = 0.6,
  *    the pair of this rotation touches -1 and leaves it again, kappa's minimum: no 1:2 point, and the
- *    curve runs on to the bound.) */
+ *    curve runs on to the bound.)
+ * 6. Admissibility (below).
+ * 7. A jump of the model in the second parameter ends the curve there, named (below). */
 #include "analysis_util.h"
 #include "tap.h"
 #include "geardyn/gd_envelope.h"
@@ -294,6 +296,58 @@ static void admissibility(gd_case *c, const gd_solver_opts *o, double om, const 
     gd_curve_free(&cv);
 }
 
+/* check 7: a model that jumps in the second parameter. The excitation amplitude of the model is F_a for
+ * F_a >= 0.08 and F_a - 0.01 below (a step of the model, as the mesh-in impact of an LTCA excitation
+ * when its first touch moves from one point of the flank to another). The grazing curve followed down
+ * from F_a 0.1 reaches the step (Omega 0.7477); below it the model's grazing curve lies elsewhere (at F_a
+ * higher by 0.01), so no point across the step continues the curve: the curve must end at the step with
+ * its cause named ("discontinuous", not "no convergence at the smallest step"), its last point within
+ * 1e-3 above it, and not crawl towards it at the smallest step. */
+static const double JUMP_AT = 0.08, JUMP_BY = -0.01;
+static gd_status jump_at(double p1, double p2, gd_model *m, void *ctx, gd_error *err)
+{
+    return gd_model_at_case_keys(p1, p2 < JUMP_AT ? p2 + JUMP_BY : p2, m, ctx, err);
+}
+
+static void model_jump(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bifurcation *graze)
+{
+    gd_error e = {0};
+    gd_curve_opts co;
+    gd_curve_opts_default(&co);
+    co.p_min[0] = 0.5;
+    co.p_max[0] = 1.5;
+    co.p_min[1] = 0.05;
+    co.p_max[1] = 0.2;
+    co.direction = -1;
+    co.words.key[1] = "excitation.ste_amplitude_um";
+    co.words.unit[1] = "um";
+    gd_curve_start s;
+    memset(&s, 0, sizeof s);
+    s.kind = GD_CURVE_GRAZING;
+    s.nper = 1;
+    s.clearance = graze->clearance;
+    s.p1 = graze->p;
+    s.p2 = FA0;
+    memcpy(s.y, graze->y, sizeof s.y);
+    gd_curve cv;
+    if (gd_curve_follow(jump_at, pp, o, &co, &s, &cv, &e) != GD_OK)
+        au_die(&e);
+    const gd_curve_point *z = &cv.pt[cv.npoints - 1];
+    int small = 0;
+    for (int i = 0; i < cv.npoints; i++)
+        small += cv.pt[i].ds > 0 && cv.pt[i].ds < 2.0 * co.ds_min;
+    printf("# grazing curve down to a step of the model at F_a %.3f: %d points (%d at the smallest step) to "
+           "(%.10f, %.10f), %ld corrections: %s: %s\n", JUMP_AT, cv.npoints, small, z->orbit.p, z->p2, cv.corrections,
+           gd_curve_end_name(cv.end), cv.end_reason);
+    tap_ok(cv.end == GD_CEND_DISCONTINUOUS && strstr(cv.end_reason, "excitation.ste_amplitude_um") &&
+           strstr(cv.end_reason, "discontinuous"), "model step: the curve ends on the model's discontinuity, named "
+           "(%s: %s)", gd_curve_end_name(cv.end), cv.end_reason);
+    tap_ok(z->p2 >= JUMP_AT && z->p2 - JUMP_AT < 1e-3, "model step: its last point at F_a %.10f, within 1e-3 above "
+           "the step at %.3f", z->p2, JUMP_AT);
+    tap_ok(small <= 5, "model step: %d of its %d points at the smallest step (at most 5: no crawl)", small, cv.npoints);
+    gd_curve_free(&cv);
+}
+
 int main(void)
 {
     neimark_sacker();
@@ -312,6 +366,7 @@ int main(void)
     if (!(nb.b[GRAZE] && nb.b[FOLD_HI] && nb.b[FOLD_LO] && nb.b[PD]))
         return tap_done();
     admissibility(&c, &o, om, nb.b[GRAZE]);
+    model_jump(&pp, &o, nb.b[GRAZE]);
 
     /* 1 and 2: every point of every curve, both directions over the whole box */
     for (int k = 0; k < 4; k++)

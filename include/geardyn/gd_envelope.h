@@ -144,9 +144,14 @@ typedef enum gd_curve_end {
     GD_CEND_CONTACT = 4,     /* the orbit's contact-event sequence would change (a grazing met) */
     GD_CEND_RESONANCE = 5,   /* Neimark-Sacker: the pair met on the real axis (1:1 or 1:2) */
     GD_CEND_INVALID = 6,     /* the model is not valid beyond (a key out of its range) */
-    GD_CEND_INADMISSIBLE = 7 /* grazing: beyond, the orbit crosses the grazed boundary inside the touch's held
-                              * window (another extremum past it, or the touch from the wrong side) */
+    GD_CEND_INADMISSIBLE = 7, /* grazing: beyond, the orbit crosses the grazed boundary inside the touch's held
+                               * window (another extremum past it, or the touch from the wrong side) */
+    GD_CEND_DISCONTINUOUS = 8, /* the model jumps in a parameter there: the residual's one-sided differences
+                                * disagree however small the difference (docs/continuation.md section 8) */
+    GD_CEND_STALL = 9        /* no progress: GD_CURVE_STALL_POINTS points in a row at the smallest step */
 } gd_curve_end;
+/* consecutive points at the smallest step (below twice ds_min) that end a curve as GD_CEND_STALL */
+#define GD_CURVE_STALL_POINTS 20
 GD_API const char *gd_curve_end_name(int end);
 
 typedef struct gd_curve {

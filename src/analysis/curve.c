@@ -5,7 +5,8 @@
  * codimension-two points at every point and their sign changes located by GSL's Brent solver, and
  * the ends: the box, the budget, the smallest step, a closed curve, a change of the orbit's contact
  * sequence (a grazing met, located on the distance of the followed extremum to its boundary), a
- * strong resonance 1:1 or 1:2 on a Neimark-Sacker curve, the model's validity. */
+ * strong resonance 1:1 or 1:2 on a Neimark-Sacker curve, the model's validity, a jump of the model in a
+ * parameter (curve_system.c's differences), no progress (points in a row at the smallest step). */
 #include "curve_internal.h"
 #include "cont_internal.h"
 #include "geardyn/gd_scene.h"
@@ -55,8 +56,8 @@ GD_API const char *gd_codim2_label(int kind)
 GD_API const char *gd_curve_end_name(int end)
 {
     static const char *names[] = {"bound", "budget", "step", "closed", "contact", "resonance", "invalid",
-                                  "inadmissible"};
-    return end >= 0 && end <= GD_CEND_INADMISSIBLE ? names[end] : "?";
+                                  "inadmissible", "discontinuous", "stall"};
+    return end >= 0 && end <= GD_CEND_STALL ? names[end] : "?";
 }
 
 GD_API void gd_curve_free(gd_curve *cv)
@@ -1018,7 +1019,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
     double first_u[CMAX], first_t[CMAX];
     memcpy(first_u, a->u, sizeof first_u);
     memcpy(first_t, a->t, sizeof first_t);
-    int left_first = 0;
+    int left_first = 0, stalled = 0;
     double ds = co->ds;
     while (C->cv->npoints < co->max_points) {
         if (gd_stop_asked(&co->stop)) {
@@ -1087,6 +1088,18 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         if (st != GD_OK || turn < 0.5 || too_far) {
             const char *why = st != GD_OK ? e1.msg : too_far ? "a parameter moves more than dp_max"
                                                              : "the tangent turns too sharply";
+            if (st != GD_OK && S->jump_q >= 0 && ds <= co->ds_min) {
+                /* the model jumps at the step's end: the curve ends at its last point before the jump */
+                const int jq = S->jump_q;
+                const char *un = co->words.unit[jq];
+                end_with(C->cv, GD_CEND_DISCONTINUOUS, "the model is discontinuous in %s at %.10g%s%s, beyond %s: "
+                         "the one-sided differences of the orbit's residual in it disagree down to a step of %.3g%s%s "
+                         "(no curve across a jump of the model)", co->words.key[jq] ? co->words.key[jq] : jq ? "p2" : "p1",
+                         p_value(C, jq, S->jump_p), un && un[0] ? " " : "", un ? un : "", PP(a->u),
+                         fabs(p_value(C, jq, S->jump_dp)), un && un[0] ? " " : "", un ? un : "");
+                st = GD_OK;
+                goto done;
+            }
             if (ds <= co->ds_min) {
                 end_with(C->cv, GD_CEND_STEP, "no convergence at the smallest step %.3g from %s: %s",
                          ds, PP(a->u), why);
@@ -1168,6 +1181,20 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         st = push_point(C->cv, &b->pt, err);
         if (st != GD_OK)
             goto done;
+        /* no progress: points in a row at the smallest step (below twice ds_min: the step could not grow;
+         * not when ds_max itself allows no more) */
+        stalled = ds < 2.0 * co->ds_min && co->ds_max >= 2.0 * co->ds_min ? stalled + 1 : 0;
+        if (!ended && stalled >= GD_CURVE_STALL_POINTS) {
+            const int k0 = C->cv->npoints - GD_CURVE_STALL_POINTS;
+            const gd_curve_point *p0 = &C->cv->pt[k0 > 0 ? k0 - 1 : 0];
+            char d1[GD_PATH_MAX], d2[GD_PATH_MAX];
+            end_with(C->cv, GD_CEND_STALL, "no progress at %s: %d points in a row at the smallest step %.3g moved "
+                     "%s and %s (the corrector needs several iterations however small the step: a Jacobian that "
+                     "does not fit the residual there)", PP(b->u), GD_CURVE_STALL_POINTS, co->ds_min,
+                     p_text(C, 0, fabs(b->u[N] - p0->orbit.p), d1, sizeof d1),
+                     p_text(C, 1, fabs(b->u[N + 1] - p0->p2), d2, sizeof d2));
+            goto done;
+        }
         if (ended) {
             const char *bk = co->words.bound_key[qb][pbnd >= co->p_max[qb]];
             const char *un = co->words.unit[qb];

@@ -55,6 +55,9 @@ typedef struct csys {
     double *J;               /* (D - 1) x D, row-major: the Jacobian of the last evaluation with jac */
     int jac_ok;
     int seq_changed;         /* the last evaluation's contact sequence differs from the curve's */
+    int jump_q;              /* the last evaluation's Jacobian was refused: the model jumps in parameter jump_q
+                              * (its one-sided differences disagree at every step tried), else -1 */
+    double jump_p, jump_dp;  /* there: the parameter's value and the smallest step tried */
     double rtol_g;           /* the defining equations' tolerance */
 } csys;
 

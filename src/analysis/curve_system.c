@@ -16,7 +16,9 @@
  *     touch.
  *
  * Every finite difference keeps the contact-event sequence of the point it differentiates: one that
- * would change it is taken from the other side, and where both would, the Jacobian is refused. */
+ * would change it is taken from the other side, and where both would, the Jacobian is refused (a
+ * parameter's difference after trying smaller steps, as one whose one-sided halves disagree: a jump of
+ * the model). */
 #include "curve_internal.h"
 #include "shooting.h"
 
@@ -48,6 +50,7 @@ gd_status csys_init(csys *S, gd_model_at2_fn model_at, void *ctx, const gd_solve
     for (int i = 0; i < S->D; i++)
         S->w[i] = 1.0;
     S->gclr = -1;
+    S->jump_q = -1;
     S->J = malloc(sizeof(double) * (size_t)(S->D - 1) * (size_t)S->D);
     if (!S->J)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for a curve's Jacobian");
@@ -392,61 +395,101 @@ static gd_status dir_runs(csys *S, const double *u, jacx *x, gd_error *err)
     return GD_OK;
 }
 
-/* The parameter runs: the segment ends, the tangents from R_k d and the touch at p_q +- dp. */
+/* Whether the central difference of the segment ends at p +- dp looks across a jump of the model: its
+ * one-sided differences (against the point's own ends) disagree by more than half the larger, beyond the
+ * integration's noise. A smooth residual differs between them by its curvature times dp only. */
+static int one_sided_disagree(const csys *S, double yv[2][GD_PO_MAX_PERIODS][GD_MAX_STATE], const double *u,
+                              double dp)
+{
+    const int n = S->n, K = S->nseg;
+    double mism = 0, size = 0, ymax = 0;
+    for (int k = 0; k < K; k++)
+        for (int i = 0; i < n; i++) {
+            double base = S->F[k * n + i] + u[((k + 1) % K) * n + i];
+            double fw = (yv[0][k][i] - base) / dp, bw = (base - yv[1][k][i]) / dp;
+            mism = fmax(mism, fabs(fw - bw));
+            size = fmax(size, fmax(fabs(fw), fabs(bw)));
+            ymax = fmax(ymax, fabs(base));
+        }
+    const double noise = 100.0 * (S->o.rtol * (1.0 + ymax) + S->o.atol) / dp;
+    return mism > 0.5 * size + noise;
+}
+
+/* The parameter runs: the segment ends, the tangents from R_k d and the touch at p_q +- dp. A difference
+ * that changes the contact sequence on both sides, or whose one-sided halves disagree (the model jumps
+ * within dp: the mesh-in impact of an LTCA excitation when its first touch moves to another point of the
+ * flank), is taken again at an eighth of the step, down to DP_SHRINKS times; then the Jacobian is
+ * refused (S->jump_q set for a jump). */
+#define DP_SHRINKS 4
 static gd_status par_runs(csys *S, const double *u, jacx *x, gd_error *err)
 {
     const int n = S->n, K = S->nseg, N = S->N, nd = x->nd;
     const double phi = S->kind == GD_CURVE_GRAZING ? u[N + 2] : 0.0;
+    S->jump_q = -1;
     for (int q = 0; q < 2; q++) {
         double p = u[N + q], dp = S->dp_rel * (1.0 + fabs(p));
         double yv[2][GD_PO_MAX_PERIODS][GD_MAX_STATE], Tv[2][4][GD_PO_MAX_PERIODS][GD_MAX_STATE], xg[2], xdg[2];
         int ok[2] = {1, 1};
-        for (int side = 0; side < 2; side++) {
-            double pp[2] = {u[N], u[N + 1]};
-            pp[q] = p + (side ? -dp : dp);
-            gd_model m;
-            gd_error e1 = {0};
-            gd_status st = S->model_at(pp[0], pp[1], &m, S->ctx, &e1);
-            if (st == GD_ERR_INPUT) { /* beyond the model's validity: from the other side */
-                ok[side] = 0;
-                continue;
-            }
-            if (st != GD_OK)
-                return gd_error_set(err, st, "%s", e1.msg);
-            gd_model keep = S->m;
-            S->m = m; /* (the held window's times follow the model's period) */
-            for (int k = 0; k < K && ok[side]; k++) {
-                double V[GD_MAX_STATE * 4];
-                for (int i = 0; i < n; i++)
-                    for (int di = 0; di < nd; di++)
-                        V[i * nd + di] = x->Rd[di][k][i];
-                /* more directions than the state has (Neimark-Sacker on n < 4): the whole monodromy, applied */
-                const int whole = nd > n;
-                gd_map_probe pr;
-                st = seg_run(S, &m, k, u + k * n, phi, whole ? n : nd, whole ? NULL : nd ? V : NULL, &pr, NULL, err);
-                if (st != GD_OK) {
-                    S->m = keep;
-                    return st;
-                }
-                if (pr.seq != S->seq[k]) {
+        for (int shrink = 0;; shrink++, dp *= 0.125) {
+            ok[0] = ok[1] = 1;
+            for (int side = 0; side < 2; side++) {
+                double pp[2] = {u[N], u[N + 1]};
+                pp[q] = p + (side ? -dp : dp);
+                gd_model m;
+                gd_error e1 = {0};
+                gd_status st = S->model_at(pp[0], pp[1], &m, S->ctx, &e1);
+                if (st == GD_ERR_INPUT) { /* beyond the model's validity: from the other side */
                     ok[side] = 0;
-                    break;
+                    continue;
                 }
-                memcpy(yv[side][k], pr.y1, sizeof(double) * (size_t)n);
-                for (int di = 0; di < nd; di++)
-                    if (whole)
-                        matvec(n, pr.T1, x->Rd[di][k], Tv[side][di][k]);
-                    else
-                        for (int i = 0; i < n; i++)
-                            Tv[side][di][k][i] = pr.T1[i * nd + di];
-                if (pr.t_probe >= 0) {
-                    gd_model_clearance(&m, S->gclr, pr.t_probe, pr.yp, &pr.mdp, &xg[side], &xdg[side]);
+                if (st != GD_OK)
+                    return gd_error_set(err, st, "%s", e1.msg);
+                gd_model keep = S->m;
+                S->m = m; /* (the held window's times follow the model's period) */
+                for (int k = 0; k < K && ok[side]; k++) {
+                    double V[GD_MAX_STATE * 4];
+                    for (int i = 0; i < n; i++)
+                        for (int di = 0; di < nd; di++)
+                            V[i * nd + di] = x->Rd[di][k][i];
+                    /* more directions than the state has (Neimark-Sacker on n < 4): the whole monodromy, applied */
+                    const int whole = nd > n;
+                    gd_map_probe pr;
+                    st = seg_run(S, &m, k, u + k * n, phi, whole ? n : nd, whole ? NULL : nd ? V : NULL, &pr, NULL, err);
+                    if (st != GD_OK) {
+                        S->m = keep;
+                        return st;
+                    }
+                    if (pr.seq != S->seq[k]) {
+                        ok[side] = 0;
+                        break;
+                    }
+                    memcpy(yv[side][k], pr.y1, sizeof(double) * (size_t)n);
+                    for (int di = 0; di < nd; di++)
+                        if (whole)
+                            matvec(n, pr.T1, x->Rd[di][k], Tv[side][di][k]);
+                        else
+                            for (int i = 0; i < n; i++)
+                                Tv[side][di][k][i] = pr.T1[i * nd + di];
+                    if (pr.t_probe >= 0) {
+                        gd_model_clearance(&m, S->gclr, pr.t_probe, pr.yp, &pr.mdp, &xg[side], &xdg[side]);
+                    }
                 }
+                S->m = keep;
             }
-            S->m = keep;
+            const int jump = ok[0] && ok[1] && one_sided_disagree(S, yv, u, dp);
+            if ((ok[0] || ok[1]) && !jump)
+                break;
+            if (shrink == DP_SHRINKS) {
+                if (!jump)
+                    return seq_refused(S, "in a parameter", err);
+                S->jump_q = q;
+                S->jump_p = p;
+                S->jump_dp = dp;
+                return gd_error_set(err, GD_ERR_SOLVER, "the model is discontinuous in parameter %d within %.3g of %.10g: "
+                                    "the one-sided differences of the orbit's residual disagree at every step down to that",
+                                    q + 1, dp, p);
+            }
         }
-        if (!ok[0] && !ok[1])
-            return seq_refused(S, "in a parameter", err);
         /* central, or one-sided against the point itself */
         double h = ok[0] && ok[1] ? 2.0 * dp : dp;
         for (int k = 0; k < K; k++) {
@@ -583,6 +626,7 @@ gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err)
     const int n = S->n, K = S->nseg, N = S->N;
     S->jac_ok = 0;
     S->seq_changed = 0;
+    S->jump_q = -1;
     S->have_M = 0;
     gd_status st = S->model_at(u[N], u[N + 1], &S->m, S->ctx, err);
     if (st != GD_OK)
