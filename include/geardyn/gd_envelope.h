@@ -148,10 +148,13 @@ typedef enum gd_curve_end {
                                * window (another extremum past it, or the touch from the wrong side) */
     GD_CEND_DISCONTINUOUS = 8, /* the model jumps in a parameter there: the residual's one-sided differences
                                 * disagree however small the difference (docs/continuation.md section 8) */
-    GD_CEND_STALL = 9        /* no progress: GD_CURVE_STALL_POINTS points in a row at the smallest step */
+    GD_CEND_STALL = 9        /* no progress: GD_CURVE_STALL_POINTS points in a row at the smallest step, or
+                              * GD_CURVE_CRAWL_POINTS in a row at steps below 100 ds_min that moved less than a
+                              * hundredth of the box in both parameters */
 } gd_curve_end;
 /* consecutive points at the smallest step (below twice ds_min) that end a curve as GD_CEND_STALL */
 #define GD_CURVE_STALL_POINTS 20
+#define GD_CURVE_CRAWL_POINTS 50
 GD_API const char *gd_curve_end_name(int end);
 
 typedef struct gd_curve {

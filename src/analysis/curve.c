@@ -1019,7 +1019,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
     double first_u[CMAX], first_t[CMAX];
     memcpy(first_u, a->u, sizeof first_u);
     memcpy(first_t, a->t, sizeof first_t);
-    int left_first = 0, stalled = 0;
+    int left_first = 0, stalled = 0, crawled = 0;
     double ds = co->ds;
     while (C->cv->npoints < co->max_points) {
         if (gd_stop_asked(&co->stop)) {
@@ -1194,6 +1194,24 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                      p_text(C, 0, fabs(b->u[N] - p0->orbit.p), d1, sizeof d1),
                      p_text(C, 1, fabs(b->u[N + 1] - p0->p2), d2, sizeof d2));
             goto done;
+        }
+        /* crawling: points in a row whose steps stay small (below 100 ds_min: the corrector needs four or five
+         * iterations at every step, so the step never grows) that moved less than a hundredth of the box in
+         * both parameters; at that pace the curve would not cross the box within any budget */
+        crawled = ds < 100.0 * co->ds_min && co->ds_max >= 200.0 * co->ds_min ? crawled + 1 : 0;
+        if (!ended && crawled >= GD_CURVE_CRAWL_POINTS) {
+            const int k0 = C->cv->npoints - GD_CURVE_CRAWL_POINTS;
+            const gd_curve_point *p0 = &C->cv->pt[k0 > 0 ? k0 - 1 : 0];
+            double m1 = fabs(b->u[N] - p0->orbit.p), m2 = fabs(b->u[N + 1] - p0->p2);
+            if (m1 < 0.01 * C->R[0] && m2 < 0.01 * C->R[1]) {
+                char d1[GD_PATH_MAX], d2[GD_PATH_MAX];
+                end_with(C->cv, GD_CEND_STALL, "no progress at %s: %d points in a row at steps below %.3g moved %s "
+                         "and %s, less than a hundredth of the box (the corrector needs several iterations however "
+                         "small the step: a Jacobian that does not fit the residual there)", PP(b->u),
+                         GD_CURVE_CRAWL_POINTS, 100.0 * co->ds_min, p_text(C, 0, m1, d1, sizeof d1),
+                         p_text(C, 1, m2, d2, sizeof d2));
+                goto done;
+            }
         }
         if (ended) {
             const char *bk = co->words.bound_key[qb][pbnd >= co->p_max[qb]];

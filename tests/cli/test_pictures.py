@@ -110,9 +110,10 @@ SHORTEN = [
                                             'solver.ltca_positions_per_cycle=8', 'solver.ltca_face_slices=7']),
     ('cases/optimize/compare-test-functions.ini', ['optimize.dimension=6', 'optimize.runs=2',
                                                    'optimize.budget_evals=500']),
-    # the paper's pair's curves in two parameters: the branch to 3600 rpm and 3 points per curve
-    # the paper's pair's curves: the backlash plane whole (about 15 s of CPU); the torque plane (an LTCA at
-    # every new torque: 30 minutes whole) around the two bearing grazings at 3496 and 3510 rpm, 400-600 N m
+    # the paper's pair's curves: the backlash plane of the unmodified pair whole (its three Neimark-Sacker
+    # points' curves among them; 35 s of CPU, the modified pair's nine 80 s); the torque plane (an LTCA at
+    # every new torque: minutes whole) around the two bearing grazings at 3496 and 3510 rpm, 400-600 N m
+    ('cases/continuation/paper-curves-backlash.ini', ['modification.apply=off']),
     ('cases/continuation/paper-curves-torque.ini', ['continuation.from=3300', 'continuation.to=3700',
                                                     'continuation.parameter2_from=400',
                                                     'continuation.parameter2_to=600']),
