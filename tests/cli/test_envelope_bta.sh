@@ -79,6 +79,22 @@ if g and e and up:
     ok(len(pts) == 3 and d < 1e-5, "the period-doubling curve extended from its last three points (the last at %.6f "
        "rpm, %.8f um) to the GPD's speed: backlash %.8f um, the GPD's %.8f, %.2g relative (tolerance 1e-5)"
        % (pts[-1][0], pts[-1][1], quad(gs), gb, d))
+# no curve crawls: 50 points in a row at steps below 100 ds_min (1e-4) that moved less than a hundredth of
+# the box (2500 rpm by 100 um) in both keys end the curve (stall), rather than use its budget of points
+cv = {}
+for r in csv.DictReader(open(bc + "/curves.csv")):
+    cv.setdefault(r["curve"], []).append((float(r["ds"]), float(r["speed_rpm"]), float(r["backlash_um"])))
+worst, stalls = 0, 0
+ends = {str(c["curve"]): c["end"] for c in json.load(open(bc + "/summary.json"))["results"]["curves"]}
+for k, P in cv.items():
+    run = 0
+    for i in range(1, len(P)):
+        run = run + 1 if P[i][0] < 1e-4 else 0
+        if run >= 50 and abs(P[i][1] - P[i - 50][1]) < 25 and abs(P[i][2] - P[i - 50][2]) < 1:
+            worst = max(worst, len(P) - 1 - i)
+    stalls += ends.get(k) == "stall"
+ok(worst == 0, "no curve goes on past 50 small steps that moved less than 1 %% of the box (%d points past; %d curves "
+   "end stall)" % (worst, stalls))
 PY
 while read -r verdict msg; do
     [ "$verdict" = PASS ]; ok $? "$msg"
