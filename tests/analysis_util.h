@@ -7,11 +7,27 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 static inline void au_die(const gd_error *e)
 {
     printf("Bail out! %s\n", e->msg);
     exit(1);
+}
+
+/* ERK5 to rtol 1e-11, atol 1e-13, root finding on: the options of the smooth systems with known
+ * multipliers that the curve tests follow */
+static inline void au_smooth_opts(gd_solver_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->method = GD_METHOD_ERK;
+    o->order = 5;
+    o->rtol = 1e-11;
+    o->atol = 1e-13;
+    o->max_step_fraction = 1.0;
+    o->max_events_per_period = 10;
+    o->max_separated_periods = 10;
+    o->root_finding = 1;
 }
 
 static inline void au_set(gd_case *c, const char *kv)

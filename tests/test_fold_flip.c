@@ -93,15 +93,7 @@ int main(void)
     F.sys.tangent = ff_tangent;
     F.sys.ctx = &F;
     gd_solver_opts o;
-    memset(&o, 0, sizeof o);
-    o.method = GD_METHOD_ERK;
-    o.order = 5;
-    o.rtol = 1e-11;
-    o.atol = 1e-13;
-    o.max_step_fraction = 1.0;
-    o.max_events_per_period = 10;
-    o.max_separated_periods = 10;
-    o.root_finding = 1;
+    au_smooth_opts(&o);
     gd_curve_opts co;
     gd_curve_opts_default(&co);
     co.p_min[0] = -0.5;
