@@ -33,6 +33,7 @@
 #include "geardyn/gd_envelope.h"
 
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const double ZETA = 0.05, FM = 0.1, FA0 = 0.1;
@@ -337,6 +338,14 @@ static void model_jump(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bif
     tap_ok(z->p2 >= JUMP_AT && z->p2 - JUMP_AT < 1e-3, "model step: its last point at F_a %.10f, within 1e-3 above "
            "the step at %.3f", z->p2, JUMP_AT);
     tap_ok(small <= 5, "model step: %d of its %d points at the smallest step (at most 5: no crawl)", small, cv.npoints);
+    /* the jump is located from the first step whose corrector fails next to it (its differences saw the jump),
+     * not by halving that step down to ds_min, a failed corrector at each of some eighteen halvings */
+    tap_ok(cv.corrections <= cv.npoints + 4, "model step: named at the first failed step: %ld corrections for %d "
+           "points", cv.corrections, cv.npoints);
+    const char *at = strstr(cv.end_reason, " at ");
+    const double pj = at ? atof(at + 4) : NAN;
+    tap_ok(fabs(pj - JUMP_AT) < 1e-6 && z->p2 > pj && z->p2 - JUMP_AT < 1e-4, "model step: located at F_a %.10g "
+           "(within 1e-6 of %.3f), the last point %.3g above it", pj, JUMP_AT, z->p2 - pj);
     gd_curve_free(&cv);
 }
 

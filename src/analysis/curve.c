@@ -163,6 +163,20 @@ static int converged(const ccont *C, const double *v, const double *u, const dou
     return r < C->tol && gmax < 1.0 && fabs(g) < C->tol * sqrt(S->w[0]) && isfinite(r + gmax + g);
 }
 
+/* The residual against the tolerances of converged(): the orbit's part over tol, the extra equations over
+ * theirs (a corrector's progress). */
+static double merit(const ccont *C)
+{
+    const csys *S = C->S;
+    double r = 0;
+    for (int i = 0; i < S->N; i++)
+        r = fmax(r, fabs(S->F[i]) / C->tol);
+    double tg = S->kind == GD_CURVE_GRAZING ? C->tol : S->rtol_g + C->tol / C->Y;
+    for (int i = S->N; i < S->D - 1; i++)
+        r = fmax(r, fabs(S->F[i]) / tg);
+    return isfinite(r) ? r : INFINITY;
+}
+
 /* x = [J; v^T]^-1 b for the Jacobian Jm ((D - 1) x D) bordered by v */
 static gd_status bordered_solve(const ccont *C, const double *Jm, const double *v, const double *b, double *x,
                                 gd_error *err)
@@ -205,7 +219,11 @@ done:
 
 /* Newton on the curve's system bordered by v . (u - u_pred) = 0, from u (in and out): the chord
  * iteration with the kept Jacobian first (residuals only, while each at least halves the residual's
- * norm), then Newton. The last evaluation is at the returned u, with its Jacobian. */
+ * norm), then Newton, given up when CORRECT_NO_GAIN iterations in a row bring the residual (merit) no
+ * lower than its best: a corrector that diverges, or stagnates on the integration's noise, fails after
+ * a few Jacobians instead of max_iter (the step is halved and tried again). The last evaluation is at
+ * the returned u, with its Jacobian. */
+#define CORRECT_NO_GAIN 3
 static gd_status correct(ccont *C, double *u, const double *v, const double *u_pred, int *iters, gd_error *err)
 {
     csys *S = C->S;
@@ -213,6 +231,7 @@ static gd_status correct(ccont *C, double *u, const double *v, const double *u_p
     double b[CMAX], dx[CMAX];
     *iters = 0;
     C->cv->corrections++;
+    S->sus_q = -1;
     if (C->have_Jc) {
         double last = INFINITY, keep[CMAX];
         memcpy(keep, u, sizeof(double) * (size_t)D);
@@ -248,6 +267,8 @@ static gd_status correct(ccont *C, double *u, const double *v, const double *u_p
         memcpy(u, keep, sizeof(double) * (size_t)D);
     }
     const int max_iter = C->co->po.max_iter > 0 ? C->co->po.max_iter : 12;
+    double best = INFINITY;
+    int best_it = 0;
     for (int it = 0;; it++) {
         *iters = it;
         gd_status st = csys_eval(S, u, 1, err);
@@ -255,7 +276,10 @@ static gd_status correct(ccont *C, double *u, const double *v, const double *u_p
             return st;
         if (converged(C, v, u, u_pred))
             return GD_OK;
-        if (it == max_iter)
+        const double m = merit(C);
+        if (m < best)
+            best = m, best_it = it;
+        if (it == max_iter || it - best_it >= CORRECT_NO_GAIN)
             break;
         double g = 0;
         for (int i = 0; i < D; i++)
@@ -274,7 +298,7 @@ static gd_status correct(ccont *C, double *u, const double *v, const double *u_p
     for (int i = 0; i < D - 1; i++)
         rn = fmax(rn, fabs(S->F[i]));
     return gd_error_set(err, GD_ERR_SOLVER, "the curve's corrector did not converge: residual %.3g after %d "
-                        "iterations", rn, max_iter);
+                        "iterations%s", rn, *iters, *iters < max_iter ? " (no progress in the last three)" : "");
 }
 
 /* the unit tangent at the last evaluation (its Jacobian), oriented along v */
@@ -1002,6 +1026,27 @@ static ptext at_text(const ccont *C, double p1, double p2)
 }
 #define PP(u) at_text(C, (u)[C->S->N], (u)[C->S->N + 1]).s
 
+/* A jump of the model: in parameter q at p, found by one-sided differences that disagree down to dp. */
+typedef struct {
+    int q;
+    double p, dp;
+} cjump;
+
+/* The point of a curve ended next to a jump of the model lies JUMP_MARGIN of the jump's dp short of it:
+ * its own differences in q, shrunk twice (par_runs), do not reach across. */
+#define JUMP_MARGIN 64.0
+
+static void end_jump(ccont *C, const cpt *last, const cjump *J)
+{
+    const gd_curve_opts *co = C->co;
+    const char *un = co->words.unit[J->q];
+    end_with(C->cv, GD_CEND_DISCONTINUOUS, "the model is discontinuous in %s at %.10g%s%s (to %.3g%s%s), beyond %s: "
+             "the orbit's residual jumps there (no curve across a jump of the model)",
+             co->words.key[J->q] ? co->words.key[J->q] : J->q ? "p2" : "p1", p_value(C, J->q, J->p),
+             un && un[0] ? " " : "", un ? un : "", fabs(p_value(C, J->q, J->dp)), un && un[0] ? " " : "", un ? un : "",
+             PP(last->u));
+}
+
 static gd_status run(ccont *C, const cpt *a0, gd_error *err)
 {
     csys *S = C->S;
@@ -1020,6 +1065,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
     memcpy(first_u, a->u, sizeof first_u);
     memcpy(first_t, a->t, sizeof first_t);
     int left_first = 0, stalled = 0, crawled = 0;
+    cjump jump_at = {-1, NAN, NAN};
     double ds = co->ds;
     while (C->cv->npoints < co->max_points) {
         if (gd_stop_asked(&co->stop)) {
@@ -1038,10 +1084,53 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             st = gd_error_set(err, st, "%s", e1.msg);
             goto done;
         }
+        int qf = -1, jump_end = 0;
+        double pf = NAN;
+        /* the corrector met a jump of the model within the step: the curve's point just short of it ends the
+         * curve (as on a bound of the box), not the step halved down to ds_min, a failed corrector each */
+        cjump jm = {S->jump_q, S->jump_p, S->jump_dp};
+        if (st != GD_OK && st != GD_ERR_INPUT && jm.q < 0 && S->sus_q >= 0) {
+            /* the corrector's differences saw a jump nearby, perhaps: located by the residual alone */
+            int found = 0;
+            gd_error e2 = {0};
+            gd_status sj = csys_find_jump(S, &jm.q, &jm.p, &jm.dp, &found, &e2);
+            if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
+                st = gd_error_set(err, sj, "%s", e2.msg);
+                goto done;
+            }
+            if (sj != GD_OK || !found)
+                jm.q = -1;
+        }
+        if (st != GD_OK && st != GD_ERR_INPUT && jm.q >= 0) {
+            const cjump J = jm;
+            const double pa = a->u[N + J.q], pstep = ds * a->t[N + J.q], sg = J.p > pa ? 1.0 : -1.0;
+            const double margin = JUMP_MARGIN * J.dp, pt = J.p - sg * margin;
+            if (pstep * sg > 0 && fabs(J.p - pa) <= 2.0 * fabs(pstep) + margin) {
+                if ((pt - pa) * sg <= 0) { /* a itself is at the jump */
+                    end_jump(C, a, &J);
+                    st = GD_OK;
+                    goto done;
+                }
+                gd_error e2 = {0};
+                gd_status sj = pt >= co->p_min[J.q] && pt <= co->p_max[J.q] ? bound_point(C, a, J.q, pt, b, &e2)
+                                                                          : GD_ERR_SOLVER;
+                if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
+                    st = gd_error_set(err, sj, "%s", e2.msg);
+                    goto done;
+                }
+                const int other = 1 - J.q;
+                if (sj == GD_OK && b->u[N + other] >= co->p_min[other] && b->u[N + other] <= co->p_max[other] &&
+                    dot_w(C, a->t, b->t) >= 0.5) {
+                    st = GD_OK;
+                    qf = J.q;
+                    pf = pt;
+                    jump_end = 1;
+                    jump_at = J;
+                }
+            }
+        }
         /* the model is not valid at a prediction beyond the box (a bound of the box on the edge of the key's
          * range: backlash 0): the point on the bound ends the curve, as for a step that crosses it */
-        int qf = -1;
-        double pf = NAN;
         char bound_fail[GD_ERROR_MSG_MAX + 96] = "";
         if (st == GD_ERR_INPUT) {
             double frac = INFINITY;
@@ -1090,13 +1179,8 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                                                              : "the tangent turns too sharply";
             if (st != GD_OK && S->jump_q >= 0 && ds <= co->ds_min) {
                 /* the model jumps at the step's end: the curve ends at its last point before the jump */
-                const int jq = S->jump_q;
-                const char *un = co->words.unit[jq];
-                end_with(C->cv, GD_CEND_DISCONTINUOUS, "the model is discontinuous in %s at %.10g%s%s, beyond %s: "
-                         "the one-sided differences of the orbit's residual in it disagree down to a step of %.3g%s%s "
-                         "(no curve across a jump of the model)", co->words.key[jq] ? co->words.key[jq] : jq ? "p2" : "p1",
-                         p_value(C, jq, S->jump_p), un && un[0] ? " " : "", un ? un : "", PP(a->u),
-                         fabs(p_value(C, jq, S->jump_dp)), un && un[0] ? " " : "", un ? un : "");
+                const cjump J = {S->jump_q, S->jump_p, S->jump_dp};
+                end_jump(C, a, &J);
                 st = GD_OK;
                 goto done;
             }
@@ -1212,6 +1296,10 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                          p_text(C, 1, m2, d2, sizeof d2));
                 goto done;
             }
+        }
+        if (jump_end) {
+            end_jump(C, b, &jump_at);
+            goto done;
         }
         if (ended) {
             const char *bk = co->words.bound_key[qb][pbnd >= co->p_max[qb]];

@@ -58,6 +58,10 @@ typedef struct csys {
     int jump_q;              /* the last evaluation's Jacobian was refused: the model jumps in parameter jump_q
                               * (its one-sided differences disagree at every step tried), else -1 */
     double jump_p, jump_dp;  /* there: the parameter's value and the smallest step tried */
+    int sus_q;               /* since it was last set to -1: a difference in parameter sus_q whose one-sided
+                              * halves disagreed at sus_u, within sus_dp (a jump of the model there, perhaps) */
+    double sus_dp, sus_u[CMAX];
+    uint64_t sus_seq[GD_PO_MAX_PERIODS];
     double rtol_g;           /* the defining equations' tolerance */
 } csys;
 
@@ -67,6 +71,11 @@ void csys_free(csys *S);
 /* Evaluate the residual at u (with the Jacobian when jac). GD_ERR_SOLVER with S->seq_changed when the
  * contact sequence differs from the curve's (at u, or on both sides of a finite difference). */
 gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err);
+/* Whether the model jumps within the last suspicion's window (sus_q, sus_u +- sus_dp): bisection of the
+ * orbit's residual at the state of sus_u, down to 8^-4 of the parameter's difference, on the half whose
+ * ends differ more; *found when the ends still differ by a quarter of the window's difference and more
+ * than the integration's noise (a jump of the model at *pj, to *width); otherwise a smooth residual. */
+gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err);
 /* The borders from a point's null vectors (fold, period doubling: v, wl; Neimark-Sacker: X, Psi, and
  * its monodromy M for the real basis of the pair's plane). */
 void csys_refresh_borders(csys *S, const double *M, const double *v, const double *wl, const double *X,

@@ -51,6 +51,7 @@ gd_status csys_init(csys *S, gd_model_at2_fn model_at, void *ctx, const gd_solve
         S->w[i] = 1.0;
     S->gclr = -1;
     S->jump_q = -1;
+    S->sus_q = -1;
     S->J = malloc(sizeof(double) * (size_t)(S->D - 1) * (size_t)S->D);
     if (!S->J)
         return gd_error_set(err, GD_ERR_NOMEM, "out of memory for a curve's Jacobian");
@@ -477,6 +478,12 @@ static gd_status par_runs(csys *S, const double *u, jacx *x, gd_error *err)
                 S->m = keep;
             }
             const int jump = ok[0] && ok[1] && one_sided_disagree(S, yv, u, dp);
+            if (jump) { /* a jump of the model within dp of p, perhaps (or a steep residual): kept for csys_find_jump */
+                S->sus_q = q;
+                S->sus_dp = dp;
+                memcpy(S->sus_u, u, sizeof(double) * (size_t)S->D);
+                memcpy(S->sus_seq, S->seq, sizeof S->sus_seq);
+            }
             if ((ok[0] || ok[1]) && !jump)
                 break;
             if (shrink == DP_SHRINKS) {
@@ -618,6 +625,92 @@ static gd_status jacobian(csys *S, const double *u, gd_error *err)
     free(x->dM);
     free(x);
     S->jac_ok = 1;
+    return GD_OK;
+}
+
+/* The orbit's residual at the state of u with parameter q at p (the other parameter as in u); 0 when the
+ * model is not valid there or the contact sequence differs from the one at sus_u. */
+static gd_status residual_at(csys *S, const double *u, int q, double p, double *r, int *ok, gd_error *err)
+{
+    const int n = S->n, K = S->nseg, N = S->N;
+    double pp[2] = {u[N], u[N + 1]};
+    pp[q] = p;
+    gd_model m;
+    gd_error e1 = {0};
+    *ok = 0;
+    gd_status st = S->model_at(pp[0], pp[1], &m, S->ctx, &e1);
+    if (st == GD_ERR_INPUT)
+        return GD_OK;
+    if (st != GD_OK)
+        return gd_error_set(err, st, "%s", e1.msg);
+    gd_model keep = S->m;
+    S->m = m;
+    const double phi = S->kind == GD_CURVE_GRAZING ? u[N + 2] : 0.0;
+    int same = 1;
+    for (int k = 0; k < K && same && st == GD_OK; k++) {
+        gd_map_probe pr;
+        st = seg_run(S, &m, k, u + k * n, phi, 0, NULL, &pr, NULL, err);
+        if (st != GD_OK)
+            break;
+        same = pr.seq == S->sus_seq[k];
+        for (int i = 0; i < n; i++)
+            r[k * n + i] = pr.y1[i] - u[((k + 1) % K) * n + i];
+    }
+    S->m = keep;
+    *ok = st == GD_OK && same;
+    return st;
+}
+
+static double diff_norm(int N, const double *a, const double *b)
+{
+    double d = 0;
+    for (int i = 0; i < N; i++)
+        d = fmax(d, fabs(a[i] - b[i]));
+    return d;
+}
+
+gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err)
+{
+    *found = 0;
+    if (S->sus_q < 0)
+        return GD_OK;
+    const int N = S->N, qq = S->sus_q;
+    double u[CMAX];
+    memcpy(u, S->sus_u, sizeof u);
+    const double p0 = u[N + qq], w_end = S->dp_rel * (1.0 + fabs(p0)) / 4096.0;
+    double lo = p0 - S->sus_dp, hi = p0 + S->sus_dp, rlo[CMAX], rhi[CMAX], rmid[CMAX];
+    int ok_lo, ok_hi, ok_mid;
+    gd_status st = residual_at(S, u, qq, lo, rlo, &ok_lo, err);
+    if (st == GD_OK)
+        st = residual_at(S, u, qq, hi, rhi, &ok_hi, err);
+    if (st != GD_OK || !ok_lo || !ok_hi)
+        return st;
+    double ymax = 0;
+    for (int i = 0; i < N; i++)
+        ymax = fmax(ymax, fabs(u[i]));
+    const double noise = 100.0 * (S->o.rtol * (1.0 + ymax) + S->o.atol);
+    const double d0 = diff_norm(N, rlo, rhi);
+    while (hi - lo > w_end) {
+        const double mid = 0.5 * (lo + hi);
+        st = residual_at(S, u, qq, mid, rmid, &ok_mid, err);
+        if (st != GD_OK || !ok_mid)
+            return st;
+        if (diff_norm(N, rlo, rmid) >= diff_norm(N, rmid, rhi)) {
+            hi = mid;
+            memcpy(rhi, rmid, sizeof(double) * (size_t)N);
+        } else {
+            lo = mid;
+            memcpy(rlo, rmid, sizeof(double) * (size_t)N);
+        }
+    }
+    /* a jump keeps its size however narrow the bracket; a smooth residual's difference shrinks with it */
+    const double d1 = diff_norm(N, rlo, rhi);
+    if (d1 > 0.25 * d0 && d1 > noise) {
+        *found = 1;
+        *q = qq;
+        *pj = 0.5 * (lo + hi);
+        *width = hi - lo;
+    }
     return GD_OK;
 }
 
