@@ -236,6 +236,7 @@ typedef struct gd_case {
     int cont_curve_max_points; /* points of one curve in one direction at most */
     char cont_curve_start[GD_PATH_MAX]; /* an earlier continuation's bifurcations.csv: one row's curve only ("": all) */
     int cont_curve_start_row; /* its data row, 1 the first */
+    char cont_curve_kinds[128]; /* the kinds of bifurcation continued in parameter2, comma-separated */
     char cont_overlay_map[GD_PATH_MAX]; /* a finished regime map in the two keys, under the curves ("": none) */
     char cont_overlay_curves[GD_PATH_MAX]; /* an earlier continuation's curves in the two keys, beside them ("": none) */
 

@@ -52,6 +52,9 @@ double gd_contin_start_value(const gd_case *c);
  * folds, period doublings, Neimark-Sacker points and grazings of res's branches in (parameter, parameter2) (work: the run's
  * case, left with parameter2 at its value; co: the branches' options; row: only its curve, or NULL) */
 gd_status gd_contin_check_curves(const gd_case *c, gd_error *err);
+/* continuation.curve_kinds as bits 1 << gd_curve_kind; 0 when a word is not a kind's name or names one
+ * twice (that word in bad) or when the list names none (bad "") */
+unsigned gd_contin_curve_kinds(const char *list, char *bad, size_t nbad);
 gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts *o, const gd_cont_opts *co,
                            const gd_contin_curve_row *row, gd_contin_result *res, gd_error *err);
 

@@ -16,9 +16,43 @@
 
 #define WHERE(key) (gd_case_key_where(c, "continuation", key, w, sizeof w), w)
 
+unsigned gd_contin_curve_kinds(const char *list, char *bad, size_t nbad)
+{
+    unsigned mask = 0;
+    const char *s = list;
+    bad[0] = 0;
+    while (*s) {
+        while (*s == ' ' || *s == ',')
+            s++;
+        if (!*s)
+            break;
+        size_t n = strcspn(s, ",");
+        while (n > 0 && s[n - 1] == ' ')
+            n--;
+        int k = -1;
+        for (int i = 0; i <= GD_CURVE_GRAZING && k < 0; i++)
+            if (strlen(gd_curve_kind_name(i)) == n && strncmp(s, gd_curve_kind_name(i), n) == 0)
+                k = i;
+        if (k < 0 || (mask & (1u << k))) {
+            snprintf(bad, nbad, "%.*s", (int)n, s);
+            return 0;
+        }
+        mask |= 1u << k;
+        s += n;
+        while (*s == ' ')
+            s++;
+    }
+    return mask;
+}
+
 gd_status gd_contin_check_curves(const gd_case *c, gd_error *err)
 {
-    char w[GD_PATH_MAX + 32], range[160];
+    char w[GD_PATH_MAX + 32], range[160], bad[128];
+    if (!gd_contin_curve_kinds(c->cont_curve_kinds, bad, sizeof bad))
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_kinds: '%s' %s (valid: a comma-separated list "
+                            "of fold, period-doubling, neimark-sacker, grazing, each once)", WHERE("curve_kinds"),
+                            bad[0] ? bad : c->cont_curve_kinds,
+                            bad[0] ? "is not a kind of curve, or is named twice" : "names no kind");
     static const char *bk[2] = {"parameter2_from", "parameter2_to"};
     const char *name = c->cont_parameter2;
     if (gd_case_key_given(c, "continuation", "curve_start_row") && !c->cont_curve_start[0])
@@ -29,6 +63,10 @@ gd_status gd_contin_check_curves(const gd_case *c, gd_error *err)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start: given without continuation.parameter2 "
                             "(valid: set parameter2, the curve's second key, or leave curve_start out)",
                             WHERE("curve_start"));
+    if (!name[0] && gd_case_key_given(c, "continuation", "curve_kinds"))
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_kinds: given without continuation.parameter2 "
+                            "(valid: set parameter2, the curves' second key, or leave curve_kinds out)",
+                            WHERE("curve_kinds"));
     if (!name[0]) {
         for (int i = 0; i < 2; i++)
             if (gd_case_key_given(c, "continuation", bk[i]))
@@ -94,6 +132,37 @@ static int continued_before(const gd_contin_result *res, int ib, int i, double t
                 fabs(o->p - bf->p) <= tol)
                 return 1;
         }
+    return 0;
+}
+
+/* Whether an earlier curve of bifurcation bf's kind, period and clearance crossed the branches' line
+ * p2 = v2 within tol of bf (a Neimark-Sacker curve with the pair at bf's angle, to 0.05 in cos theta):
+ * then bf lies on that curve, followed both ways from its own start. The crossing's p1 by linear
+ * interpolation. Asked for Neimark-Sacker points (two of a branch on one closed curve, the curve between
+ * them followed once instead of twice); two folds of a branch on one fold curve through a cusp are each
+ * followed, the cusp located from both. */
+static int on_earlier_curve(const gd_contin_result *res, const gd_bifurcation *bf, int kind, int nper, double v2,
+                            double tol, int *which)
+{
+    const double kappa = kind == GD_CURVE_NEIMARK_SACKER ? bf->mu_re / hypot(bf->mu_re, bf->mu_im) : NAN;
+    for (int j = 0; j < res->ncurves; j++) {
+        const gd_curve *cv = &res->curve[j].cv;
+        if (cv->kind != kind || cv->nper != nper || (kind == GD_CURVE_GRAZING && cv->clearance != bf->clearance))
+            continue;
+        for (int i = 1; i + 1 < cv->npoints; i++) {
+            const gd_curve_point *a = &cv->pt[i], *b = &cv->pt[i + 1];
+            const double fa = a->p2 - v2, fb = b->p2 - v2;
+            if (fa * fb > 0 || fa == fb)
+                continue;
+            const double t = fa / (fa - fb), p1 = a->orbit.p + t * (b->orbit.p - a->orbit.p);
+            if (fabs(p1 - bf->p) > tol)
+                continue;
+            if (kind == GD_CURVE_NEIMARK_SACKER && !(fabs(a->kappa + t * (b->kappa - a->kappa) - kappa) < 0.05))
+                continue;
+            *which = j;
+            return 1;
+        }
+    }
     return 0;
 }
 
@@ -182,6 +251,8 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
     cvo.words.bound_key[1][0] = "continuation.parameter2_from";
     cvo.words.bound_key[1][1] = "continuation.parameter2_to";
     const double tol = 1e-6 * (co->p_max - co->p_min);
+    char bad[128];
+    const unsigned kinds = gd_contin_curve_kinds(c->cont_curve_kinds, bad, sizeof bad);
     if (row) { /* only the curve of an earlier run's row */
         gd_curve_start s;
         memset(&s, 0, sizeof s);
@@ -203,8 +274,19 @@ gd_status gd_contin_curves(const gd_case *c, gd_case *work, const gd_solver_opts
                 curve_note(res, "branch %d: the %s at %.10g is not continued in %s: its location ended %s", ib,
                            gd_bif_kind_name(bf->kind), gd_contin_value(res, bf->p), res->parameter2,
                            gd_bif_location_name(bf->location));
-            if (kind < 0 || continued_before(res, ib, i, tol))
+            if (kind < 0 || !(kinds & (1u << kind)) || continued_before(res, ib, i, tol))
                 continue;
+            int on = -1;
+            if (kind == GD_CURVE_NEIMARK_SACKER &&
+                on_earlier_curve(res, bf, kind, res->branch[ib].nper, v2 / res->scale2,
+                                 5e-3 * (co->p_max - co->p_min), &on)) {
+                curve_note(res, "branch %d: the %s at %.10g lies on curve %d (%s from the %s of branch %d at %.10g), "
+                           "followed both ways from there: not followed again", ib, gd_bif_kind_name(bf->kind),
+                           gd_contin_value(res, bf->p), on, res->curve[on].direction > 0 ? "up" : "down",
+                           gd_bif_kind_name(res->branch[res->curve[on].branch].br.bif[res->curve[on].bif].kind),
+                           res->curve[on].branch, gd_contin_value(res, res->curve[on].cv.pt[0].orbit.p));
+                continue;
+            }
             gd_curve_start s;
             memset(&s, 0, sizeof s);
             s.kind = kind;

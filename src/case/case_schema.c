@@ -349,6 +349,10 @@ static const gd_keyspec schema[] = {
       "curve of its row curve_start_row is followed, both ways (\"\": every bifurcation of the branches)"),
     I("continuation", "curve_start_row", cont_curve_start_row, 1, 1000000, 1,
       "the row of curve_start whose bifurcation's curve is followed: 1 the first row after the header"),
+    S("continuation", "curve_kinds", cont_curve_kinds, "fold, period-doubling, neimark-sacker, grazing",
+      "the kinds of bifurcation of the branches continued in parameter2, comma-separated, each once (fold, "
+      "period-doubling, neimark-sacker, grazing: a grazing is a contact change of the branches); a Neimark-Sacker "
+      "curve's points cost about twice a fold's"),
     S("continuation", "overlay_map", cont_overlay_map, "",
       "a finished regime map (a sweep with parameter2) in parameter and parameter2 of this case's model, its "
       "directory (relative to the working directory): its cells coloured by motion under the curves, its regions named"),

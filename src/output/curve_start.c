@@ -91,6 +91,12 @@ static gd_status parse_row(const gd_case *c, const gd_model *mp, char names[][16
                             "curve (valid: a row of kind fold, period-doubling, neimark-sacker, or contact-change of a clearance)",
                             WHERE(rowkey), c->cont_curve_start_row, path, kind,
                             strcmp(kind, "contact-change") == 0 ? " of no clearance" : "");
+    char bad[128];
+    if (!(gd_contin_curve_kinds(c->cont_curve_kinds, bad, sizeof bad) & (1u << row->kind)))
+        return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_kinds: '%s' leaves out the %s of row %d of %s "
+                            "(valid: a list that names %s, or leave curve_kinds out)", WHERE("curve_kinds"),
+                            c->cont_curve_kinds, gd_curve_kind_name(row->kind), c->cont_curve_start_row, path,
+                            gd_curve_kind_name(row->kind));
     if (strcmp(f[cl], "located") != 0)
         return gd_error_set(err, GD_ERR_INPUT, "%s: continuation.curve_start_row: row %d of %s: its %s was not located "
                             "(location %s) (valid: a located bifurcation)", WHERE("curve_start"),

@@ -324,6 +324,29 @@ mkdir -p "$work/ns" && cp "$out/summary.json" "$work/ns/" && sed '2s/,contact-ch
 refuse continuation.curve_start="$work/ns/bifurcations.csv" "continuation.curve_start_row: row 1 of .*is a branch-point, which has no curve"
 refuse continuation.curve_start="$work/no-such/bifurcations.csv" "continuation.curve_start: .*no-such/bifurcations.csv: No such file"
 refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_start: given without continuation.parameter2" continuation.parameter2=
+# continuation.curve_kinds: the kinds named are followed, the others not; the curves followed are the
+# same curves as in the run of every kind (first and last points to 1e-12)
+"$G" run "$KS" --out "$work/kinds" --quiet --set output.plots=off --set "continuation.curve_kinds=grazing, fold" \
+    > "$work/kinds.txt" 2>&1
+ok $? "curve_kinds = grazing, fold runs ($(head -c 300 "$work/kinds.txt"))"
+python3 - "$out" "$work/kinds" > "$work/kinds-checks.txt" <<'PY'
+import json, sys
+full, part = (json.load(open(d + "/summary.json"))["results"]["curves"] for d in sys.argv[1:3])
+print(("PASS " if sorted(c["kind"] for c in part) == ["fold"] * 4 + ["grazing"] * 2 else "FAIL ")
+      + "curve_kinds = grazing, fold: the four fold and two grazing curves only (%s)" % [c["kind"] for c in part])
+same = [c for c in full if c["kind"] in ("fold", "grazing")]
+d = max(abs(a[k][i] - b[k][i]) / max(1.0, abs(a[k][i])) for a, b in zip(same, part) for k in ("first", "last")
+        for i in (0, 1)) if len(same) == len(part) else float("inf")
+print(("PASS " if d < 1e-12 else "FAIL ") + "and they are the run's own curves: first and last points to %.2g" % d)
+PY
+while read -r verdict msg; do
+    [ "$verdict" = PASS ]; ok $? "$msg"
+done < "$work/kinds-checks.txt"
+refuse continuation.curve_kinds=cusp "continuation.curve_kinds: 'cusp' is not a kind of curve, or is named twice \(valid: a comma-separated list of fold, period-doubling, neimark-sacker, grazing, each once\)"
+refuse "continuation.curve_kinds=fold, fold" "continuation.curve_kinds: 'fold' is not a kind of curve, or is named twice"
+refuse "continuation.curve_kinds=," "continuation.curve_kinds: ',' names no kind"
+refuse continuation.curve_kinds=fold "continuation.curve_kinds: given without continuation.parameter2" continuation.parameter2=
+refuse continuation.curve_start="$out/bifurcations.csv" "continuation.curve_kinds: 'fold' leaves out the grazing of row 1 of .*bifurcations.csv" continuation.curve_kinds=fold
 
 # the picture's overlays: a regime map of the same plane (a sweep with parameter2, 4 x 3 points both
 # ways) under the curves, and an earlier run's curves in the same keys beside them (the cusp case's:
