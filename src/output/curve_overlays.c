@@ -41,6 +41,23 @@ static gd_status load_summary(const gd_case *c, const char *key, const char *dir
     return GD_OK;
 }
 
+/* A table being read: the file at its next row, its header split into h (nh fields, held in head) and
+ * a line's buffer; both buffers of 65536 bytes. */
+typedef struct table {
+    FILE *fp;
+    char *head, *line, *h[NF_MAX];
+    int nh;
+} table;
+
+static void close_table(table *t)
+{
+    if (t->fp)
+        fclose(t->fp);
+    free(t->head);
+    free(t->line);
+    memset(t, 0, sizeof *t);
+}
+
 /* The header of DIR/FILE split into h (nh fields; the line in head, of 65536 bytes); the file open
  * at its first row in *fp. */
 static gd_status open_table(const gd_case *c, const char *key, const char *dir, const char *file, FILE **fp,
@@ -60,6 +77,20 @@ static gd_status open_table(const gd_case *c, const char *key, const char *dir, 
     }
     *nh = gd_csv_split(head, h, NF_MAX);
     return GD_OK;
+}
+
+/* open_table with t's buffers (closed and freed again on failure) */
+static gd_status table_open(const gd_case *c, const char *key, const char *dir, const char *file, table *t,
+                            gd_error *err)
+{
+    memset(t, 0, sizeof *t);
+    t->head = malloc(65536);
+    t->line = malloc(65536);
+    gd_status st = t->head && t->line ? open_table(c, key, dir, file, &t->fp, t->head, t->h, &t->nh, err)
+                                      : gd_error_set(err, GD_ERR_NOMEM, "out of memory reading %s/%s", dir, file);
+    if (st != GD_OK)
+        close_table(t);
+    return st;
 }
 
 static gd_status check_map(const gd_case *c, gd_overlay_map *m, gd_error *err)
@@ -85,18 +116,14 @@ static gd_status check_map(const gd_case *c, gd_overlay_map *m, gd_error *err)
     json_decref(root);
     if (st != GD_OK)
         return st;
-    FILE *fp;
-    char *head = malloc(65536), *line = malloc(65536), *h[NF_MAX], *f[NF_MAX];
-    int nh = 0;
-    if (!head || !line)
-        st = gd_error_set(err, GD_ERR_NOMEM, "out of memory reading %s/sweep.csv", dir);
-    if (st == GD_OK)
-        st = open_table(c, "overlay_map", dir, "sweep.csv", &fp, head, h, &nh, err);
-    if (st != GD_OK) {
-        free(head);
-        free(line);
+    table t;
+    char *f[NF_MAX];
+    st = table_open(c, "overlay_map", dir, "sweep.csv", &t, err);
+    if (st != GD_OK)
         return st;
-    }
+    FILE *fp = t.fp;
+    char *line = t.line, **h = t.h;
+    const int nh = t.nh;
     static const char *want[] = {"parameter", "parameter2", "direction", "motion", "impact_regime", "period_n",
                                  "status"};
     int col[7];
@@ -142,9 +169,7 @@ static gd_status check_map(const gd_case *c, gd_overlay_map *m, gd_error *err)
         snprintf(p->motion, sizeof p->motion, "%s", f[col[3]]);
         p->period = strncmp(p->motion, "period-", 7) == 0 ? atoi(p->motion + 7) : 0;
     }
-    fclose(fp);
-    free(head);
-    free(line);
+    close_table(&t);
     return st;
 }
 
@@ -171,18 +196,14 @@ static gd_status check_curves(const gd_case *c, gd_overlay_curves *o, gd_error *
     json_decref(root);
     if (st != GD_OK)
         return st;
-    FILE *fp;
-    char *head = malloc(65536), *line = malloc(65536), *h[NF_MAX], *f[NF_MAX];
-    int nh = 0;
-    if (!head || !line)
-        st = gd_error_set(err, GD_ERR_NOMEM, "out of memory reading %s/curves.csv", dir);
-    if (st == GD_OK)
-        st = open_table(c, "overlay_curves", dir, "curves.csv", &fp, head, h, &nh, err);
-    if (st != GD_OK) {
-        free(head);
-        free(line);
+    table t;
+    char *f[NF_MAX];
+    st = table_open(c, "overlay_curves", dir, "curves.csv", &t, err);
+    if (st != GD_OK)
         return st;
-    }
+    FILE *fp = t.fp;
+    char *line = t.line, **h = t.h;
+    const int nh = t.nh;
     const char *d1 = strchr(c->cont_parameter, '.'), *d2 = strchr(c->cont_parameter2, '.');
     const char *want[] = {"curve", "kind", d1 ? d1 + 1 : c->cont_parameter, d2 ? d2 + 1 : c->cont_parameter2};
     int col[4];
@@ -236,9 +257,7 @@ static gd_status check_curves(const gd_case *c, gd_overlay_curves *o, gd_error *
         o->curve[o->n] = atoi(f[col[0]]);
         o->kind[o->n++] = kind;
     }
-    fclose(fp);
-    free(head);
-    free(line);
+    close_table(&t);
     return st;
 }
 
