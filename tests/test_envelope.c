@@ -296,10 +296,51 @@ static void admissibility(gd_case *c, const gd_solver_opts *o, double om, const 
  * higher by 0.01), so no point across the step continues the curve: the curve must end at the step with
  * its cause named ("discontinuous", not "no convergence at the smallest step"), its last point within
  * 1e-3 above it, and not crawl towards it at the smallest step. */
-static const double JUMP_AT = 0.08, JUMP_BY = -0.01;
+static const double JUMP_AT = 0.08;
+static double JUMP_BY = -0.01;
 static gd_status jump_at(double p1, double p2, gd_model *m, void *ctx, gd_error *err)
 {
     return gd_model_at_case_keys(p1, p2 < JUMP_AT ? p2 + JUMP_BY : p2, m, ctx, err);
+}
+
+/* check 7b: a small step of the model (F_a - 0.002 below 0.08): the grazing curve's corrector converges
+ * across it in one step, onto the model's other grazing curve (shifted by 0.002 in F_a); a step over the
+ * jump is found (the corrector's differences saw it, the residual bisected) and the curve ends at the jump,
+ * not on the box at F_a 0.05 having changed curves unseen. */
+static void model_small_jump(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bifurcation *graze)
+{
+    gd_error e = {0};
+    gd_curve_opts co;
+    gd_curve_opts_default(&co);
+    co.p_min[0] = 0.5;
+    co.p_max[0] = 1.5;
+    co.p_min[1] = 0.05;
+    co.p_max[1] = 0.2;
+    co.direction = -1;
+    gd_curve_start s;
+    memset(&s, 0, sizeof s);
+    s.kind = GD_CURVE_GRAZING;
+    s.nper = 1;
+    s.clearance = graze->clearance;
+    s.p1 = graze->p;
+    s.p2 = FA0;
+    memcpy(s.y, graze->y, sizeof s.y);
+    JUMP_BY = -0.002;
+    gd_curve cv;
+    if (gd_curve_follow(jump_at, pp, o, &co, &s, &cv, &e) != GD_OK)
+        au_die(&e);
+    JUMP_BY = -0.01;
+    const gd_curve_point *z = &cv.pt[cv.npoints - 1];
+    double below = INFINITY;
+    for (int i = 0; i < cv.npoints; i++)
+        below = fmin(below, cv.pt[i].p2);
+    printf("# grazing curve down to a small step of the model at F_a %.3f: %d points to (%.10f, %.10f), %ld "
+           "corrections: %s: %s\n", JUMP_AT, cv.npoints, z->orbit.p, z->p2, cv.corrections, gd_curve_end_name(cv.end),
+           cv.end_reason);
+    tap_ok(cv.end == GD_CEND_DISCONTINUOUS && below >= JUMP_AT && z->p2 - JUMP_AT < 1e-4, "small model step: no "
+           "point below F_a %.3f (lowest %.10f), the curve ends discontinuous within 1e-4 above it (%s)", JUMP_AT,
+           below, gd_curve_end_name(cv.end));
+    gd_curve_free(&cv);
 }
 
 static void model_jump(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bifurcation *graze)
@@ -368,6 +409,7 @@ int main(void)
         return tap_done();
     admissibility(&c, &o, om, nb.b[GRAZE]);
     model_jump(&pp, &o, nb.b[GRAZE]);
+    model_small_jump(&pp, &o, nb.b[GRAZE]);
 
     /* 1 and 2: every point of every curve, both directions over the whole box */
     for (int k = 0; k < 4; k++)

@@ -1086,26 +1086,49 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         }
         int qf = -1, jump_end = 0;
         double pf = NAN;
-        /* the corrector met a jump of the model within the step: the curve's point just short of it ends the
-         * curve (as on a bound of the box), not the step halved down to ds_min, a failed corrector each */
-        cjump jm = {S->jump_q, S->jump_p, S->jump_dp};
-        if (st != GD_OK && st != GD_ERR_INPUT && jm.q < 0 && S->sus_q >= 0) {
-            /* the corrector's differences saw a jump nearby, perhaps: located by the residual alone */
-            int found = 0;
-            gd_error e2 = {0};
-            gd_status sj = csys_find_jump(S, &jm.q, &jm.p, &jm.dp, &found, &e2);
-            if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
-                st = gd_error_set(err, sj, "%s", e2.msg);
-                goto done;
+        /* a jump of the model within the step: the corrector met it (it failed, or converged too far or
+         * turning, or on the jump's far side: a step over the jump lands on another curve) */
+        int conv_reject = 0;
+        if (st == GD_OK) {
+            int tf = 0;
+            for (int k = 0; k < 2; k++)
+                tf |= fabs(b->u[N + k] - a->u[N + k]) > C->dp_max[k];
+            conv_reject = tf || dot_w(C, a->t, b->t) < 0.5;
+        }
+        const int failed = (st != GD_OK && st != GD_ERR_INPUT) || conv_reject;
+        cjump jm = {st != GD_OK ? S->jump_q : -1, S->jump_p, S->jump_dp};
+        if (jm.q < 0 && S->sus_q >= 0 && (failed || st == GD_OK)) {
+            /* the corrector's differences saw a jump nearby, perhaps: located by the residual alone (for an
+             * accepted step only when that window reaches into the step) */
+            const int sq = S->sus_q;
+            const double w0 = S->sus_u[N + sq] - S->sus_dp, w1 = S->sus_u[N + sq] + S->sus_dp;
+            const double lo = fmin(a->u[N + sq], b->u[N + sq]), hi = fmax(a->u[N + sq], b->u[N + sq]);
+            if (failed || (w1 >= lo && w0 <= hi)) {
+                int found = 0;
+                gd_error e2 = {0};
+                gd_status sj = csys_find_jump(S, &jm.q, &jm.p, &jm.dp, &found, &e2);
+                if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
+                    st = gd_error_set(err, sj, "%s", e2.msg);
+                    goto done;
+                }
+                if (sj != GD_OK || !found)
+                    jm.q = -1;
             }
-            if (sj != GD_OK || !found)
+        }
+        int crossed = 0;
+        if (jm.q >= 0 && !failed) { /* converged: a jump between a and b? */
+            crossed = (jm.p - a->u[N + jm.q]) * (jm.p - b->u[N + jm.q]) < 0;
+            if (!crossed)
                 jm.q = -1;
         }
-        if (st != GD_OK && st != GD_ERR_INPUT && jm.q >= 0) {
+        if (jm.q >= 0) {
             const cjump J = jm;
-            const double pa = a->u[N + J.q], pstep = ds * a->t[N + J.q], sg = J.p > pa ? 1.0 : -1.0;
+            const double pa = a->u[N + J.q], sg = J.p > pa ? 1.0 : -1.0;
+            const double pstep = st == GD_OK ? b->u[N + J.q] - pa : ds * a->t[N + J.q];
+            const double reach = fmax(fabs(ds * a->t[N + J.q]), st == GD_OK ? fabs(b->u[N + J.q] - pa) : 0.0);
             const double margin = JUMP_MARGIN * J.dp, pt = J.p - sg * margin;
-            if (pstep * sg > 0 && fabs(J.p - pa) <= 2.0 * fabs(pstep) + margin) {
+            int ok_end = 0;
+            if (pstep * sg > 0 && fabs(J.p - pa) <= 2.0 * reach + margin) {
                 if ((pt - pa) * sg <= 0) { /* a itself is at the jump */
                     end_jump(C, a, &J);
                     st = GD_OK;
@@ -1119,14 +1142,21 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                     goto done;
                 }
                 const int other = 1 - J.q;
-                if (sj == GD_OK && b->u[N + other] >= co->p_min[other] && b->u[N + other] <= co->p_max[other] &&
-                    dot_w(C, a->t, b->t) >= 0.5) {
-                    st = GD_OK;
-                    qf = J.q;
-                    pf = pt;
-                    jump_end = 1;
-                    jump_at = J;
-                }
+                ok_end = sj == GD_OK && b->u[N + other] >= co->p_min[other] && b->u[N + other] <= co->p_max[other] &&
+                         dot_w(C, a->t, b->t) >= 0.5;
+            }
+            if (ok_end) {
+                st = GD_OK;
+                qf = J.q;
+                pf = pt;
+                jump_end = 1;
+                jump_at = J;
+            } else if (crossed) { /* a step over the jump is not a step of this curve */
+                const char *un = co->words.unit[J.q];
+                st = GD_ERR_SOLVER;
+                snprintf(e1.msg, sizeof e1.msg, "the step crosses a jump of the model in %s at %.10g%s%s",
+                         co->words.key[J.q] ? co->words.key[J.q] : J.q ? "p2" : "p1", p_value(C, J.q, J.p),
+                         un && un[0] ? " " : "", un ? un : "");
             }
         }
         /* the model is not valid at a prediction beyond the box (a bound of the box on the edge of the key's
