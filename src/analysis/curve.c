@@ -1115,6 +1115,19 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                     jm.q = -1;
             }
         }
+        for (int k = 0; k < 2 && jm.q < 0 && conv_reject; k++) {
+            /* converged too far or turning, no jump seen by the corrector (the chord iteration has no
+             * differences): a jump of the model between a and b in either parameter, at a's state? */
+            int found = 0;
+            gd_error e2 = {0};
+            gd_status sj = csys_find_jump_between(S, a->u, k, a->u[N + k], b->u[N + k], &jm.p, &jm.dp, &found, &e2);
+            if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
+                st = gd_error_set(err, sj, "%s", e2.msg);
+                goto done;
+            }
+            if (sj == GD_OK && found)
+                jm.q = k;
+        }
         int crossed = 0;
         if (jm.q >= 0 && !failed) { /* converged: a jump between a and b? */
             crossed = (jm.p - a->u[N + jm.q]) * (jm.p - b->u[N + jm.q]) < 0;

@@ -73,9 +73,14 @@ void csys_free(csys *S);
 gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err);
 /* Whether the model jumps within the last suspicion's window (sus_q, sus_u +- sus_dp): bisection of the
  * orbit's residual at the state of sus_u, down to 8^-4 of the parameter's difference, on the half whose
- * ends differ more; *found when the ends still differ by a quarter of the window's difference and more
- * than the integration's noise (a jump of the model at *pj, to *width); otherwise a smooth residual. */
+ * ends differ more; *found when the ends still differ by a quarter of what they did four halvings
+ * before and more than the integration's noise (a jump of the model at *pj, to *width); otherwise a
+ * smooth residual. */
 gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err);
+/* The same between p0 and p1 of parameter q at the state of u (a point of the curve: its contact
+ * sequence throughout). */
+gd_status csys_find_jump_between(csys *S, const double *u, int q, double p0, double p1, double *pj, double *width,
+                                 int *found, gd_error *err);
 /* The borders from a point's null vectors (fold, period doubling: v, wl; Neimark-Sacker: X, Psi, and
  * its monodromy M for the real basis of the pair's plane). */
 void csys_refresh_borders(csys *S, const double *M, const double *v, const double *wl, const double *X,

@@ -629,8 +629,9 @@ static gd_status jacobian(csys *S, const double *u, gd_error *err)
 }
 
 /* The orbit's residual at the state of u with parameter q at p (the other parameter as in u); 0 when the
- * model is not valid there or the contact sequence differs from the one at sus_u. */
-static gd_status residual_at(csys *S, const double *u, int q, double p, double *r, int *ok, gd_error *err)
+ * model is not valid there or the contact sequence differs from seq. */
+static gd_status residual_at(csys *S, const double *u, const uint64_t *seq, int q, double p, double *r, int *ok,
+                             gd_error *err)
 {
     const int n = S->n, K = S->nseg, N = S->N;
     double pp[2] = {u[N], u[N + 1]};
@@ -652,7 +653,7 @@ static gd_status residual_at(csys *S, const double *u, int q, double p, double *
         st = seg_run(S, &m, k, u + k * n, phi, 0, NULL, &pr, NULL, err);
         if (st != GD_OK)
             break;
-        same = pr.seq == S->sus_seq[k];
+        same = pr.seq == seq[k];
         for (int i = 0; i < n; i++)
             r[k * n + i] = pr.y1[i] - u[((k + 1) % K) * n + i];
     }
@@ -669,30 +670,31 @@ static double diff_norm(int N, const double *a, const double *b)
     return d;
 }
 
-gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err)
+/* Bisection for a jump of the model in parameter q within [lo, hi], the orbit's residual at the state of
+ * u (the contact sequence seq throughout, else no jump is reported), down to w_end: the half whose ends
+ * differ more is kept. A jump keeps its size however narrow the bracket; a smooth residual's difference
+ * halves with it, so the jump is found when the ends still differ, at the end, by a quarter of what they
+ * did four halvings before and by more than the integration's noise. */
+static gd_status bisect_jump(csys *S, const double *u, const uint64_t *seq, int q, double lo, double hi, double w_end,
+                             int *found, double *pj, double *width, gd_error *err)
 {
+    const int N = S->N;
+    double rlo[CMAX], rhi[CMAX], rmid[CMAX], hist[4];
+    int ok_lo, ok_hi, ok_mid, k = 0;
     *found = 0;
-    if (S->sus_q < 0)
-        return GD_OK;
-    const int N = S->N, qq = S->sus_q;
-    double u[CMAX];
-    memcpy(u, S->sus_u, sizeof u);
-    const double p0 = u[N + qq], w_end = S->dp_rel * (1.0 + fabs(p0)) / 4096.0;
-    double lo = p0 - S->sus_dp, hi = p0 + S->sus_dp, rlo[CMAX], rhi[CMAX], rmid[CMAX];
-    int ok_lo, ok_hi, ok_mid;
-    gd_status st = residual_at(S, u, qq, lo, rlo, &ok_lo, err);
+    gd_status st = residual_at(S, u, seq, q, lo, rlo, &ok_lo, err);
     if (st == GD_OK)
-        st = residual_at(S, u, qq, hi, rhi, &ok_hi, err);
+        st = residual_at(S, u, seq, q, hi, rhi, &ok_hi, err);
     if (st != GD_OK || !ok_lo || !ok_hi)
         return st;
     double ymax = 0;
     for (int i = 0; i < N; i++)
         ymax = fmax(ymax, fabs(u[i]));
     const double noise = 100.0 * (S->o.rtol * (1.0 + ymax) + S->o.atol);
-    const double d0 = diff_norm(N, rlo, rhi);
     while (hi - lo > w_end) {
+        hist[k++ % 4] = diff_norm(N, rlo, rhi);
         const double mid = 0.5 * (lo + hi);
-        st = residual_at(S, u, qq, mid, rmid, &ok_mid, err);
+        st = residual_at(S, u, seq, q, mid, rmid, &ok_mid, err);
         if (st != GD_OK || !ok_mid)
             return st;
         if (diff_norm(N, rlo, rmid) >= diff_norm(N, rmid, rhi)) {
@@ -703,15 +705,35 @@ gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found,
             memcpy(rlo, rmid, sizeof(double) * (size_t)N);
         }
     }
-    /* a jump keeps its size however narrow the bracket; a smooth residual's difference shrinks with it */
     const double d1 = diff_norm(N, rlo, rhi);
-    if (d1 > 0.25 * d0 && d1 > noise) {
+    if (k >= 4 && d1 > 0.25 * hist[k % 4] && d1 > noise) {
         *found = 1;
-        *q = qq;
         *pj = 0.5 * (lo + hi);
         *width = hi - lo;
     }
     return GD_OK;
+}
+
+gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err)
+{
+    *found = 0;
+    if (S->sus_q < 0)
+        return GD_OK;
+    const int N = S->N;
+    const double p0 = S->sus_u[N + S->sus_q];
+    *q = S->sus_q;
+    return bisect_jump(S, S->sus_u, S->sus_seq, S->sus_q, p0 - S->sus_dp, p0 + S->sus_dp,
+                       S->dp_rel * (1.0 + fabs(p0)) / 4096.0, found, pj, width, err);
+}
+
+gd_status csys_find_jump_between(csys *S, const double *u, int q, double p0, double p1, double *pj, double *width,
+                                 int *found, gd_error *err)
+{
+    *found = 0;
+    if (!S->seq_set || p0 == p1)
+        return GD_OK;
+    return bisect_jump(S, u, S->seq_ref, q, fmin(p0, p1), fmax(p0, p1), S->dp_rel * (1.0 + fabs(p0)) / 4096.0, found,
+                       pj, width, err);
 }
 
 gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err)
