@@ -303,6 +303,24 @@ static gd_status jump_at(double p1, double p2, gd_model *m, void *ctx, gd_error 
     return gd_model_at_case_keys(p1, p2 < JUMP_AT ? p2 + JUMP_BY : p2, m, ctx, err);
 }
 
+/* The box, direction and start of the grazing curve followed down to the model's step (checks 7, 7b). */
+static void jump_curve(const gd_bifurcation *graze, gd_curve_opts *co, gd_curve_start *s)
+{
+    gd_curve_opts_default(co);
+    co->p_min[0] = 0.5;
+    co->p_max[0] = 1.5;
+    co->p_min[1] = 0.05;
+    co->p_max[1] = 0.2;
+    co->direction = -1;
+    memset(s, 0, sizeof *s);
+    s->kind = GD_CURVE_GRAZING;
+    s->nper = 1;
+    s->clearance = graze->clearance;
+    s->p1 = graze->p;
+    s->p2 = FA0;
+    memcpy(s->y, graze->y, sizeof s->y);
+}
+
 /* check 7b: a small step of the model (F_a - 0.002 below 0.08): the grazing curve's corrector converges
  * across it in one step, onto the model's other grazing curve (shifted by 0.002 in F_a); a step over the
  * jump is found (the corrector's differences saw it, the residual bisected) and the curve ends at the jump,
@@ -311,20 +329,8 @@ static void model_small_jump(gd_case_param2 *pp, const gd_solver_opts *o, const 
 {
     gd_error e = {0};
     gd_curve_opts co;
-    gd_curve_opts_default(&co);
-    co.p_min[0] = 0.5;
-    co.p_max[0] = 1.5;
-    co.p_min[1] = 0.05;
-    co.p_max[1] = 0.2;
-    co.direction = -1;
     gd_curve_start s;
-    memset(&s, 0, sizeof s);
-    s.kind = GD_CURVE_GRAZING;
-    s.nper = 1;
-    s.clearance = graze->clearance;
-    s.p1 = graze->p;
-    s.p2 = FA0;
-    memcpy(s.y, graze->y, sizeof s.y);
+    jump_curve(graze, &co, &s);
     JUMP_BY = -0.002;
     gd_curve cv;
     if (gd_curve_follow(jump_at, pp, o, &co, &s, &cv, &e) != GD_OK)
@@ -347,22 +353,10 @@ static void model_jump(gd_case_param2 *pp, const gd_solver_opts *o, const gd_bif
 {
     gd_error e = {0};
     gd_curve_opts co;
-    gd_curve_opts_default(&co);
-    co.p_min[0] = 0.5;
-    co.p_max[0] = 1.5;
-    co.p_min[1] = 0.05;
-    co.p_max[1] = 0.2;
-    co.direction = -1;
+    gd_curve_start s;
+    jump_curve(graze, &co, &s);
     co.words.key[1] = "excitation.ste_amplitude_um";
     co.words.unit[1] = "um";
-    gd_curve_start s;
-    memset(&s, 0, sizeof s);
-    s.kind = GD_CURVE_GRAZING;
-    s.nper = 1;
-    s.clearance = graze->clearance;
-    s.p1 = graze->p;
-    s.p2 = FA0;
-    memcpy(s.y, graze->y, sizeof s.y);
     gd_curve cv;
     if (gd_curve_follow(jump_at, pp, o, &co, &s, &cv, &e) != GD_OK)
         au_die(&e);
