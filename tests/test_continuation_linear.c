@@ -95,25 +95,12 @@ static gd_status model_at(double p, gd_model *m, void *ctx, gd_error *err)
     return GD_OK;
 }
 
-static void solver(gd_solver_opts *o)
-{
-    memset(o, 0, sizeof *o);
-    o->method = GD_METHOD_ERK;
-    o->order = 5;
-    o->rtol = 1e-11;
-    o->atol = 1e-13;
-    o->max_step_fraction = 1.0;
-    o->max_events_per_period = 10;
-    o->max_separated_periods = 10;
-    o->root_finding = 1;
-}
-
 /* the branch of system `kind` (state size n) from the orbit near 0 at p0, in [lo, hi], steps of dp in p */
 static void branch(lin *L, int n, double p0, double lo, double hi, double dp, gd_branch *br)
 {
     gd_error e = {0};
     gd_solver_opts o;
-    solver(&o);
+    au_smooth_opts(&o);
     gd_model m;
     model_at(p0, &m, L, &e);
     double y[GD_MAX_STATE] = {0};
