@@ -7,4 +7,7 @@ SRC=${GEARDYN_SOURCE:?}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 n=0; bad=0
-ok() { n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $2"; else echo "not ok $n - $2"; bad=$((bad + 1)); fi; }
+ok() { # status message (one TAP line: a message's newlines become " | ")
+    local m=${2//$'\n'/ | }
+    n=$((n + 1)); if [ "$1" = 0 ]; then echo "ok $n - $m"; else echo "not ok $n - $m"; bad=$((bad + 1)); fi
+}

@@ -57,7 +57,7 @@ import csv, sys
 o = list(csv.DictReader(open(sys.argv[1] + "/from-sweep/branch.csv")))[0]
 s = [r for r in csv.DictReader(open(sys.argv[1] + "/sweep/sweep.csv")) if r["parameter"] == "3183.09886184" and r["direction"] == "up"][0]
 a, b = float(o["dynamic_load_factor"]), float(s["dynamic_load_factor"])
-print(a, b)
+print("# dynamic load factor: orbit", a, "sweep", b)
 sys.exit(0 if a > 1 and abs(a - b) < 1e-6 * a else 1)
 PY
 ok $? "the orbit's dynamic load factor is the sweep point's there (same samples of one period)"

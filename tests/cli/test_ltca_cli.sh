@@ -72,7 +72,7 @@ assert abs(r["spur"]["edge_line_load_ratio_max"]["left"] - 1) < 1e-3, r["spur"][
 t = r["spur-tilted"]
 assert t["edge_loading"]["left"] is True and t["edge_positions"]["left"] == 16, t["edge_positions"]
 assert t["edge_line_load_ratio_max"]["left"] > 2 and "pinion_end_hi" in t["edge_kinds"]["left"], t
-print(r["spur"]["edge_line_load_ratio_max"]["left"], r["spur"]["tip_contact_positions"]["left"],
+print("# spur: edge load ratio", r["spur"]["edge_line_load_ratio_max"]["left"], "tip contacts", r["spur"]["tip_contact_positions"]["left"], "tilted: edge load ratio",
       t["edge_line_load_ratio_max"]["left"])
 PY
 ok $? "edge loading: none on the aligned unmodified pairs, at every position of the tilted spur pair"

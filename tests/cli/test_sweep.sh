@@ -111,7 +111,7 @@ for key, col, label in (("rms_accel_mps2", "rms_accel_mps2", "largest RMS mesh a
     assert "(%s branch)" % best["direction"] in line, line
     at_end = float(best["parameter"]) in (values[0], values[-1])
     assert ("an end of the swept range" in line) == at_end, (line, at_end)
-    print(line.strip())
+    print("# " + line.strip())
 for r in rows:  # the Kahraman & Singh oscillator has one mesh: no right mesh's column
     assert "dynamic_load_factor_R" not in r and float(r["dynamic_load_factor"]) == float(r["dynamic_load_factor_L"]) >= 0
 PY
