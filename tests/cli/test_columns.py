@@ -15,18 +15,11 @@ import subprocess
 import sys
 import tempfile
 
+from tap import ok, plan  # tests/cli/tap.py
+
 G = os.environ.get('GEARDYN', 'geardyn')
 SRC = os.environ.get('GEARDYN_SOURCE', '.')
-n_tap = failed = 0
 SHORT = ['run.transient_periods=20', 'run.record_periods=10', 'output.plots=off']
-
-
-def ok(cond, msg):
-    global n_tap, failed
-    n_tap += 1
-    failed += not cond
-    print(('ok' if cond else 'not ok') + ' %d - %s' % (n_tap, msg))
-    sys.stdout.flush()
 
 
 def run(case, out, sets):
@@ -93,8 +86,7 @@ def main():
     one_mesh('continuation of a one-coordinate model', 'cases/continuation/kahraman-singh.ini',
              ['output.plots=off', 'continuation.to=2500', 'continuation.branch_switching=off'])
     two_meshes()
-    print('1..%d' % n_tap)
-    return 1 if failed else 0
+    return plan()
 
 
 if __name__ == '__main__':

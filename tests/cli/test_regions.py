@@ -19,17 +19,10 @@ import subprocess
 import sys
 import tempfile
 
+from tap import ok, plan  # tests/cli/tap.py
+
 G = os.environ.get('GEARDYN', 'geardyn')
 SRC = os.environ.get('GEARDYN_SOURCE', '.')
-n_tap = failed = 0
-
-
-def ok(cond, msg):
-    global n_tap, failed
-    n_tap += 1
-    failed += not cond
-    print(('ok' if cond else 'not ok') + ' %d - %s' % (n_tap, msg))
-    sys.stdout.flush()
 
 
 def run(case, out, sets):
@@ -97,8 +90,7 @@ def main():
             inside = [r for r in rows if unnamed[0] < float(r[c1]) < unnamed[1]]
             ok(not inside, '%s: %s %.6g to %.6g (beyond the period doubling: no branch of the doubled orbit) is '
                'not named (%s)' % (name, c1, unnamed[0], unnamed[1], [r['label'] for r in inside]))
-    print('1..%d' % n_tap)
-    return 1 if failed else 0
+    return plan()
 
 
 if __name__ == '__main__':
