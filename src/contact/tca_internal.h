@@ -66,7 +66,10 @@ struct gd_tca {
     gsl_vector *xv[TCA_MAX_N + 1];
     long iterations;
     gd_tca_line_point *lines;
+    double *lines_pre;       /* per line point: the grid value the prefilter tested (tca_lines.c) */
     int nlines, cap_lines;
+    unsigned char *memo_key; /* the pair's key in the memo of lines (tca_lines_memo.c), NULL: none */
+    size_t memo_len;
 };
 
 /* tca_pair.c: kinematics and the gap function */
@@ -153,6 +156,25 @@ gd_status tca_scan(gd_tca *t, int half, double phi1, int accumulate, gd_tca_cont
 gd_status tca_separation(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);
 /* tca_lines.c: the contact lines of one position within max_gap of its contact (t->lines) */
 gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *err);
+/* Which slice minima are computed (pre: the slice's least grid gap above the contact, m) and which
+ * points are kept (gap: the exact minimum's) within max_gap: one test, so that the lines within a
+ * window are exactly the subset of those within a wider one. */
+static inline int tca_lines_prefilter(double pre, double max_gap) { return !(pre > max_gap + 50e-6); }
+static inline int tca_lines_keep(double pre, double gap, double max_gap)
+{
+    return tca_lines_prefilter(pre, max_gap) && !(gap > max_gap);
+}
+
+/* tca_lines_memo.c: the process-wide memo of lines. get: 1 when it held (t's pair, half, phi1) within
+ * max_gap or wider (t->lines set), 0 when not, -1 out of memory (err set); put: keep lines computed
+ * within window (best effort); active: whether t's lines are memoised. */
+int tca_memo_get(gd_tca *t, int half, double phi1, double max_gap, gd_error *err);
+void tca_memo_put(const gd_tca *t, int half, double phi1, double window, const gd_tca_line_point *pts,
+                  const double *pre, int n);
+int tca_memo_active(const gd_tca *t);
+/* For the tests: switch the memo on or off (either way it is emptied), and the hits since. */
+__attribute__((visibility("hidden"))) void gd_tca_memo_enable(int on);
+__attribute__((visibility("hidden"))) long gd_tca_memo_hits(void);
 
 /* tca_tangency.c: formulation (a) */
 gd_status tca_tangency(gd_tca *t, int half, double phi1, gd_tca_contact *out, gd_error *err);

@@ -7,8 +7,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Contact lines: per pair and slice, the exact slice minimum. */
-gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *err)
+/* Contact lines: per pair and slice within max_gap, the exact slice minimum (t->lines), with the grid
+ * value each point's prefilter tested (t->lines_pre). */
+static gd_status lines_within(gd_tca *t, int half, double phi1, double max_gap, gd_error *err)
 {
     double gstar;
     gd_status st = tca_scan(t, half, phi1, 0, NULL, &gstar, err);
@@ -38,22 +39,27 @@ gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *
                     ib = i;
             if (ib < 0)
                 continue;
-            if ((gv[(size_t)j * np + ib] - gstar) * s > max_gap + 50e-6)
+            const double pre = (gv[(size_t)j * np + ib] - gstar) * s;
+            if (!tca_lines_prefilter(pre, max_gap))
                 continue;
             tca_cand c;
             st = tca_slice_min(t, half, &P, j, ib, gv, fv, &c, &iters, err);
             if (st != GD_OK)
                 return st;
-            if (!c.ok || (c.g - gstar) * s > max_gap)
+            if (!c.ok || !tca_lines_keep(pre, (c.g - gstar) * s, max_gap))
                 continue;
             if (t->nlines == t->cap_lines) {
                 int cap = t->cap_lines ? 2 * t->cap_lines : 256;
                 gd_tca_line_point *nl = realloc(t->lines, (size_t)cap * sizeof *nl);
-                if (!nl)
+                double *np2 = nl ? realloc(t->lines_pre, (size_t)cap * sizeof *np2) : NULL;
+                if (nl)
+                    t->lines = nl;
+                if (!np2)
                     return gd_error_set(err, GD_ERR_NOMEM, "TCA: out of memory for the contact lines");
-                t->lines = nl;
+                t->lines_pre = np2;
                 t->cap_lines = cap;
             }
+            t->lines_pre[t->nlines] = pre;
             gd_tca_line_point *lp = &t->lines[t->nlines++];
             memset(lp, 0, sizeof *lp);
             lp->pair = m;
@@ -88,5 +94,27 @@ gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *
             }
         }
     }
+    return GD_OK;
+}
+
+/* The lines within max_gap: from the memo (tca_lines_memo.c) when it holds them within a wider
+ * window; else computed within twice max_gap (the prefilter's margin of 50 um, far wider than a gap
+ * window of a few micrometres, makes the extra slice minima few), kept in the memo, and the subset
+ * within max_gap taken: the points, values and order the computation within max_gap gives. */
+gd_status tca_lines(gd_tca *t, int half, double phi1, double max_gap, gd_error *err)
+{
+    int got = tca_memo_get(t, half, phi1, max_gap, err);
+    if (got)
+        return got > 0 ? GD_OK : GD_ERR_NOMEM;
+    const int memo = tca_memo_active(t) && isfinite(max_gap) && max_gap > 0;
+    gd_status st = lines_within(t, half, phi1, memo ? 2.0 * max_gap : max_gap, err);
+    if (st != GD_OK || !memo)
+        return st;
+    tca_memo_put(t, half, phi1, 2.0 * max_gap, t->lines, t->lines_pre, t->nlines);
+    int k = 0;
+    for (int i = 0; i < t->nlines; i++)
+        if (tca_lines_keep(t->lines_pre[i], t->lines[i].gap, max_gap))
+            t->lines[k++] = t->lines[i];
+    t->nlines = k;
     return GD_OK;
 }

@@ -5,6 +5,7 @@
 #include "../core/gsl_quiet.h"
 #include "geardyn/gd_case.h" /* the enums of arrangement and formulation */
 #include "geardyn/gd_geometry.h"
+#include "geardyn/gd_ltca.h" /* the key of the memo of lines */
 #include "../core/clock.h"
 
 #include <gsl/gsl_errno.h>
@@ -44,6 +45,8 @@ GD_API void gd_tca_free(gd_tca *t)
     free(t->sg);
     free(t->sf);
     free(t->lines);
+    free(t->lines_pre);
+    free(t->memo_key);
     free(t);
 }
 
@@ -181,6 +184,17 @@ GD_API gd_status gd_tca_create(const gd_pair *pair, const gd_tca_settings *set, 
         gd_tca_free(t);
         return st;
     }
+    /* the pair's key in the memo of lines (tca_lines_memo.c): every value TCA reads is among those the
+     * LTCA's key holds (gd_ltca_cache_key_bytes), its load left at 0; out of memory, no memo */
+    gd_ltca_settings ks;
+    memset(&ks, 0, sizeof ks);
+    ks.face_slices = set->face_points;
+    ks.profile_points = set->profile_points;
+    ks.refine = set->refine;
+    const size_t len = gd_ltca_cache_key_bytes(pair, &ks, 1, NULL, 0);
+    t->memo_key = malloc(len);
+    if (t->memo_key)
+        t->memo_len = gd_ltca_cache_key_bytes(pair, &ks, 1, t->memo_key, len);
     *out = t;
     return GD_OK;
 }
