@@ -12,7 +12,7 @@ neighbouring speeds of one chain, up or down, at one torque, in different motion
 quasi-periodic, chaotic, not-periodic) is checked to lie on a curve to within the map's grid spacing, i.e.
 some curve passes through the rectangle of the two points widened by one grid spacing in speed and in
 torque. The jumps not on a curve are listed with their classes (the test of this on the (speed, backlash)
-plane: tests/cli/test_envelope_map.sh).
+plane: tests/cli/test_envelope_bta.sh).
 
   bench_envelope_bta.py GEARDYN SOURCE [N1 N2] [modified|unmodified] [-- section.key=value ...]
   bench_envelope_bta.py --check CURVES.csv SWEEP.csv     (the comparison only, on finished runs)
@@ -28,7 +28,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'tests', 'cli'))
-import envelope_jumps  # noqa: E402  (the curves against the map's jumps, shared with tests/cli/test_envelope_map.sh)
+import envelope_jumps  # noqa: E402  (the curves against the map's jumps, shared with tests/cli/test_envelope_bta.sh)
 
 S1, S2, T1, T2 = 3000.0, 5500.0, 25.0, 4800.0  # the plane: rpm, N m
 

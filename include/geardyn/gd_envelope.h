@@ -153,8 +153,8 @@ typedef enum gd_curve_end {
                               * hundredth of the box in both parameters */
 } gd_curve_end;
 /* consecutive points at the smallest step (below twice ds_min) that end a curve as GD_CEND_STALL */
-#define GD_CURVE_STALL_POINTS 20
-#define GD_CURVE_CRAWL_POINTS 50
+#define GD_CURVE_STALL_POINTS 8
+#define GD_CURVE_CRAWL_POINTS 20
 GD_API const char *gd_curve_end_name(int end);
 
 typedef struct gd_curve {

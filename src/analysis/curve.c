@@ -1065,7 +1065,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
     memcpy(first_u, a->u, sizeof first_u);
     memcpy(first_t, a->t, sizeof first_t);
     int left_first = 0, stalled = 0, crawled = 0;
-    cjump jump_at = {-1, NAN, NAN};
+    cjump jump_at = {-1, NAN, NAN}, near = {-1, NAN, NAN}; /* near: a jump a failed step from a met */
     double ds = co->ds;
     while (C->cv->npoints < co->max_points) {
         if (gd_stop_asked(&co->stop)) {
@@ -1138,9 +1138,12 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             const cjump J = jm;
             const double pa = a->u[N + J.q], sg = J.p > pa ? 1.0 : -1.0;
             const double pstep = st == GD_OK ? b->u[N + J.q] - pa : ds * a->t[N + J.q];
-            const double reach = fmax(fabs(ds * a->t[N + J.q]), st == GD_OK ? fabs(b->u[N + J.q] - pa) : 0.0);
+            /* (a step converged too far or turning reaches no farther than its prediction) */
+            const double reach = fmax(fabs(ds * a->t[N + J.q]), st == GD_OK && !conv_reject ? fabs(b->u[N + J.q] - pa) : 0.0);
             const double margin = JUMP_MARGIN * J.dp, pt = J.p - sg * margin;
             int ok_end = 0;
+            /* the point on the near side of the jump must be a step of this curve away: within twice the
+             * step's reach (a jump a wandering iterate met farther along is approached by smaller steps) */
             if (pstep * sg > 0 && fabs(J.p - pa) <= 2.0 * reach + margin) {
                 if ((pt - pa) * sg <= 0) { /* a itself is at the jump */
                     end_jump(C, a, &J);
@@ -1158,6 +1161,8 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                 ok_end = sj == GD_OK && b->u[N + other] >= co->p_min[other] && b->u[N + other] <= co->p_max[other] &&
                          dot_w(C, a->t, b->t) >= 0.5;
             }
+            if (!ok_end)
+                near = J; /* for the smallest step (below) */
             if (ok_end) {
                 st = GD_OK;
                 qf = J.q;
@@ -1228,12 +1233,38 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
                 goto done;
             }
             if (ds <= co->ds_min) {
+                /* a jump of the model within two of the parameter differences' steps of a ends the curve at a:
+                 * one the corrector met at this step or a longer one from a (the differences at a reach across
+                 * it, whichever way the curve turns there), else one sought ahead of a */
+                if (near.q >= 0 &&
+                    fabs(near.p - a->u[N + near.q]) <= 2.0 * S->dp_rel * (1.0 + fabs(a->u[N + near.q]))) {
+                    end_jump(C, a, &near);
+                    st = GD_OK;
+                    goto done;
+                }
+                for (int k = 0; k < 2; k++) {
+                    const double pk = a->u[N + k], w = 2.0 * S->dp_rel * (1.0 + fabs(pk));
+                    cjump J = {k, NAN, NAN};
+                    int found = 0;
+                    gd_error e2 = {0};
+                    gd_status sj = csys_find_jump_between(S, a->u, k, pk, pk + (a->t[N + k] < 0 ? -w : w), &J.p,
+                                                          &J.dp, &found, &e2);
+                    if (sj == GD_ERR_NOMEM || sj == GD_ERR_INTERRUPTED) {
+                        st = gd_error_set(err, sj, "%s", e2.msg);
+                        goto done;
+                    }
+                    if (sj == GD_OK && found) {
+                        end_jump(C, a, &J);
+                        st = GD_OK;
+                        goto done;
+                    }
+                }
                 end_with(C->cv, GD_CEND_STEP, "no convergence at the smallest step %.3g from %s: %s",
                          ds, PP(a->u), why);
                 st = GD_OK;
                 goto done;
             }
-            ds = fmax(st == GD_OK && turn >= 0.5 ? 0.5 * ds : 0.5 * ds, co->ds_min);
+            ds = fmax(0.5 * ds, co->ds_min);
             continue;
         }
         double pbnd = pf;
@@ -1380,6 +1411,7 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
         cpt *t = a;
         a = b;
         b = t;
+        near.q = -1;
         ds = iters <= 3 ? fmin(1.5 * ds, co->ds_max) : iters >= 6 ? fmax(0.5 * ds, co->ds_min) : ds;
     }
     end_with(C->cv, GD_CEND_BUDGET, "%d points reached at %s", co->max_points, PP(a->u));

@@ -61,7 +61,6 @@ typedef struct csys {
     int sus_q;               /* since it was last set to -1: a difference in parameter sus_q whose one-sided
                               * halves disagreed at sus_u, within sus_dp (a jump of the model there, perhaps) */
     double sus_dp, sus_u[CMAX];
-    uint64_t sus_seq[GD_PO_MAX_PERIODS];
     double rtol_g;           /* the defining equations' tolerance */
 } csys;
 
@@ -77,8 +76,8 @@ gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err);
  * before and more than the integration's noise (a jump of the model at *pj, to *width); otherwise a
  * smooth residual. */
 gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found, gd_error *err);
-/* The same between p0 and p1 of parameter q at the state of u (a point of the curve: its contact
- * sequence throughout). */
+/* The same between p0 and p1 of parameter q at the state of u (a point of the curve), the jump nearest
+ * p0 when there are several. */
 gd_status csys_find_jump_between(csys *S, const double *u, int q, double p0, double p1, double *pj, double *width,
                                  int *found, gd_error *err);
 /* The borders from a point's null vectors (fold, period doubling: v, wl; Neimark-Sacker: X, Psi, and

@@ -482,7 +482,6 @@ static gd_status par_runs(csys *S, const double *u, jacx *x, gd_error *err)
                 S->sus_q = q;
                 S->sus_dp = dp;
                 memcpy(S->sus_u, u, sizeof(double) * (size_t)S->D);
-                memcpy(S->sus_seq, S->seq, sizeof S->sus_seq);
             }
             if ((ok[0] || ok[1]) && !jump)
                 break;
@@ -628,10 +627,11 @@ static gd_status jacobian(csys *S, const double *u, gd_error *err)
     return GD_OK;
 }
 
-/* The orbit's residual at the state of u with parameter q at p (the other parameter as in u); 0 when the
- * model is not valid there or the contact sequence differs from seq. */
-static gd_status residual_at(csys *S, const double *u, const uint64_t *seq, int q, double p, double *r, int *ok,
-                             gd_error *err)
+/* The orbit's residual at the state of u with parameter q at p (the other parameter as in u); ok 0 when the
+ * model is not valid there. The contact sequence may differ from the curve's: the contact forces are
+ * continuous in the state, so a sequence that changes with p bends the residual (a kink) but does not
+ * make it jump, and on the far side of a jump of the model the sequence at u's state usually differs. */
+static gd_status residual_at(csys *S, const double *u, int q, double p, double *r, int *ok, gd_error *err)
 {
     const int n = S->n, K = S->nseg, N = S->N;
     double pp[2] = {u[N], u[N + 1]};
@@ -647,18 +647,16 @@ static gd_status residual_at(csys *S, const double *u, const uint64_t *seq, int 
     gd_model keep = S->m;
     S->m = m;
     const double phi = S->kind == GD_CURVE_GRAZING ? u[N + 2] : 0.0;
-    int same = 1;
-    for (int k = 0; k < K && same && st == GD_OK; k++) {
+    for (int k = 0; k < K && st == GD_OK; k++) {
         gd_map_probe pr;
         st = seg_run(S, &m, k, u + k * n, phi, 0, NULL, &pr, NULL, err);
         if (st != GD_OK)
             break;
-        same = pr.seq == seq[k];
         for (int i = 0; i < n; i++)
             r[k * n + i] = pr.y1[i] - u[((k + 1) % K) * n + i];
     }
     S->m = keep;
-    *ok = st == GD_OK && same;
+    *ok = st == GD_OK;
     return st;
 }
 
@@ -671,20 +669,20 @@ static double diff_norm(int N, const double *a, const double *b)
 }
 
 /* Bisection for a jump of the model in parameter q within [lo, hi], the orbit's residual at the state of
- * u (the contact sequence seq throughout, else no jump is reported), down to w_end: the half whose ends
+ * u, down to w_end: the half whose ends
  * differ more is kept. A jump keeps its size however narrow the bracket; a smooth residual's difference
  * halves with it, so the jump is found when the ends still differ, at the end, by a quarter of what they
  * did four halvings before and by more than the integration's noise. */
-static gd_status bisect_jump(csys *S, const double *u, const uint64_t *seq, int q, double lo, double hi, double w_end,
+static gd_status bisect_jump(csys *S, const double *u, int q, double lo, double hi, double w_end,
                              int *found, double *pj, double *width, gd_error *err)
 {
     const int N = S->N;
     double rlo[CMAX], rhi[CMAX], rmid[CMAX], hist[4];
     int ok_lo, ok_hi, ok_mid, k = 0;
     *found = 0;
-    gd_status st = residual_at(S, u, seq, q, lo, rlo, &ok_lo, err);
+    gd_status st = residual_at(S, u, q, lo, rlo, &ok_lo, err);
     if (st == GD_OK)
-        st = residual_at(S, u, seq, q, hi, rhi, &ok_hi, err);
+        st = residual_at(S, u, q, hi, rhi, &ok_hi, err);
     if (st != GD_OK || !ok_lo || !ok_hi)
         return st;
     double ymax = 0;
@@ -694,7 +692,7 @@ static gd_status bisect_jump(csys *S, const double *u, const uint64_t *seq, int 
     while (hi - lo > w_end) {
         hist[k++ % 4] = diff_norm(N, rlo, rhi);
         const double mid = 0.5 * (lo + hi);
-        st = residual_at(S, u, seq, q, mid, rmid, &ok_mid, err);
+        st = residual_at(S, u, q, mid, rmid, &ok_mid, err);
         if (st != GD_OK || !ok_mid)
             return st;
         if (diff_norm(N, rlo, rmid) >= diff_norm(N, rmid, rhi)) {
@@ -722,7 +720,7 @@ gd_status csys_find_jump(csys *S, int *q, double *pj, double *width, int *found,
     const int N = S->N;
     const double p0 = S->sus_u[N + S->sus_q];
     *q = S->sus_q;
-    return bisect_jump(S, S->sus_u, S->sus_seq, S->sus_q, p0 - S->sus_dp, p0 + S->sus_dp,
+    return bisect_jump(S, S->sus_u, S->sus_q, p0 - S->sus_dp, p0 + S->sus_dp,
                        S->dp_rel * (1.0 + fabs(p0)) / 4096.0, found, pj, width, err);
 }
 
@@ -732,8 +730,23 @@ gd_status csys_find_jump_between(csys *S, const double *u, int q, double p0, dou
     *found = 0;
     if (!S->seq_set || p0 == p1)
         return GD_OK;
-    return bisect_jump(S, u, S->seq_ref, q, fmin(p0, p1), fmax(p0, p1), S->dp_rel * (1.0 + fabs(p0)) / 4096.0, found,
-                       pj, width, err);
+    const double w_end = S->dp_rel * (1.0 + fabs(p0)) / 4096.0;
+    gd_status st = bisect_jump(S, u, q, fmin(p0, p1), fmax(p0, p1), w_end, found, pj, width, err);
+    /* the bisection keeps the half whose ends differ more, so with several jumps between p0 and p1 it finds
+     * one of them: the one nearest p0 is sought between p0 and the last found, until there is none */
+    for (int k = 0; k < 8 && st == GD_OK && *found; k++) {
+        const double end = *pj + (p1 > p0 ? -1.0 : 1.0) * *width;
+        if ((end - p0) * (p1 - p0) <= 0)
+            break;
+        int near = 0;
+        double pn, wn;
+        st = bisect_jump(S, u, q, fmin(p0, end), fmax(p0, end), w_end, &near, &pn, &wn, err);
+        if (st != GD_OK || !near)
+            break;
+        *pj = pn;
+        *width = wn;
+    }
+    return st;
 }
 
 gd_status csys_eval(csys *S, const double *u, int jac, gd_error *err)

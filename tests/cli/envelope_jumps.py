@@ -3,7 +3,7 @@ sweep.csv of a sweep with parameter2 over a regular grid, both directions; docs/
 "Against brute force"). A jump of the map is two neighbouring values of the first parameter along one
 chain (one direction, one value of the second parameter) whose classes differ; it lies on a curve to
 within the map's grid spacing when some curve passes through the rectangle of the two points widened by
-one grid spacing in each parameter. Used by tests/cli/test_envelope_map.sh and
+one grid spacing in each parameter. Used by tests/cli/test_envelope_bta.sh and
 benchmarks/bench_envelope_bta.py."""
 import csv
 

@@ -86,7 +86,7 @@ done < "$work/gpd.txt"
 
 # 3. No curve crawls: the Neimark-Sacker curve from the branch's point at 5356.06 rpm (its orbit near
 #    grazings, the corrector needing four iterations at every step) followed alone, from a row of the
-#    branch's bifurcations.csv over the case's whole speed range; 50 points in a row at steps below
+#    branch's bifurcations.csv over the case's whole speed range; 20 points in a row at steps below
 #    100 ds_min that moved less than a hundredth of the box end it (stall) rather than its budget of
 #    points (without that end it takes 293 points to end at the smallest step).
 grep -v '^parameter2' "$PB" > "$work/branch.ini"
@@ -105,7 +105,7 @@ import csv, json, sys
 bc = sys.argv[1]
 def ok(c, msg):
     print(("PASS " if c else "FAIL ") + msg)
-# no curve crawls: 50 points in a row at steps below 100 ds_min (1e-4) that moved less than a hundredth of
+# no curve crawls: 20 points in a row at steps below 100 ds_min (1e-4) that moved less than a hundredth of
 # the box (2500 rpm by 100 um) in both keys end the curve (stall), rather than use its budget of points
 cv = {}
 for r in csv.DictReader(open(bc + "/curves.csv")):
@@ -116,10 +116,10 @@ for k, P in cv.items():
     run = 0
     for i in range(1, len(P)):
         run = run + 1 if P[i][0] < 1e-4 else 0
-        if run >= 50 and abs(P[i][1] - P[i - 50][1]) < 25 and abs(P[i][2] - P[i - 50][2]) < 1:
+        if run >= 20 and abs(P[i][1] - P[i - 20][1]) < 25 and abs(P[i][2] - P[i - 20][2]) < 1:
             worst = max(worst, len(P) - 1 - i)
     stalls += ends.get(k) == "stall"
-ok(worst == 0 and stalls >= 1 and all(len(P) < 150 for P in cv.values()), "no curve goes on past 50 small steps that moved less than 1 %% of the box (%d points past; %d curves "
+ok(worst == 0 and stalls >= 1 and all(len(P) < 150 for P in cv.values()), "no curve goes on past 20 small steps that moved less than 1 %% of the box (%d points past; %d curves "
    "end stall; points %s)" % (worst, stalls, [len(P) for P in cv.values()]))
 PY
 while read -r verdict msg; do
