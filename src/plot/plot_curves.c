@@ -408,11 +408,60 @@ static void old_words(const gd_overlay_curves *o, const char *dir, char *out, si
 
 /* The picture's size, data ranges and frame: over (a map or an earlier run's curves) the wider
  * layout with the key beside the frame. */
-static void layout(const gd_case *c, const gd_overlay_map *m, const grid *g, int over, frame_px *f, int *W, int *H)
+/* The range of one axis: the box's, padded; but where what is drawn (the curves, their points, the
+ * branches' line, an earlier run's curves: [d0, d1]) covers less than 60 % of the box, the data's, padded
+ * by 6 % and within the padded box, so that the data fill the axes (the paper's pair in torque: curves to
+ * 2667 N m in a box to 4800 N m). */
+static void axis_range(double b0, double b1, double d0, double d1, double pad, double *a0, double *a1)
 {
-    double x0, x1, y0, y1;
-    gd_pad(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), 0.03, 0, &x0, &x1);
-    gd_pad(fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from2, c->cont_to2), 0.04, 0, &y0, &y1);
+    gd_pad(b0, b1, pad, 0, a0, a1);
+    if (!(d1 >= d0) || !(d1 - d0 < 0.6 * (b1 - b0)))
+        return;
+    double e0, e1;
+    gd_pad(d0, d1 > d0 ? d1 : d0 + 0.01 * (b1 - b0), 0.06, 0, &e0, &e1);
+    *a0 = fmax(*a0, e0);
+    *a1 = fmin(*a1, e1);
+}
+
+/* The extent of what the picture draws without a map: every curve's points and codimension-two points,
+ * the branches' line at y2, an earlier run's curves. */
+static void data_extent(const gd_contin_result *res, const gd_overlay_curves *o, double y2, double *x0, double *x1,
+                        double *y0, double *y1)
+{
+    *x0 = *y0 = INFINITY;
+    *x1 = *y1 = -INFINITY;
+#define GD_TAKE(X, Y)                                                                                                 \
+    do {                                                                                                               \
+        const double tx = (X), ty = (Y);                                                                               \
+        if (isfinite(tx) && isfinite(ty)) {                                                                            \
+            *x0 = fmin(*x0, tx), *x1 = fmax(*x1, tx);                                                                  \
+            *y0 = fmin(*y0, ty), *y1 = fmax(*y1, ty);                                                                  \
+        }                                                                                                              \
+    } while (0)
+    for (int i = 0; res && i < res->ncurves; i++) {
+        const gd_curve *cv = &res->curve[i].cv;
+        for (int k = 0; k < cv->npoints; k++)
+            GD_TAKE(gd_contin_value(res, cv->pt[k].orbit.p), cv->pt[k].p2 * res->scale2);
+        for (int k = 0; k < cv->nc2; k++)
+            GD_TAKE(gd_contin_value(res, cv->c2[k].p1), cv->c2[k].p2 * res->scale2);
+    }
+    for (int i = 0; o && i < o->n; i++)
+        GD_TAKE(o->x[i], o->y[i]);
+#undef GD_TAKE
+    if (isfinite(y2)) {
+        *y0 = fmin(*y0, y2);
+        *y1 = fmax(*y1, y2);
+    }
+}
+
+static void layout(const gd_case *c, const gd_overlay_map *m, const grid *g, int over, const gd_contin_result *res,
+                   const gd_overlay_curves *o, double y2, frame_px *f, int *W, int *H)
+{
+    double x0, x1, y0, y1, d[4] = {NAN, NAN, NAN, NAN};
+    if (!(m && m->n > 0)) /* (over a map, the map's cells set the frame) */
+        data_extent(res, o, y2, &d[0], &d[1], &d[2], &d[3]);
+    axis_range(fmin(c->cont_from, c->cont_to), fmax(c->cont_from, c->cont_to), d[0], d[1], 0.03, &x0, &x1);
+    axis_range(fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from2, c->cont_to2), d[2], d[3], 0.04, &y0, &y1);
     if (m && m->n > 0) { /* the map's cells fill the frame where they reach */
         x0 = fmin(x0, fmax(g->xv[0], x0 - 0.5 * (x1 - x0)));
         x1 = fmax(x1, fmin(g->xv[g->nx - 1], x1 + 0.5 * (x1 - x0)));
@@ -602,7 +651,7 @@ static void regions_of(const gd_case *c, const gd_contin_result *res, const gd_o
         return;
     frame_px f;
     int W, H;
-    layout(c, NULL, NULL, o && o->n > 0, &f, &W, &H);
+    layout(c, NULL, NULL, o && o->n > 0, res, o, line_value2(c, res), &f, &W, &H);
     gd_contin_regions_name(res, c->cont_from, c->cont_to, line_value2(c, res), rg);
     c2_label lab[C2_LABELS];
     int nc2, nl = c2_labels(res, &f, lab, NULL, &nc2);
@@ -641,7 +690,7 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
         gd_gp_title(c->title, title, sizeof title);
     frame_px f;
     int W, H;
-    layout(c, m, g, over, &f, &W, &H);
+    layout(c, m, g, over, res, o, res->ncurves > 0 ? line_value2(c, res) : NAN, &f, &W, &H);
     gd_fig_begin(s, svg, W, H, "curves");
     int rg_present[RG_N] = {0}, old_present[4] = {0};
     if (m && m->n > 0)
@@ -739,7 +788,7 @@ static void plot_one(gd_plot_script *s, int svg, const gd_case *c, const gd_cont
                        over ? OX0 : 0.5, over ? "left" : "center");
     }
     /* the box of the two ranges, where the curves end */
-    gd_plot_printf(s, "set object 1 rect from %.12g, %.12g to %.12g, %.12g %s fs empty border lc rgb "
+    gd_plot_printf(s, "set object 1 rect from %.12g, %.12g to %.12g, %.12g %s clip fs empty border lc rgb "
                          "'#999999' dt 3 lw 1\n",
                       fmin(c->cont_from, c->cont_to), fmin(c->cont_from2, c->cont_to2), fmax(c->cont_from, c->cont_to),
                       fmax(c->cont_from2, c->cont_to2), m && m->n > 0 ? "front" : "behind");

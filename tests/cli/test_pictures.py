@@ -175,6 +175,10 @@ VARIANTS = [
     ('ks-fractions-continuation', 'cases/basins/ks-fractions.ini',
      ['basins.points=5', 'basins.samples=200', 'basins.continuation={before}'],
      ('cases/continuation/kahraman-singh.ini', ['output.plots=off'])),
+    # curves that stay in the lower half of their box (F_a to 10 um; the period-doubling curve reaches
+    # 5.2): the frame follows the curves
+    ('ks-curves-tall-box', 'cases/continuation/kahraman-singh-curves.ini',
+     ['continuation.parameter2_to=10', 'continuation.curve_kinds=grazing, period-doubling'], None),
     # the curves in (Omega, F_a) over a coarse regime map of the same plane ({before}), beside the
     # curves at another mesh damping ({before2}: the case before a modification)
     ('ks-curves-overlays', 'cases/continuation/kahraman-singh-curves.ini',
@@ -1087,6 +1091,28 @@ def axis_map(ticks, attr):
     return lambda v: p0 + (v - a0) * (p1 - p0) / (a1 - a0)
 
 
+def check_curves_fill(fig, summary, bad):
+    """curves.svg without a regime map: what is drawn (curves, their points, the starts) spans at least
+    half the frame each way, even where the curves stay in a corner of the box (the frame then follows
+    them, not the box)."""
+    cont = summary.get('case', {}).get('parameters', {}).get('continuation', {})
+    if (cont.get('overlay_map') or {}).get('value'):
+        return
+    panel = fig.panels[0] if fig.panels else None
+    if panel is None or panel.frame is None:
+        return
+    f = panel.frame
+    pts = [(x, y) for p in fig.plots.values() for x, y in p.data_points() if f.contains(x, y, 1.0)]
+    if not pts:
+        bad.append('curves: nothing drawn inside the frame')
+        return
+    wx = (max(x for x, _ in pts) - min(x for x, _ in pts)) / f.w
+    wy = (max(y for _, y in pts) - min(y for _, y in pts)) / f.h
+    if wx < 0.5 or wy < 0.5:
+        bad.append('curves: the data span %.0f %% of the frame across and %.0f %% up (at least 50 %% each)'
+                   % (100 * wx, 100 * wy))
+
+
 def check_curves_regions(fig, outdir, summary, bad):
     """curves.svg without a regime map: every region of regions.csv marked drawn is named there,
     its words (one line, or two split as written) centred on its row's point (to 2 px in x and
@@ -1195,6 +1221,7 @@ def check_picture(path, outdir, keys, single, summary):
     if name == 'curves.svg':
         check_curves_overlays(fig, outdir, summary, bad)
         check_curves_regions(fig, outdir, summary, bad)
+        check_curves_fill(fig, summary, bad)
     return bad
 
 
