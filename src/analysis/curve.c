@@ -1139,7 +1139,8 @@ static gd_status run(ccont *C, const cpt *a0, gd_error *err)
             const double pa = a->u[N + J.q], sg = J.p > pa ? 1.0 : -1.0;
             const double pstep = st == GD_OK ? b->u[N + J.q] - pa : ds * a->t[N + J.q];
             /* (a step converged too far or turning reaches no farther than its prediction) */
-            const double reach = fmax(fabs(ds * a->t[N + J.q]), st == GD_OK && !conv_reject ? fabs(b->u[N + J.q] - pa) : 0.0);
+            const double reach =
+                fmax(fabs(ds * a->t[N + J.q]), st == GD_OK && !conv_reject ? fabs(b->u[N + J.q] - pa) : 0.0);
             const double margin = JUMP_MARGIN * J.dp, pt = J.p - sg * margin;
             int ok_end = 0;
             /* the point on the near side of the jump must be a step of this curve away: within twice the

@@ -669,10 +669,10 @@ static double diff_norm(int N, const double *a, const double *b)
 }
 
 /* Bisection for a jump of the model in parameter q within [lo, hi], the orbit's residual at the state of
- * u, down to w_end: the half whose ends
- * differ more is kept. A jump keeps its size however narrow the bracket; a smooth residual's difference
- * halves with it, so the jump is found when the ends still differ, at the end, by a quarter of what they
- * did four halvings before and by more than the integration's noise. */
+ * u, down to w_end: the half whose ends differ more is kept. A jump keeps its size however narrow the
+ * bracket; a smooth residual's difference halves with it, so the jump is found when the ends still
+ * differ, at the end, by a quarter of what they did four halvings before and by more than the
+ * integration's noise. */
 static gd_status bisect_jump(csys *S, const double *u, int q, double lo, double hi, double w_end,
                              int *found, double *pj, double *width, gd_error *err)
 {
